@@ -1,0 +1,104 @@
+#include "app/cli/Args.h"
+
+#include "core/sweep/Grid.h"
+
+#include <cmath>
+
+namespace kinstab::cli {
+
+Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& flags,
+           const std::set<std::string>& switches) {
+    for (std::size_t i = 0; i < argv.size(); ++i) {
+        const std::string& a = argv[i];
+        std::string name;
+        if (a == "-o") name = "o";
+        else if (a.rfind("--", 0) == 0) name = a.substr(2);
+        else throw UsageError("unexpected argument '" + a + "'");
+        std::string value;
+        const auto eq = name.find('=');
+        const bool inlineValue = eq != std::string::npos;
+        if (inlineValue) {
+            value = name.substr(eq + 1);
+            name = name.substr(0, eq);
+        }
+        if (switches.count(name)) {
+            values_[name] = "1";
+            continue;
+        }
+        if (!flags.count(name)) throw UsageError("unknown flag '" + a + "'");
+        if (!inlineValue) {
+            if (i + 1 >= argv.size()) throw UsageError("flag --" + name + " needs a value");
+            value = argv[++i];
+        }
+        if (values_.count(name)) throw UsageError("flag --" + name + " given twice");
+        values_[name] = value;
+    }
+}
+
+bool Args::has(const std::string& flag) const { return values_.count(flag) != 0; }
+
+std::string Args::text(const std::string& flag, const std::string& fallback) const {
+    const auto it = values_.find(flag);
+    return it == values_.end() ? fallback : it->second;
+}
+
+std::optional<std::string> Args::optionalText(const std::string& flag) const {
+    const auto it = values_.find(flag);
+    if (it == values_.end()) return std::nullopt;
+    return it->second;
+}
+
+std::optional<double> Args::optionalNumber(const std::string& flag) const {
+    const auto it = values_.find(flag);
+    if (it == values_.end()) return std::nullopt;
+    std::size_t used = 0;
+    double v = 0;
+    try {
+        v = std::stod(it->second, &used);
+    } catch (...) {
+        used = 0;
+    }
+    if (used == 0 || used != it->second.size() || !std::isfinite(v))
+        throw UsageError("--" + flag + " '" + it->second + "' is not a finite number");
+    return v;
+}
+
+double Args::number(const std::string& flag, double fallback) const {
+    return optionalNumber(flag).value_or(fallback);
+}
+
+double Args::requiredNumber(const std::string& flag) const {
+    const auto v = optionalNumber(flag);
+    if (!v) throw UsageError("missing required flag --" + flag);
+    return *v;
+}
+
+int Args::integer(const std::string& flag, int fallback) const {
+    const auto v = optionalNumber(flag);
+    if (!v) return fallback;
+    if (*v != std::floor(*v) || std::abs(*v) > 1e9)
+        throw UsageError("--" + flag + " '" + text(flag) + "' is not a whole number");
+    return static_cast<int>(*v);
+}
+
+std::vector<double> Args::list(const std::string& flag) const {
+    const auto t = optionalText(flag);
+    if (!t) throw UsageError("missing required flag --" + flag);
+    const ParsedList p = parseList(*t);
+    if (!p.error.empty()) throw UsageError("--" + flag + ": " + p.error);
+    return p.values;
+}
+
+std::string Args::choice(const std::string& flag, const std::set<std::string>& allowed,
+                         const std::string& fallback) const {
+    const auto t = optionalText(flag);
+    if (!t) return fallback;
+    if (!allowed.count(*t)) {
+        std::string names;
+        for (const auto& a : allowed) names += (names.empty() ? "" : "|") + a;
+        throw UsageError("--" + flag + " '" + *t + "' must be one of " + names);
+    }
+    return *t;
+}
+
+} // namespace kinstab::cli

@@ -1,0 +1,40 @@
+#pragma once
+// Command-line flags of one subcommand: --name value pairs, checked against the flags the
+// subcommand declares. Every problem is a UsageError naming the flag and the value (exit 2).
+
+#include <map>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace kinstab::cli {
+
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+class Args {
+public:
+    // flags: the names this subcommand accepts (without "--"); switches take no value.
+    Args(const std::vector<std::string>& argv, const std::set<std::string>& flags,
+         const std::set<std::string>& switches = {});
+
+    bool has(const std::string& flag) const;
+    std::string text(const std::string& flag, const std::string& fallback = {}) const;
+    std::optional<std::string> optionalText(const std::string& flag) const;
+    double number(const std::string& flag, double fallback) const;
+    std::optional<double> optionalNumber(const std::string& flag) const;
+    double requiredNumber(const std::string& flag) const;
+    int integer(const std::string& flag, int fallback) const;
+    std::vector<double> list(const std::string& flag) const; // required LIST
+    // One of the allowed words, or the fallback when absent.
+    std::string choice(const std::string& flag, const std::set<std::string>& allowed,
+                       const std::string& fallback) const;
+
+private:
+    std::map<std::string, std::string> values_;
+};
+
+} // namespace kinstab::cli

@@ -1,0 +1,19 @@
+#pragma once
+// The model flags shared by simulate, surface and critical (SPEC §12).
+
+#include "app/cli/Args.h"
+#include "core/slab/Slab1DCase.h"
+
+#include <nlohmann/json.hpp>
+#include <set>
+
+namespace kinstab::cli {
+
+// Flags every model command accepts.
+std::set<std::string> modelFlagNames();
+// Reads and validates the 1-DOF case; throws UsageError naming the bad flag.
+Slab1DCase slab1DCaseFromFlags(const Args& args);
+// The "envelope" object of the JSON outputs.
+nlohmann::json envelopeJson(const Slab1DCase& c);
+
+} // namespace kinstab::cli

@@ -1,0 +1,55 @@
+#include "app/cli/Args.h"
+#include "app/cli/Commands.h"
+#include "app/cli/ModelFlags.h"
+#include "core/excitation/EnvelopedSine.h"
+#include "core/io/ResultJson.h"
+#include "core/slab/History.h"
+
+#include <chrono>
+#include <iostream>
+#include <sstream>
+
+namespace kinstab::cli {
+
+int runSimulate(const ArgList& argv) {
+    std::set<std::string> flags = modelFlagNames();
+    flags.insert({"amplitude", "frequency", "history", "history-step"});
+    const Args args(argv, flags, {"events"});
+    const Slab1DCase c = slab1DCaseFromFlags(args);
+    const double amplitude = args.requiredNumber("amplitude");
+    const double frequency = args.requiredNumber("frequency");
+    if (amplitude < 0.0 || amplitude > 1000.0)
+        throw UsageError("--amplitude " + args.text("amplitude") + ": must be between 0 and 1000 g");
+    if (frequency <= 0.0 || frequency > 1000.0)
+        throw UsageError("--frequency " + args.text("frequency") + ": must be > 0 and at most 1000 Hz");
+    const bool wantHistory = args.has("history");
+    const double historyStep = args.number("history-step", 0.05);
+    if (historyStep <= 0.0) throw UsageError("--history-step " + args.text("history-step") + ": must be > 0");
+
+    RunOptions options;
+    options.recordEvents = wantHistory || args.has("events");
+    const auto t0 = std::chrono::steady_clock::now();
+    const SlabResult r = runSlab1D(c, amplitude, frequency, options);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    nlohmann::json j = slabResultJson(r, c.tauRef());
+    j["model"] = "slab1d";
+    j["solver"] = solverName(c.solver);
+    j["amplitude"] = amplitude;
+    j["frequency"] = frequency;
+    j["mu"] = c.slab.mu;
+    j["tstar"] = c.tstar;
+    j["tau_ref"] = c.tauRef();
+    j["envelope"] = envelopeJson(c);
+    j["wall_time_s"] = wall;
+    if (args.has("events")) j["events"] = eventsJson(r.events);
+    if (wantHistory) {
+        const EnvelopedSine a(c.envelope, amplitude, frequency, c.tstar);
+        const History h = sampleHistory(a, c.slab.mu, r.events, r.tauEnd, historyStep);
+        writeOutput(args.text("history"), historyCsv(h));
+    }
+    std::cout << j.dump(2) << "\n";
+    return 0;
+}
+
+} // namespace kinstab::cli

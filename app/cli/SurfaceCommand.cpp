@@ -1,0 +1,36 @@
+#include "app/cli/Args.h"
+#include "app/cli/Commands.h"
+#include "app/cli/ModelFlags.h"
+#include "core/io/ResultJson.h"
+
+namespace kinstab::cli {
+
+int runSurface(const ArgList& argv) {
+    std::set<std::string> flags = modelFlagNames();
+    flags.insert({"amplitudes", "frequencies", "threads", "format", "o"});
+    const Args args(argv, flags);
+    const Slab1DCase c = slab1DCaseFromFlags(args);
+    SweepGrid grid{args.list("amplitudes"), args.list("frequencies")};
+    const std::string e = validateGrid(grid);
+    if (!e.empty()) throw UsageError("--" + e);
+    const int threads = args.integer("threads", 0);
+    if (threads < 0 || threads > 1024) throw UsageError("--threads " + args.text("threads") + ": must be 0 (all) to 1024");
+    const std::string format = args.choice("format", {"json", "csv"}, "json");
+
+    const SweepResult r = runSweep(grid, slab1DPoint(c), nullptr, threads);
+    if (format == "csv") {
+        writeOutput(args.text("o"), sweepCsv(r, c.tauRef()));
+        return 0;
+    }
+    nlohmann::json j = sweepJson(r, c.tauRef());
+    j["model"] = "slab1d";
+    j["solver"] = solverName(c.solver);
+    j["envelope"] = envelopeJson(c);
+    j["mu"] = c.slab.mu;
+    j["tstar"] = c.tstar;
+    j["limit"] = c.slab.limit;
+    writeOutput(args.text("o"), j.dump() + "\n");
+    return 0;
+}
+
+} // namespace kinstab::cli

@@ -1,0 +1,138 @@
+#include "core/excitation/Envelope.h"
+
+#include "core/numerics/RootFinding.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace kinstab {
+
+Envelope Envelope::fromPreset(EnvelopePreset p) {
+    // alpha, beta fitted to Table 4's tau_rise and tau_dur (SPEC §3): round values that
+    // reproduce the table to 3 digits, surely the originals.
+    switch (p) {
+    case EnvelopePreset::Fast: return {0.01, 2.0, p};
+    case EnvelopePreset::Moderate: return {0.15, 0.40, p};
+    case EnvelopePreset::Slow: return {0.04, 0.40, p};
+    }
+    return {};
+}
+
+CharacteristicTimes table4Times(EnvelopePreset p) {
+    switch (p) {
+    case EnvelopePreset::Fast: return {3.38, 27.78, 732.11};
+    case EnvelopePreset::Moderate: return {8.92, 37.89, 113.80};
+    case EnvelopePreset::Slow: return {12.81, 63.13, 266.23};
+    }
+    return {};
+}
+
+namespace {
+// e(t) written as exp(-alpha t) * (-expm1(-(beta - alpha) t)): no cancellation when alpha ~ beta.
+double envelopeValue(double alpha, double beta, double t) {
+    return std::exp(-alpha * t) * -std::expm1(-(beta - alpha) * t);
+}
+double envelopeSlope(double alpha, double beta, double t) {
+    return -alpha * std::exp(-alpha * t) + beta * std::exp(-beta * t);
+}
+double envelopePeakTime(double alpha, double beta) {
+    if (alpha <= 0.0) return std::numeric_limits<double>::infinity();
+    const double d = beta - alpha;
+    // ln(beta/alpha)/(beta-alpha), with log1p for alpha ~ beta.
+    return std::log1p(d / alpha) / d;
+}
+} // namespace
+
+CharacteristicTimes Envelope::computedTimes(double tstar) const {
+    CharacteristicTimes c;
+    const double tPeak = envelopePeakTime(alpha, beta);
+    const double eMax = std::isfinite(tPeak) ? envelopeValue(alpha, beta, tPeak) : 1.0;
+    const double half = 0.5 * eMax;
+    auto fdf = [&](double t, double& f, double& df) {
+        f = envelopeValue(alpha, beta, t) - half;
+        df = envelopeSlope(alpha, beta, t);
+    };
+    // Rising half-maximum: e is increasing on (0, tPeak).
+    double hiRise = std::isfinite(tPeak) ? tPeak : 1.0;
+    while (!std::isfinite(tPeak) && envelopeValue(alpha, beta, hiRise) < half) hiRise *= 2.0;
+    c.tauRise = safeguardedNewton(fdf, 0.0, hiRise, -half, envelopeValue(alpha, beta, hiRise) - half).x / tstar;
+    c.tauMax = tPeak / tstar;
+    if (!std::isfinite(tPeak)) {
+        c.tauDur = std::numeric_limits<double>::infinity();
+        return c;
+    }
+    double hi = 2.0 * tPeak;
+    while (envelopeValue(alpha, beta, hi) > half) hi *= 2.0;
+    c.tauDur = safeguardedNewton(fdf, tPeak, hi, eMax - half, envelopeValue(alpha, beta, hi) - half).x / tstar;
+    return c;
+}
+
+CharacteristicTimes Envelope::scalingTimes(double tstar) const {
+    return preset ? table4Times(*preset) : computedTimes(tstar);
+}
+
+double Envelope::tauRef(TauScale scale, double tstar) const {
+    const CharacteristicTimes c = scalingTimes(tstar);
+    switch (scale) {
+    case TauScale::TauRise: return c.tauRise;
+    case TauScale::TauMax: return c.tauMax;
+    case TauScale::TauDur: return c.tauDur;
+    case TauScale::One: return 1.0;
+    }
+    return 1.0;
+}
+
+std::string Envelope::name() const {
+    if (preset) return presetName(*preset);
+    std::ostringstream s;
+    s << "alpha=" << alpha << "/s, beta=" << beta << "/s";
+    return s.str();
+}
+
+std::optional<EnvelopePreset> presetFromName(const std::string& name) {
+    if (name == "fast") return EnvelopePreset::Fast;
+    if (name == "moderate") return EnvelopePreset::Moderate;
+    if (name == "slow") return EnvelopePreset::Slow;
+    return std::nullopt;
+}
+
+std::string presetName(EnvelopePreset p) {
+    switch (p) {
+    case EnvelopePreset::Fast: return "fast";
+    case EnvelopePreset::Moderate: return "moderate";
+    case EnvelopePreset::Slow: return "slow";
+    }
+    return "?";
+}
+
+std::optional<TauScale> tauScaleFromName(const std::string& name) {
+    if (name == "tau_rise") return TauScale::TauRise;
+    if (name == "tau_max") return TauScale::TauMax;
+    if (name == "tau_dur") return TauScale::TauDur;
+    if (name == "one") return TauScale::One;
+    return std::nullopt;
+}
+
+std::string tauScaleName(TauScale s) {
+    switch (s) {
+    case TauScale::TauRise: return "tau_rise";
+    case TauScale::TauMax: return "tau_max";
+    case TauScale::TauDur: return "tau_dur";
+    case TauScale::One: return "one";
+    }
+    return "?";
+}
+
+std::string validateEnvelope(double alpha, double beta) {
+    std::ostringstream s;
+    if (!std::isfinite(alpha) || alpha < 0.0)
+        s << "alpha = " << alpha << " 1/s: must be a finite number >= 0";
+    else if (!std::isfinite(beta) || beta <= alpha)
+        s << "beta = " << beta << " 1/s: must be finite and greater than alpha = " << alpha;
+    else if (beta > 1e4)
+        s << "beta = " << beta << " 1/s: must be at most 1e4";
+    return s.str();
+}
+
+} // namespace kinstab

@@ -1,0 +1,46 @@
+#pragma once
+// The envelope e(t) = exp(-alpha t) - exp(-beta t) of the paper's floor acceleration
+// (Furgerson 1980, ch. IV) and its three presets.
+
+#include <optional>
+#include <string>
+
+namespace kinstab {
+
+enum class EnvelopePreset { Fast, Moderate, Slow };
+
+// Characteristic times of an envelope, in dimensionless time tau = t / t*.
+struct CharacteristicTimes {
+    double tauRise = 0; // first half-maximum point of e
+    double tauMax = 0;  // maximum of e
+    double tauDur = 0;  // second half-maximum point of e (inf when e never falls to half)
+};
+
+enum class TauScale { TauRise, TauMax, TauDur, One };
+
+struct Envelope {
+    double alpha = 0.15; // 1/s
+    double beta = 0.40;  // 1/s
+    std::optional<EnvelopePreset> preset;
+
+    static Envelope fromPreset(EnvelopePreset p);
+    // Times computed from alpha, beta and t*.
+    CharacteristicTimes computedTimes(double tstar) const;
+    // The times the gamma_c scaling uses: Table 4's printed values for a preset (that is what
+    // the paper's figures use), the computed ones otherwise.
+    CharacteristicTimes scalingTimes(double tstar) const;
+    double tauRef(TauScale scale, double tstar) const;
+    std::string name() const;
+};
+
+// Table 4 of the paper (t* = 0.099 s).
+CharacteristicTimes table4Times(EnvelopePreset p);
+std::optional<EnvelopePreset> presetFromName(const std::string& name);
+std::string presetName(EnvelopePreset p);
+std::optional<TauScale> tauScaleFromName(const std::string& name);
+std::string tauScaleName(TauScale s);
+
+// Validates alpha/beta; returns an error message naming the bad value, or empty.
+std::string validateEnvelope(double alpha, double beta);
+
+} // namespace kinstab

@@ -1,0 +1,58 @@
+#pragma once
+// The paper's floor acceleration (Furgerson 1980, ch. IV; SPEC §3), in g, of dimensionless time:
+//   a(tau) = (A / S_max) e(t* tau) sin(omega tau),  e(t) = exp(-alpha t) - exp(-beta t),
+//   omega = 2 pi f t*.
+// Its first and second integrals are elementary, so slip phases are integrated exactly.
+
+#include "core/excitation/Envelope.h"
+#include "core/excitation/Excitation1D.h"
+
+namespace kinstab {
+
+struct SineCounters {
+    long evaluations = 0;
+};
+
+class EnvelopedSine final : public Excitation1D {
+public:
+    EnvelopedSine(const Envelope& envelope, double amplitude, double frequencyHz, double tstar);
+
+    double accel(double tau) const override;
+    double accelSlope(double tau) const override;
+    double velocityChange(double t0, double t1) const override;
+    double displacementChange(double t0, double t1) const override;
+    double segmentEnd(double segmentStart) const override;
+    Crossings crossings(double level, double segmentStart, double segmentEnd) const override;
+    double boundAfter(double tau) const override;
+    double boundOn(double lo, double hi) const override;
+    double peak() const override { return amplitude_; }
+
+    double omega() const { return omega_; }
+    double sMax() const { return sMax_; }
+    double amplitude() const { return amplitude_; }
+    double envelopeAt(double tau) const; // e(t* tau), unscaled
+    // Time of the envelope's maximum (inf when it never decays: alpha = 0).
+    double envelopePeakTau() const { return tauEnvelopePeak_; }
+    // Where |a| peaks in the half-period [k pi/omega, (k+1) pi/omega].
+    double halfPeriodPeak(long k) const;
+
+private:
+    double envelopeSlope(double tau) const;
+    double envelopeCurvature(double tau) const;
+    double primitive1(double lambda, double tau) const; // int e^{-l s} sin(w s) ds
+    double primitive2(double lambda, double tau) const; // int of primitive1
+    double computeSMax() const;
+
+    double amplitude_;
+    double p_, q_; // alpha t*, beta t*
+    double omega_;
+    double halfPeriod_;
+    double tauEnvelopePeak_;
+    double sMax_ = 1.0;
+    double scale_ = 1.0; // A / S_max
+};
+
+// Validates the inputs of an enveloped sine; empty when fine, else a message naming the field.
+std::string validateEnvelopedSine(double amplitude, double frequencyHz, double tstar);
+
+} // namespace kinstab

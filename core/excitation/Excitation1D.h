@@ -1,0 +1,40 @@
+#pragma once
+// What the event-driven 1-DOF solver needs to know about a base acceleration a(tau), in g,
+// as a function of dimensionless time. Implementations: EnvelopedSine (closed form),
+// and piecewise-linear recorded motions.
+
+#include <array>
+
+namespace kinstab {
+
+// Times where a(tau) crosses a level inside one segment, increasing.
+struct Crossings {
+    std::array<double, 4> t{};
+    int n = 0;
+    void add(double tau) { t[static_cast<std::size_t>(n++)] = tau; }
+};
+
+class Excitation1D {
+public:
+    virtual ~Excitation1D() = default;
+    virtual double accel(double tau) const = 0;
+    virtual double accelSlope(double tau) const = 0;
+    // Integral of a over [t0, t1].
+    virtual double velocityChange(double t0, double t1) const = 0;
+    // Integral over [t0, t1] of (integral of a over [t0, s]) ds.
+    virtual double displacementChange(double t0, double t1) const = 0;
+    // Time line cut into segments; each segment is small enough that a(tau) crosses any level
+    // at most Crossings::t.size() times in it, and crossings() finds them all with a bracket.
+    virtual double segmentEnd(double segmentStart) const = 0;
+    // All sign changes of a(tau) - level in (segmentStart, segmentEnd), increasing.
+    // A level touched but not crossed (a double root) is not a crossing.
+    virtual Crossings crossings(double level, double segmentStart, double segmentEnd) const = 0;
+    // An upper bound of |a(s)| over all s >= tau: once it is below mu, nothing can start.
+    virtual double boundAfter(double tau) const = 0;
+    // An upper bound of |a| over [lo, hi], cheap: lets the solver skip quiet segments.
+    virtual double boundOn(double lo, double hi) const = 0;
+    // Largest |a| anywhere.
+    virtual double peak() const = 0;
+};
+
+} // namespace kinstab

@@ -1,0 +1,21 @@
+#pragma once
+// JSON forms of results, with the keys of the command-line contract (SPEC §12).
+// NaN never appears: a missing number is null.
+
+#include "core/slab/SlabTypes.h"
+#include "core/sweep/Sweep.h"
+
+#include <nlohmann/json.hpp>
+
+namespace kinstab {
+
+nlohmann::json numberOrNull(double x);
+nlohmann::json workJson(const SolverWork& w);
+nlohmann::json eventsJson(const std::vector<SlabEvent>& events);
+// outcome, tau_c, gamma_c, slip_intervals, max_abs_delta, residual_delta, work.
+nlohmann::json slabResultJson(const SlabResult& r, double tauRef);
+// amplitudes, frequencies, tau_c, gamma_c, outcome (SPEC §12 "surface").
+nlohmann::json sweepJson(const SweepResult& r, double tauRef);
+std::string sweepCsv(const SweepResult& r, double tauRef);
+
+} // namespace kinstab

@@ -1,0 +1,64 @@
+#pragma once
+// Safeguarded root finding on a bracket. Every event of the slab model is located here.
+// Bare Newton diverges at grazing events (f' -> 0 at a double root), so each Newton step
+// is accepted only when it stays inside the shrinking bracket; otherwise we bisect.
+
+#include <cmath>
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+
+namespace kinstab {
+
+struct RootResult {
+    double x = std::numeric_limits<double>::quiet_NaN();
+    int iterations = 0;
+    bool converged = false;
+};
+
+// Root of f on [lo, hi] where f(lo) and f(hi) differ in sign (or one is zero).
+// fdf(x, f, df) evaluates the function and its derivative. Stops when the bracket is a few
+// ulps wide, so the answer is as exact as double arithmetic allows.
+template <class FDF>
+RootResult safeguardedNewton(FDF&& fdf, double lo, double hi, double flo, double fhi,
+                             int maxIterations = 200) {
+    RootResult r;
+    if (flo == 0.0) return {lo, 0, true};
+    if (fhi == 0.0) return {hi, 0, true};
+    if ((flo > 0.0) == (fhi > 0.0)) return r; // no bracket
+    // Orient so that f(a) < 0 < f(b).
+    double a = lo, b = hi;
+    if (flo > 0.0) std::swap(a, b);
+    double x = 0.5 * (lo + hi);
+    double dxOld = std::abs(hi - lo);
+    double dx = dxOld;
+    double f = 0.0, df = 0.0;
+    fdf(x, f, df);
+    for (r.iterations = 1; r.iterations <= maxIterations; ++r.iterations) {
+        if (f == 0.0) return {x, r.iterations, true};
+        if (f < 0.0) a = x;
+        else b = x;
+        const bool newtonOutside = ((x - b) * df - f) * ((x - a) * df - f) > 0.0;
+        const bool newtonSlow = std::abs(2.0 * f) > std::abs(dxOld * df);
+        dxOld = dx;
+        if (newtonOutside || newtonSlow || df == 0.0) {
+            dx = 0.5 * (b - a);
+            x = a + dx;
+        } else {
+            dx = f / df;
+            x -= dx;
+        }
+        const double tol = 4.0 * std::numeric_limits<double>::epsilon() *
+                           std::max({std::abs(a), std::abs(b), 1e-300});
+        if (std::abs(b - a) <= tol || std::abs(dx) <= 0.25 * tol) {
+            r.x = x;
+            r.converged = true;
+            return r;
+        }
+        fdf(x, f, df);
+    }
+    r.x = x;
+    return r;
+}
+
+} // namespace kinstab

@@ -1,0 +1,188 @@
+#include "core/slab/ExactSolver.h"
+
+#include "core/numerics/RootFinding.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace kinstab {
+
+namespace {
+
+class ExactRun {
+public:
+    ExactRun(const Excitation1D& a, const SlabParams& p, const RunOptions& o)
+        : a_(a), p_(p), o_(o) {}
+
+    SlabResult run();
+
+private:
+    enum class Step { Continue, Done };
+
+    // Slip state relative to (t_, x_, v_) with slip sign s_.
+    double velocityAt(double tau) {
+        ++r_.work.accelEvaluations;
+        return v_ - s_ * p_.mu * (tau - t_) - a_.velocityChange(t_, tau);
+    }
+    double displacementAt(double tau) {
+        ++r_.work.accelEvaluations;
+        const double h = tau - t_;
+        return x_ + v_ * h - 0.5 * s_ * p_.mu * h * h - a_.displacementChange(t_, tau);
+    }
+    Step segment(double lo, double hi);
+    Step piece(double lo, double hi);
+    Step slipThrough(double hi, bool excess);
+    void moveTo(double tau, double x, double v) {
+        t_ = tau;
+        x_ = x;
+        v_ = v;
+        r_.maxAbsDelta = std::max(r_.maxAbsDelta, std::abs(x));
+    }
+    bool event(EventKind kind, int direction) {
+        ++r_.work.events;
+        if (o_.recordEvents) r_.events.push_back({t_, kind, x_, v_, direction});
+        if (r_.work.events > o_.maxEvents) {
+            finish(Outcome::Failed);
+            r_.failure = "more than " + std::to_string(o_.maxEvents) + " events (chattering guard)";
+            return false;
+        }
+        return true;
+    }
+    Step finish(Outcome outcome) {
+        r_.outcome = outcome;
+        r_.tauEnd = t_;
+        r_.residualDelta = x_;
+        return Step::Done;
+    }
+    double rootOf(auto&& fdf, double lo, double hi, double flo, double fhi) {
+        const RootResult root = safeguardedNewton(fdf, lo, hi, flo, fhi);
+        r_.work.rootIterations += root.iterations;
+        return std::clamp(root.x, lo, hi);
+    }
+
+    const Excitation1D& a_;
+    const SlabParams& p_;
+    const RunOptions& o_;
+    SlabResult r_;
+    double t_ = 0, x_ = 0, v_ = 0;
+    int s_ = 0; // 0 sticking, +1/-1 slipping with that sign of relative velocity
+};
+
+SlabResult ExactRun::run() {
+    const double end = p_.duration.value_or(std::numeric_limits<double>::infinity());
+    if (!p_.duration && a_.boundAfter(std::numeric_limits<double>::infinity()) >= p_.mu) {
+        r_.failure = "the excitation never decays below mu: set a duration (tau_out)";
+        finish(Outcome::Failed);
+        return r_;
+    }
+    double segStart = 0.0;
+    while (true) {
+        if (s_ == 0 && a_.boundAfter(segStart) < p_.mu) {
+            t_ = std::max(t_, segStart);
+            event(EventKind::Stable, 0);
+            finish(Outcome::Stable);
+            return r_;
+        }
+        if (segStart >= end) {
+            if (s_ != 0) moveTo(end, displacementAt(end), velocityAt(end));
+            event(EventKind::DurationCap, s_);
+            finish(Outcome::Stable);
+            return r_;
+        }
+        const double segEnd = std::min(a_.segmentEnd(segStart), end);
+        ++r_.work.steps;
+        if (segment(segStart, segEnd) == Step::Done) return r_;
+        segStart = segEnd;
+    }
+}
+
+// One segment: cut at every crossing of |a| = mu, then each piece has a fixed sign of
+// |a| - mu and of a +- mu.
+ExactRun::Step ExactRun::segment(double lo, double hi) {
+    if (s_ == 0 && a_.boundOn(lo, hi) <= p_.mu) return Step::Continue; // nothing can start
+    Crossings up = a_.crossings(p_.mu, lo, hi);
+    Crossings down = p_.mu > 0.0 ? a_.crossings(-p_.mu, lo, hi) : Crossings{};
+    std::array<double, 10> cuts{};
+    std::size_t n = 0;
+    cuts[n++] = lo;
+    for (int i = 0; i < up.n; ++i) cuts[n++] = up.t[static_cast<std::size_t>(i)];
+    for (int i = 0; i < down.n; ++i) cuts[n++] = down.t[static_cast<std::size_t>(i)];
+    // At most eight crossings: insertion sort (std::sort trips a GCC 12 bounds warning here).
+    for (std::size_t i = 2; i < n; ++i)
+        for (std::size_t j = i; j > 1 && cuts[j - 1] > cuts[j]; --j) std::swap(cuts[j - 1], cuts[j]);
+    cuts[n++] = hi;
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+        if (cuts[i + 1] <= cuts[i]) continue;
+        if (piece(cuts[i], cuts[i + 1]) == Step::Done) return Step::Done;
+    }
+    return Step::Continue;
+}
+
+ExactRun::Step ExactRun::piece(double lo, double hi) {
+    const double aMid = a_.accel(0.5 * (lo + hi));
+    ++r_.work.accelEvaluations;
+    const bool excess = std::abs(aMid) > p_.mu;
+    if (s_ == 0) {
+        if (!excess) return Step::Continue;
+        // Slip onset: the slab lags the walls, sliding against the acceleration.
+        t_ = lo;
+        s_ = aMid > 0.0 ? -1 : 1;
+        ++r_.slipIntervals;
+        if (!event(EventKind::SlipOnset, s_)) return Step::Done;
+    }
+    return slipThrough(hi, excess);
+}
+
+// Slip from t_ to hi (inside one piece); handles a stop, a reversal and collapse.
+ExactRun::Step ExactRun::slipThrough(double hi, bool excess) {
+    while (true) {
+        const double vHi = velocityAt(hi);
+        const bool stops = s_ * vHi <= 0.0 && !(excess && v_ == 0.0);
+        // s v <= 0 already at t_ only through rounding right after a grazing onset: stop there.
+        const double tStop = !stops ? hi : (s_ * v_ <= 0.0) ? t_ : rootOf(
+                                         [&](double tau, double& f, double& df) {
+                                             f = s_ * velocityAt(tau);
+                                             df = s_ * (-s_ * p_.mu - a_.accel(tau));
+                                         },
+                                         t_, hi, s_ * v_, s_ * vHi);
+        const double xEnd = displacementAt(tStop);
+        if (s_ * xEnd > p_.limit) {
+            // Displacement is monotone while the slip keeps its sign: one crossing of the limit.
+            const double tC = rootOf(
+                [&](double tau, double& f, double& df) {
+                    f = s_ * displacementAt(tau) - p_.limit;
+                    df = s_ * velocityAt(tau);
+                },
+                t_, tStop, s_ * x_ - p_.limit, s_ * xEnd - p_.limit);
+            moveTo(tC, s_ * p_.limit, velocityAt(tC));
+            r_.tauC = tC;
+            if (!event(EventKind::Collapse, s_)) return Step::Done;
+            return finish(Outcome::Collapsed);
+        }
+        if (!stops) {
+            moveTo(hi, xEnd, vHi);
+            return Step::Continue;
+        }
+        moveTo(tStop, xEnd, 0.0);
+        if (excess) {
+            // |a| > mu at the stop: no sticking, it slides back at once (NUMERICS.md §4 row 5).
+            s_ = -s_;
+            ++r_.slipIntervals;
+            if (!event(EventKind::Reversal, s_)) return Step::Done;
+            continue;
+        }
+        s_ = 0;
+        if (!event(EventKind::Stick, 0)) return Step::Done;
+        return Step::Continue;
+    }
+}
+
+} // namespace
+
+SlabResult solveExact(const Excitation1D& excitation, const SlabParams& params,
+                      const RunOptions& options) {
+    return ExactRun(excitation, params, options).run();
+}
+
+} // namespace kinstab

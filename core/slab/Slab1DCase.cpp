@@ -1,0 +1,44 @@
+#include "core/slab/Slab1DCase.h"
+
+#include "core/excitation/EnvelopedSine.h"
+#include "core/slab/ExactSolver.h"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace kinstab {
+
+std::string solverName(SolverKind s) { return s == SolverKind::Exact ? "exact" : "paper"; }
+
+double tstarFromWallWidth(double d) { return std::sqrt(d / (2.0 * 9.80665)); }
+double tstarFromWallWidthInches(double inches) { return tstarFromWallWidth(inches * 0.0254); }
+
+std::string validateCase(const Slab1DCase& c) {
+    std::string e = validateEnvelope(c.envelope.alpha, c.envelope.beta);
+    if (!e.empty()) return e;
+    e = validateSlabParams(c.slab);
+    if (!e.empty()) return e;
+    std::ostringstream s;
+    if (!std::isfinite(c.tstar) || c.tstar <= 0.0 || c.tstar > 100.0)
+        s << "tstar = " << c.tstar << " s: must be > 0 and at most 100";
+    else if (!std::isfinite(c.paperStepsPerPeriod) || c.paperStepsPerPeriod < 4.0 ||
+             c.paperStepsPerPeriod > 1e6)
+        s << "paper steps per period = " << c.paperStepsPerPeriod << ": must be between 4 and 1e6";
+    return s.str();
+}
+
+SlabResult runSlab1D(const Slab1DCase& c, double amplitude, double frequencyHz,
+                     const RunOptions& options) {
+    const EnvelopedSine a(c.envelope, amplitude, frequencyHz, c.tstar);
+    if (c.solver == SolverKind::Exact) return solveExact(a, c.slab, options);
+    PaperSettings settings;
+    settings.step = 2.0 * std::numbers::pi / a.omega() / c.paperStepsPerPeriod;
+    return solvePaperRk4(a, c.slab, settings, options);
+}
+
+double collapseFactor(double tauRef, const SlabResult& r) {
+    return r.outcome == Outcome::Collapsed ? tauRef / r.tauC : 0.0;
+}
+
+} // namespace kinstab

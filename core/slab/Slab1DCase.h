@@ -1,0 +1,38 @@
+#pragma once
+// One 1-DOF stability case: everything but the amplitude and frequency, which a sweep varies.
+
+#include "core/excitation/Envelope.h"
+#include "core/slab/PaperRk4Solver.h"
+#include "core/slab/SlabTypes.h"
+
+#include <string>
+
+namespace kinstab {
+
+enum class SolverKind { Exact, Paper };
+std::string solverName(SolverKind s);
+
+struct Slab1DCase {
+    Envelope envelope = Envelope::fromPreset(EnvelopePreset::Moderate);
+    double tstar = 0.099; // s; the paper's "8 inch" wall
+    SlabParams slab;
+    SolverKind solver = SolverKind::Exact;
+    double paperStepsPerPeriod = 16; // H = period / this
+    TauScale scale = TauScale::TauMax;
+
+    double tauRef() const { return envelope.tauRef(scale, tstar); }
+};
+
+// t* = sqrt(d / (2 g)) for a wall of width d (SPEC §2).
+double tstarFromWallWidth(double wallWidthMetres);
+double tstarFromWallWidthInches(double inches);
+
+std::string validateCase(const Slab1DCase& c); // empty when fine
+
+SlabResult runSlab1D(const Slab1DCase& c, double amplitude, double frequencyHz,
+                     const RunOptions& options = {});
+
+// gamma_c = tau_ref / tau_c, 0 when the slab does not collapse.
+double collapseFactor(double tauRef, const SlabResult& r);
+
+} // namespace kinstab

@@ -1,0 +1,27 @@
+#pragma once
+// A_crit(f): the smallest amplitude that collapses the slab. gamma_c need not be monotone in A,
+// so a bare bisection could land on a later transition: scan finely from below, then refine
+// the first stable -> collapsed step by bisection.
+
+#include "core/sweep/Sweep.h"
+
+#include <optional>
+
+namespace kinstab {
+
+struct CriticalSearch {
+    double from = 0.0;  // start of the scan (the default starts at mu: below it nothing slips)
+    double to = 5.0;    // search limit, g
+    double scanStep = 0.01;
+    double tolerance = 1e-6;
+};
+
+struct CriticalResult {
+    std::optional<double> amplitude; // nullopt when nothing up to `to` collapses
+    long runs = 0;
+};
+
+CriticalResult criticalAmplitude(const PointFunction& point, double frequencyHz, double mu,
+                                 const CriticalSearch& search = {});
+
+} // namespace kinstab

@@ -1,0 +1,25 @@
+#pragma once
+// Cancellation and progress for long work, shared between a worker and whoever watches it.
+// An atomic flag (a plain bool would be a data race, as in QGIS's QgsFeedback).
+
+#include <atomic>
+#include <cstddef>
+#include <functional>
+
+namespace kinstab {
+
+class SweepControl {
+public:
+    void cancel() { cancelled_.store(true, std::memory_order_relaxed); }
+    bool isCancelled() const { return cancelled_.load(std::memory_order_relaxed); }
+
+    // Called from worker threads with (points done, total); keep it cheap and thread-safe.
+    std::function<void(std::size_t, std::size_t)> onProgress;
+    // Called from worker threads when one point is finished (index into the grid).
+    std::function<void(std::size_t)> onPointDone;
+
+private:
+    std::atomic<bool> cancelled_{false};
+};
+
+} // namespace kinstab
