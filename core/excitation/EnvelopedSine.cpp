@@ -56,8 +56,8 @@ double EnvelopedSine::primitive1(double l, double tau) const {
 double EnvelopedSine::primitive2(double l, double tau) const {
     const double d = l * l + omega_ * omega_;
     const double w = omega_;
-    return std::exp(-l * tau) * ((l * l - w * w) * std::sin(w * tau) + 2.0 * l * w * std::cos(w * tau)) /
-           (d * d);
+    return std::exp(-l * tau) *
+           ((l * l - w * w) * std::sin(w * tau) + 2.0 * l * w * std::cos(w * tau)) / (d * d);
 }
 
 double EnvelopedSine::velocityChange(double t0, double t1) const {
@@ -69,7 +69,8 @@ double EnvelopedSine::velocityChange(double t0, double t1) const {
             sum += kGlW[i] * (accel(m - r * kGlX[i]) + accel(m + r * kGlX[i]));
         return r * sum;
     }
-    return scale_ * ((primitive1(p_, t1) - primitive1(p_, t0)) - (primitive1(q_, t1) - primitive1(q_, t0)));
+    return scale_ *
+           ((primitive1(p_, t1) - primitive1(p_, t0)) - (primitive1(q_, t1) - primitive1(q_, t0)));
 }
 
 double EnvelopedSine::displacementChange(double t0, double t1) const {
@@ -78,9 +79,10 @@ double EnvelopedSine::displacementChange(double t0, double t1) const {
         // int_{t0}^{t1} (t1 - s) a(s) ds
         const double m = 0.5 * (t0 + t1), r = 0.5 * h;
         double sum = 0.0;
+        // t1 - s written as r (1 +- x_i): t1 - s itself would cancel when t >> h.
         for (std::size_t i = 0; i < kGlX.size(); ++i) {
             const double sl = m - r * kGlX[i], sr = m + r * kGlX[i];
-            sum += kGlW[i] * ((t1 - sl) * accel(sl) + (t1 - sr) * accel(sr));
+            sum += kGlW[i] * (r * (1.0 + kGlX[i]) * accel(sl) + r * (1.0 - kGlX[i]) * accel(sr));
         }
         return r * sum;
     }
@@ -146,7 +148,8 @@ double EnvelopedSine::boundOn(double lo, double hi) const {
 }
 
 double EnvelopedSine::computeSMax() const {
-    if (!std::isfinite(tauEnvelopePeak_)) return 1.0; // sup of (1 - e^{-beta t}) |sin|, not attained
+    if (!std::isfinite(tauEnvelopePeak_))
+        return 1.0; // sup of (1 - e^{-beta t}) |sin|, not attained
     // The half-period maxima rise and then fall with the envelope (Appendix): walk both ways from
     // the half-period that holds the envelope's peak until they fall.
     auto peakOf = [&](long k) {
