@@ -11,9 +11,12 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
     for (std::size_t i = 0; i < argv.size(); ++i) {
         const std::string& a = argv[i];
         std::string name;
-        if (a == "-o") name = "o";
-        else if (a.rfind("--", 0) == 0) name = a.substr(2);
-        else throw UsageError("unexpected argument '" + a + "'");
+        if (a == "-o")
+            name = "o";
+        else if (a.rfind("--", 0) == 0)
+            name = a.substr(2);
+        else
+            throw UsageError("unexpected argument '" + a + "'");
         std::string value;
         const auto eq = name.find('=');
         const bool inlineValue = eq != std::string::npos;
@@ -35,7 +38,9 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
     }
 }
 
-bool Args::has(const std::string& flag) const { return values_.count(flag) != 0; }
+bool Args::has(const std::string& flag) const {
+    return values_.count(flag) != 0;
+}
 
 std::string Args::text(const std::string& flag, const std::string& fallback) const {
     const auto it = values_.find(flag);
@@ -95,7 +100,8 @@ std::string Args::choice(const std::string& flag, const std::set<std::string>& a
     if (!t) return fallback;
     if (!allowed.count(*t)) {
         std::string names;
-        for (const auto& a : allowed) names += (names.empty() ? "" : "|") + a;
+        for (const auto& a : allowed)
+            names += (names.empty() ? "" : "|") + a;
         throw UsageError("--" + flag + " '" + *t + "' must be one of " + names);
     }
     return *t;

@@ -21,11 +21,14 @@ int runCritical(const ArgList& argv) {
     search.scanStep = args.number("scan-step", 0.01);
     search.tolerance = args.number("tolerance", 1e-6);
     if (search.to <= 0.0 || search.to > 1000.0)
-        throw UsageError("--max-amplitude " + args.text("max-amplitude") + ": must be > 0 and at most 1000");
+        throw UsageError("--max-amplitude " + args.text("max-amplitude") +
+                         ": must be > 0 and at most 1000");
     if (search.scanStep <= 0.0 || search.scanStep > search.to)
-        throw UsageError("--scan-step " + args.text("scan-step") + ": must be > 0 and below --max-amplitude");
+        throw UsageError("--scan-step " + args.text("scan-step") +
+                         ": must be > 0 and below --max-amplitude");
     if (search.tolerance <= 0.0 || search.tolerance > search.scanStep)
-        throw UsageError("--tolerance " + args.text("tolerance") + ": must be > 0 and at most --scan-step");
+        throw UsageError("--tolerance " + args.text("tolerance") +
+                         ": must be > 0 and at most --scan-step");
 
     const PointFunction point = slab1DPoint(c);
     nlohmann::json crit = nlohmann::json::array();
@@ -33,10 +36,16 @@ int runCritical(const ArgList& argv) {
         const CriticalResult r = criticalAmplitude(point, f, c.slab.mu, search);
         crit.push_back(r.amplitude ? nlohmann::json(*r.amplitude) : nlohmann::json());
     }
-    nlohmann::json j = {{"frequencies", freqs}, {"a_crit", crit}, {"model", "slab1d"},
-                        {"solver", solverName(c.solver)}, {"envelope", envelopeJson(c)},
-                        {"mu", c.slab.mu}, {"tstar", c.tstar}, {"max_amplitude", search.to},
-                        {"scan_step", search.scanStep}, {"tolerance", search.tolerance}};
+    nlohmann::json j = {{"frequencies", freqs},
+                        {"a_crit", crit},
+                        {"model", "slab1d"},
+                        {"solver", solverName(c.solver)},
+                        {"envelope", envelopeJson(c)},
+                        {"mu", c.slab.mu},
+                        {"tstar", c.tstar},
+                        {"max_amplitude", search.to},
+                        {"scan_step", search.scanStep},
+                        {"tolerance", search.tolerance}};
     std::cout << j.dump(2) << "\n";
     return 0;
 }

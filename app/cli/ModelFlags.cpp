@@ -3,9 +3,9 @@
 namespace kinstab::cli {
 
 std::set<std::string> modelFlagNames() {
-    return {"model", "envelope", "alpha", "beta", "tstar", "wall-width-in", "mu", "limit",
-            "scale", "solver", "duration", "paper-steps", "ay-ratio", "fy", "theta", "vertical",
-            "record", "floor-period", "damping"};
+    return {"model", "envelope", "alpha",  "beta",         "tstar",       "wall-width-in", "mu",
+            "limit", "scale",    "solver", "duration",     "paper-steps", "ay-ratio",      "fy",
+            "theta", "vertical", "record", "floor-period", "damping"};
 }
 
 namespace {
@@ -14,9 +14,12 @@ void requireOnly1D(const Args& args) {
     if (model != "slab1d")
         throw UsageError("--model planar: the planar model is not available in this build");
     for (const char* f : {"ay-ratio", "fy", "theta", "vertical"})
-        if (args.has(f)) throw UsageError(std::string("--") + f + " applies to --model planar only");
+        if (args.has(f))
+            throw UsageError(std::string("--") + f + " applies to --model planar only");
     for (const char* f : {"record", "floor-period", "damping"})
-        if (args.has(f)) throw UsageError(std::string("--") + f + ": recorded motions are not available in this build");
+        if (args.has(f))
+            throw UsageError(std::string("--") + f +
+                             ": recorded motions are not available in this build");
 }
 } // namespace
 
@@ -25,8 +28,10 @@ Slab1DCase slab1DCaseFromFlags(const Args& args) {
     Slab1DCase c;
     const bool custom = args.has("alpha") || args.has("beta");
     if (custom) {
-        if (args.has("envelope")) throw UsageError("--envelope and --alpha/--beta exclude each other");
-        c.envelope = Envelope{args.requiredNumber("alpha"), args.requiredNumber("beta"), std::nullopt};
+        if (args.has("envelope"))
+            throw UsageError("--envelope and --alpha/--beta exclude each other");
+        c.envelope =
+            Envelope{args.requiredNumber("alpha"), args.requiredNumber("beta"), std::nullopt};
         const std::string e = validateEnvelope(c.envelope.alpha, c.envelope.beta);
         if (!e.empty()) throw UsageError("--alpha/--beta: " + e);
     } else {
@@ -38,7 +43,8 @@ Slab1DCase slab1DCaseFromFlags(const Args& args) {
     if (args.has("wall-width-in")) {
         const double d = args.requiredNumber("wall-width-in");
         if (d <= 0.0 || d > 1000.0)
-            throw UsageError("--wall-width-in " + args.text("wall-width-in") + ": must be > 0 and at most 1000");
+            throw UsageError("--wall-width-in " + args.text("wall-width-in") +
+                             ": must be > 0 and at most 1000");
         c.tstar = tstarFromWallWidthInches(d);
     } else {
         c.tstar = args.number("tstar", 0.099);
@@ -47,7 +53,8 @@ Slab1DCase slab1DCaseFromFlags(const Args& args) {
     }
     c.slab.mu = args.number("mu", 0.6);
     if (c.slab.mu < 0.0 || c.slab.mu > 10.0)
-        throw UsageError("--mu " + args.text("mu") + ": friction coefficient must be between 0 and 10");
+        throw UsageError("--mu " + args.text("mu") +
+                         ": friction coefficient must be between 0 and 10");
     c.slab.limit = args.number("limit", 1.0);
     if (c.slab.limit <= 0.0 || c.slab.limit > 1e6)
         throw UsageError("--limit " + args.text("limit") + ": must be > 0");
@@ -55,12 +62,14 @@ Slab1DCase slab1DCaseFromFlags(const Args& args) {
         if (*d <= 0.0) throw UsageError("--duration " + args.text("duration") + ": must be > 0");
         c.slab.duration = *d;
     }
-    c.scale = *tauScaleFromName(args.choice("scale", {"tau_max", "tau_rise", "tau_dur", "one"}, "tau_max"));
+    c.scale = *tauScaleFromName(
+        args.choice("scale", {"tau_max", "tau_rise", "tau_dur", "one"}, "tau_max"));
     c.solver = args.choice("solver", {"exact", "paper"}, "exact") == "exact" ? SolverKind::Exact
-                                                                              : SolverKind::Paper;
+                                                                             : SolverKind::Paper;
     c.paperStepsPerPeriod = args.number("paper-steps", 16);
     if (c.paperStepsPerPeriod < 4.0 || c.paperStepsPerPeriod > 1e6)
-        throw UsageError("--paper-steps " + args.text("paper-steps") + ": must be between 4 and 1e6");
+        throw UsageError("--paper-steps " + args.text("paper-steps") +
+                         ": must be between 4 and 1e6");
     return c;
 }
 
@@ -73,9 +82,10 @@ nlohmann::json envelopeJson(const Slab1DCase& c) {
                         {"tau_rise", used.tauRise},
                         {"tau_max", used.tauMax},
                         {"tau_dur", used.tauDur},
-                        {"computed", {{"tau_rise", computed.tauRise},
-                                      {"tau_max", computed.tauMax},
-                                      {"tau_dur", computed.tauDur}}},
+                        {"computed",
+                         {{"tau_rise", computed.tauRise},
+                          {"tau_max", computed.tauMax},
+                          {"tau_dur", computed.tauDur}}},
                         {"scale", tauScaleName(c.scale)}};
     return j;
 }

@@ -19,18 +19,22 @@ int runSimulate(const ArgList& argv) {
     const double amplitude = args.requiredNumber("amplitude");
     const double frequency = args.requiredNumber("frequency");
     if (amplitude < 0.0 || amplitude > 1000.0)
-        throw UsageError("--amplitude " + args.text("amplitude") + ": must be between 0 and 1000 g");
+        throw UsageError("--amplitude " + args.text("amplitude") +
+                         ": must be between 0 and 1000 g");
     if (frequency <= 0.0 || frequency > 1000.0)
-        throw UsageError("--frequency " + args.text("frequency") + ": must be > 0 and at most 1000 Hz");
+        throw UsageError("--frequency " + args.text("frequency") +
+                         ": must be > 0 and at most 1000 Hz");
     const bool wantHistory = args.has("history");
     const double historyStep = args.number("history-step", 0.05);
-    if (historyStep <= 0.0) throw UsageError("--history-step " + args.text("history-step") + ": must be > 0");
+    if (historyStep <= 0.0)
+        throw UsageError("--history-step " + args.text("history-step") + ": must be > 0");
 
     RunOptions options;
     options.recordEvents = wantHistory || args.has("events");
     const auto t0 = std::chrono::steady_clock::now();
     const SlabResult r = runSlab1D(c, amplitude, frequency, options);
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     nlohmann::json j = slabResultJson(r, c.tauRef());
     j["model"] = "slab1d";

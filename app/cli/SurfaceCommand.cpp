@@ -14,7 +14,8 @@ int runSurface(const ArgList& argv) {
     const std::string e = validateGrid(grid);
     if (!e.empty()) throw UsageError("--" + e);
     const int threads = args.integer("threads", 0);
-    if (threads < 0 || threads > 1024) throw UsageError("--threads " + args.text("threads") + ": must be 0 (all) to 1024");
+    if (threads < 0 || threads > 1024)
+        throw UsageError("--threads " + args.text("threads") + ": must be 0 (all) to 1024");
     const std::string format = args.choice("format", {"json", "csv"}, "json");
 
     const SweepResult r = runSweep(grid, slab1DPoint(c), nullptr, threads);

@@ -12,18 +12,24 @@ Envelope Envelope::fromPreset(EnvelopePreset p) {
     // alpha, beta fitted to Table 4's tau_rise and tau_dur (SPEC §3): round values that
     // reproduce the table to 3 digits, surely the originals.
     switch (p) {
-    case EnvelopePreset::Fast: return {0.01, 2.0, p};
-    case EnvelopePreset::Moderate: return {0.15, 0.40, p};
-    case EnvelopePreset::Slow: return {0.04, 0.40, p};
+    case EnvelopePreset::Fast:
+        return {0.01, 2.0, p};
+    case EnvelopePreset::Moderate:
+        return {0.15, 0.40, p};
+    case EnvelopePreset::Slow:
+        return {0.04, 0.40, p};
     }
     return {};
 }
 
 CharacteristicTimes table4Times(EnvelopePreset p) {
     switch (p) {
-    case EnvelopePreset::Fast: return {3.38, 27.78, 732.11};
-    case EnvelopePreset::Moderate: return {8.92, 37.89, 113.80};
-    case EnvelopePreset::Slow: return {12.81, 63.13, 266.23};
+    case EnvelopePreset::Fast:
+        return {3.38, 27.78, 732.11};
+    case EnvelopePreset::Moderate:
+        return {8.92, 37.89, 113.80};
+    case EnvelopePreset::Slow:
+        return {12.81, 63.13, 266.23};
     }
     return {};
 }
@@ -55,16 +61,22 @@ CharacteristicTimes Envelope::computedTimes(double tstar) const {
     };
     // Rising half-maximum: e is increasing on (0, tPeak).
     double hiRise = std::isfinite(tPeak) ? tPeak : 1.0;
-    while (!std::isfinite(tPeak) && envelopeValue(alpha, beta, hiRise) < half) hiRise *= 2.0;
-    c.tauRise = safeguardedNewton(fdf, 0.0, hiRise, -half, envelopeValue(alpha, beta, hiRise) - half).x / tstar;
+    while (!std::isfinite(tPeak) && envelopeValue(alpha, beta, hiRise) < half)
+        hiRise *= 2.0;
+    c.tauRise =
+        safeguardedNewton(fdf, 0.0, hiRise, -half, envelopeValue(alpha, beta, hiRise) - half).x /
+        tstar;
     c.tauMax = tPeak / tstar;
     if (!std::isfinite(tPeak)) {
         c.tauDur = std::numeric_limits<double>::infinity();
         return c;
     }
     double hi = 2.0 * tPeak;
-    while (envelopeValue(alpha, beta, hi) > half) hi *= 2.0;
-    c.tauDur = safeguardedNewton(fdf, tPeak, hi, eMax - half, envelopeValue(alpha, beta, hi) - half).x / tstar;
+    while (envelopeValue(alpha, beta, hi) > half)
+        hi *= 2.0;
+    c.tauDur =
+        safeguardedNewton(fdf, tPeak, hi, eMax - half, envelopeValue(alpha, beta, hi) - half).x /
+        tstar;
     return c;
 }
 
@@ -75,10 +87,14 @@ CharacteristicTimes Envelope::scalingTimes(double tstar) const {
 double Envelope::tauRef(TauScale scale, double tstar) const {
     const CharacteristicTimes c = scalingTimes(tstar);
     switch (scale) {
-    case TauScale::TauRise: return c.tauRise;
-    case TauScale::TauMax: return c.tauMax;
-    case TauScale::TauDur: return c.tauDur;
-    case TauScale::One: return 1.0;
+    case TauScale::TauRise:
+        return c.tauRise;
+    case TauScale::TauMax:
+        return c.tauMax;
+    case TauScale::TauDur:
+        return c.tauDur;
+    case TauScale::One:
+        return 1.0;
     }
     return 1.0;
 }
@@ -99,9 +115,12 @@ std::optional<EnvelopePreset> presetFromName(const std::string& name) {
 
 std::string presetName(EnvelopePreset p) {
     switch (p) {
-    case EnvelopePreset::Fast: return "fast";
-    case EnvelopePreset::Moderate: return "moderate";
-    case EnvelopePreset::Slow: return "slow";
+    case EnvelopePreset::Fast:
+        return "fast";
+    case EnvelopePreset::Moderate:
+        return "moderate";
+    case EnvelopePreset::Slow:
+        return "slow";
     }
     return "?";
 }
@@ -116,10 +135,14 @@ std::optional<TauScale> tauScaleFromName(const std::string& name) {
 
 std::string tauScaleName(TauScale s) {
     switch (s) {
-    case TauScale::TauRise: return "tau_rise";
-    case TauScale::TauMax: return "tau_max";
-    case TauScale::TauDur: return "tau_dur";
-    case TauScale::One: return "one";
+    case TauScale::TauRise:
+        return "tau_rise";
+    case TauScale::TauMax:
+        return "tau_max";
+    case TauScale::TauDur:
+        return "tau_dur";
+    case TauScale::One:
+        return "one";
     }
     return "?";
 }

@@ -5,7 +5,9 @@
 
 namespace kinstab {
 
-nlohmann::json numberOrNull(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); }
+nlohmann::json numberOrNull(double x) {
+    return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json();
+}
 
 nlohmann::json workJson(const SolverWork& w) {
     return {{"accel_evaluations", w.accelEvaluations},

@@ -3,8 +3,8 @@
 // Bare Newton diverges at grazing events (f' -> 0 at a double root), so each Newton step
 // is accepted only when it stays inside the shrinking bracket; otherwise we bisect.
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -36,8 +36,10 @@ RootResult safeguardedNewton(FDF&& fdf, double lo, double hi, double flo, double
     fdf(x, f, df);
     for (r.iterations = 1; r.iterations <= maxIterations; ++r.iterations) {
         if (f == 0.0) return {x, r.iterations, true};
-        if (f < 0.0) a = x;
-        else b = x;
+        if (f < 0.0)
+            a = x;
+        else
+            b = x;
         const bool newtonOutside = ((x - b) * df - f) * ((x - a) * df - f) > 0.0;
         const bool newtonSlow = std::abs(2.0 * f) > std::abs(dxOld * df);
         dxOld = dx;

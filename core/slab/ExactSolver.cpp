@@ -106,11 +106,14 @@ ExactRun::Step ExactRun::segment(double lo, double hi) {
     std::array<double, 10> cuts{};
     std::size_t n = 0;
     cuts[n++] = lo;
-    for (int i = 0; i < up.n; ++i) cuts[n++] = up.t[static_cast<std::size_t>(i)];
-    for (int i = 0; i < down.n; ++i) cuts[n++] = down.t[static_cast<std::size_t>(i)];
+    for (int i = 0; i < up.n; ++i)
+        cuts[n++] = up.t[static_cast<std::size_t>(i)];
+    for (int i = 0; i < down.n; ++i)
+        cuts[n++] = down.t[static_cast<std::size_t>(i)];
     // At most eight crossings: insertion sort (std::sort trips a GCC 12 bounds warning here).
     for (std::size_t i = 2; i < n; ++i)
-        for (std::size_t j = i; j > 1 && cuts[j - 1] > cuts[j]; --j) std::swap(cuts[j - 1], cuts[j]);
+        for (std::size_t j = i; j > 1 && cuts[j - 1] > cuts[j]; --j)
+            std::swap(cuts[j - 1], cuts[j]);
     cuts[n++] = hi;
     for (std::size_t i = 0; i + 1 < n; ++i) {
         if (cuts[i + 1] <= cuts[i]) continue;
@@ -140,12 +143,14 @@ ExactRun::Step ExactRun::slipThrough(double hi, bool excess) {
         const double vHi = velocityAt(hi);
         const bool stops = s_ * vHi <= 0.0 && !(excess && v_ == 0.0);
         // s v <= 0 already at t_ only through rounding right after a grazing onset: stop there.
-        const double tStop = !stops ? hi : (s_ * v_ <= 0.0) ? t_ : rootOf(
-                                         [&](double tau, double& f, double& df) {
-                                             f = s_ * velocityAt(tau);
-                                             df = s_ * (-s_ * p_.mu - a_.accel(tau));
-                                         },
-                                         t_, hi, s_ * v_, s_ * vHi);
+        const double tStop = !stops             ? hi
+                             : (s_ * v_ <= 0.0) ? t_
+                                                : rootOf(
+                                                      [&](double tau, double& f, double& df) {
+                                                          f = s_ * velocityAt(tau);
+                                                          df = s_ * (-s_ * p_.mu - a_.accel(tau));
+                                                      },
+                                                      t_, hi, s_ * v_, s_ * vHi);
         const double xEnd = displacementAt(tStop);
         if (s_ * xEnd > p_.limit) {
             // Displacement is monotone while the slip keeps its sign: one crossing of the limit.

@@ -35,14 +35,17 @@ History sampleHistory(const Excitation1D& a, double mu, const std::vector<SlabEv
     std::vector<double> times;
     const long n = static_cast<long>(std::floor(tauEnd / step));
     times.reserve(static_cast<std::size_t>(n) + 2 + events.size());
-    for (long k = 0; k <= n; ++k) times.push_back(static_cast<double>(k) * step);
-    for (const SlabEvent& e : events) times.push_back(e.tau);
+    for (long k = 0; k <= n; ++k)
+        times.push_back(static_cast<double>(k) * step);
+    for (const SlabEvent& e : events)
+        times.push_back(e.tau);
     times.push_back(tauEnd);
     std::sort(times.begin(), times.end());
     times.erase(std::unique(times.begin(), times.end()), times.end());
     History h;
     h.samples.reserve(times.size());
-    for (double t : times) h.samples.push_back(stateAt(a, mu, events, t));
+    for (double t : times)
+        h.samples.push_back(stateAt(a, mu, events, t));
     return h;
 }
 
@@ -51,7 +54,8 @@ std::string historyCsv(const History& h) {
     s.precision(12);
     s << "tau,accel_g,delta,velocity,state\n";
     for (const auto& x : h.samples)
-        s << x.tau << ',' << x.accel << ',' << x.delta << ',' << x.velocity << ',' << x.state << '\n';
+        s << x.tau << ',' << x.accel << ',' << x.delta << ',' << x.velocity << ',' << x.state
+          << '\n';
     return s.str();
 }
 

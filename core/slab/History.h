@@ -26,7 +26,8 @@ struct History {
 History sampleHistory(const Excitation1D& a, double mu, const std::vector<SlabEvent>& events,
                       double tauEnd, double step);
 // The relative state at one time, from the events before it.
-HistorySample stateAt(const Excitation1D& a, double mu, const std::vector<SlabEvent>& events, double tau);
+HistorySample stateAt(const Excitation1D& a, double mu, const std::vector<SlabEvent>& events,
+                      double tau);
 
 std::string historyCsv(const History& h);
 

@@ -19,7 +19,8 @@ struct Sample {
 
 class PaperRun {
 public:
-    PaperRun(const Excitation1D& a, const SlabParams& p, double h, const RunOptions& o, long maxSteps)
+    PaperRun(const Excitation1D& a, const SlabParams& p, double h, const RunOptions& o,
+             long maxSteps)
         : a_(a), p_(p), h_(h), o_(o), maxSteps_(maxSteps) {}
 
     // nullopt: a failure to locate an event (the caller restarts with H/4).

@@ -11,8 +11,8 @@
 namespace kinstab {
 
 struct PaperSettings {
-    double step = 0.0;    // H in dimensionless time (the paper: period / 16)
-    int maxFailures = 3;  // the paper abandons the case after three failures
+    double step = 0.0;   // H in dimensionless time (the paper: period / 16)
+    int maxFailures = 3; // the paper abandons the case after three failures
     long maxSteps = 50'000'000;
 };
 

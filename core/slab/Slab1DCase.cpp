@@ -9,10 +9,16 @@
 
 namespace kinstab {
 
-std::string solverName(SolverKind s) { return s == SolverKind::Exact ? "exact" : "paper"; }
+std::string solverName(SolverKind s) {
+    return s == SolverKind::Exact ? "exact" : "paper";
+}
 
-double tstarFromWallWidth(double d) { return std::sqrt(d / (2.0 * 9.80665)); }
-double tstarFromWallWidthInches(double inches) { return tstarFromWallWidth(inches * 0.0254); }
+double tstarFromWallWidth(double d) {
+    return std::sqrt(d / (2.0 * 9.80665));
+}
+double tstarFromWallWidthInches(double inches) {
+    return tstarFromWallWidth(inches * 0.0254);
+}
 
 std::string validateCase(const Slab1DCase& c) {
     std::string e = validateEnvelope(c.envelope.alpha, c.envelope.beta);

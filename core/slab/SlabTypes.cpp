@@ -7,23 +7,34 @@ namespace kinstab {
 
 std::string outcomeName(Outcome o) {
     switch (o) {
-    case Outcome::Collapsed: return "collapsed";
-    case Outcome::Stable: return "stable";
-    case Outcome::LiftOff: return "lift_off";
-    case Outcome::Failed: return "failed";
+    case Outcome::Collapsed:
+        return "collapsed";
+    case Outcome::Stable:
+        return "stable";
+    case Outcome::LiftOff:
+        return "lift_off";
+    case Outcome::Failed:
+        return "failed";
     }
     return "failed";
 }
 
 std::string eventKindName(EventKind k) {
     switch (k) {
-    case EventKind::SlipOnset: return "slip";
-    case EventKind::Stick: return "stick";
-    case EventKind::Reversal: return "reversal";
-    case EventKind::Collapse: return "collapse";
-    case EventKind::Stable: return "stable";
-    case EventKind::DurationCap: return "duration_cap";
-    case EventKind::LiftOff: return "lift_off";
+    case EventKind::SlipOnset:
+        return "slip";
+    case EventKind::Stick:
+        return "stick";
+    case EventKind::Reversal:
+        return "reversal";
+    case EventKind::Collapse:
+        return "collapse";
+    case EventKind::Stable:
+        return "stable";
+    case EventKind::DurationCap:
+        return "duration_cap";
+    case EventKind::LiftOff:
+        return "lift_off";
     }
     return "?";
 }

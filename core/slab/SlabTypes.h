@@ -31,8 +31,8 @@ struct SlabEvent {
 };
 
 struct SlabParams {
-    double mu = 0.6;     // friction coefficient
-    double limit = 1.0;  // bearing length / (d/2): collapse when |delta| > limit
+    double mu = 0.6;                // friction coefficient
+    double limit = 1.0;             // bearing length / (d/2): collapse when |delta| > limit
     std::optional<double> duration; // tau_out: a finite earthquake
 };
 std::string validateSlabParams(const SlabParams& p); // empty when fine
@@ -41,7 +41,7 @@ std::string validateSlabParams(const SlabParams& p); // empty when fine
 struct SolverWork {
     long accelEvaluations = 0; // a(tau) and closed-form integral evaluations
     long rootIterations = 0;
-    long steps = 0;    // RK4 steps, or segments for the exact solver
+    long steps = 0; // RK4 steps, or segments for the exact solver
     long events = 0;
     long restarts = 0; // paper solver: H -> H/4 restarts
 };
@@ -49,8 +49,8 @@ struct SolverWork {
 struct SlabResult {
     Outcome outcome = Outcome::Failed;
     double tauC = std::numeric_limits<double>::quiet_NaN(); // collapse (or lift-off) time
-    double tauEnd = 0;  // where the run ended
-    std::string failure; // reason when outcome == Failed
+    double tauEnd = 0;                                      // where the run ended
+    std::string failure;                                    // reason when outcome == Failed
     int slipIntervals = 0;
     double maxAbsDelta = 0;
     double residualDelta = 0;

@@ -33,8 +33,10 @@ CriticalResult criticalAmplitude(const PointFunction& point, double frequencyHz,
     if (!found) return r;
     while (hi - lo > search.tolerance) {
         const double mid = 0.5 * (lo + hi);
-        if (collapses(mid)) hi = mid;
-        else lo = mid;
+        if (collapses(mid))
+            hi = mid;
+        else
+            lo = mid;
     }
     r.amplitude = hi;
     return r;

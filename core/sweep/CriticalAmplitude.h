@@ -10,8 +10,8 @@
 namespace kinstab {
 
 struct CriticalSearch {
-    double from = 0.0;  // start of the scan (the default starts at mu: below it nothing slips)
-    double to = 5.0;    // search limit, g
+    double from = 0.0; // start of the scan (the default starts at mu: below it nothing slips)
+    double to = 5.0;   // search limit, g
     double scanStep = 0.01;
     double tolerance = 1e-6;
 };

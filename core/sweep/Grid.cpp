@@ -29,7 +29,8 @@ std::vector<double> linspaceStep(double start, double stop, double step) {
     const double n = (stop - start) / step;
     const long count = static_cast<long>(std::floor(n + 1e-9)) + 1;
     v.reserve(static_cast<std::size_t>(std::max(count, 0L)));
-    for (long i = 0; i < count; ++i) v.push_back(start + static_cast<double>(i) * step);
+    for (long i = 0; i < count; ++i)
+        v.push_back(start + static_cast<double>(i) * step);
     return v;
 }
 
@@ -44,7 +45,8 @@ ParsedList parseList(const std::string& text) {
         std::vector<std::string> parts;
         std::stringstream ss(t);
         std::string item;
-        while (std::getline(ss, item, ':')) parts.push_back(trim(item));
+        while (std::getline(ss, item, ':'))
+            parts.push_back(trim(item));
         double a = 0, b = 0, h = 0;
         if (parts.size() != 3 || !parseNumber(parts[0], a) || !parseNumber(parts[1], b) ||
             !parseNumber(parts[2], h)) {

@@ -34,12 +34,16 @@ SweepResult runSweep(const SweepGrid& grid, const PointFunction& point, SweepCon
             if (control && control->onProgress) control->onProgress(n, total);
         }
     };
-    int n = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    n = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(n), std::max<std::size_t>(total, 1)));
+    int n =
+        threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    n = static_cast<int>(
+        std::min<std::size_t>(static_cast<std::size_t>(n), std::max<std::size_t>(total, 1)));
     std::vector<std::thread> pool;
-    for (int i = 1; i < n; ++i) pool.emplace_back(worker);
+    for (int i = 1; i < n; ++i)
+        pool.emplace_back(worker);
     worker();
-    for (auto& t : pool) t.join();
+    for (auto& t : pool)
+        t.join();
 
     r.completed = completed.load();
     r.cancelled = r.completed < total;

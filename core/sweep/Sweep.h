@@ -34,8 +34,8 @@ struct SweepResult {
 using PointFunction = std::function<PointResult(double amplitude, double frequencyHz)>;
 
 // threads <= 0: all hardware threads.
-SweepResult runSweep(const SweepGrid& grid, const PointFunction& point, SweepControl* control = nullptr,
-                     int threads = 0);
+SweepResult runSweep(const SweepGrid& grid, const PointFunction& point,
+                     SweepControl* control = nullptr, int threads = 0);
 
 PointFunction slab1DPoint(const Slab1DCase& c);
 
