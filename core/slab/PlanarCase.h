@@ -1,0 +1,45 @@
+#pragma once
+// One planar stability case (Furgerson 1980, ch. VI; SPEC §5): everything but the across-wall
+// amplitude A_x and frequency f_x, which a sweep varies (Figs. 37-42). a_y is an enveloped sine
+// with A_y = ratio A_x and its own f_y; the vertical factor n = 1 + a_z takes any motion.
+
+#include "core/excitation/Envelope.h"
+#include "core/excitation/Excitation1D.h"
+#include "core/slab/PlanarSolver.h"
+#include "core/sweep/Sweep.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace kinstab {
+
+// How each horizontal component's S_max is taken. Product (default, ch. IV): the maximum of
+// envelope x sine, so each component peaks at its amplitude. Envelope (as printed in ch. VI):
+// the maximum of the envelope alone, so each peaks somewhat below its amplitude.
+enum class PlanarNormalization { Product, Envelope };
+std::string normalizationName(PlanarNormalization n);
+std::optional<PlanarNormalization> normalizationFromName(const std::string& name);
+
+struct PlanarCase {
+    Envelope envelope = Envelope::fromPreset(EnvelopePreset::Moderate);
+    double tstar = 0.099; // s
+    PlanarParams slab;    // mu, limit, theta, duration
+    double ayRatio = 0.9; // A_y / A_x (the paper: Pacoima Dam's ratio of horizontal peaks)
+    double fyHz = 1.0;    // frequency along the walls
+    PlanarNormalization normalization = PlanarNormalization::Product;
+    TauScale scale = TauScale::TauMax;
+    std::shared_ptr<const Excitation1D> vertical; // upward base acceleration a_z in g; null: none
+    PlanarOptions solver;
+
+    double tauRef() const { return envelope.tauRef(scale, tstar); }
+};
+
+std::string validatePlanarCase(const PlanarCase& c); // empty when fine
+
+// The model of one grid point, sharing the case's vertical motion.
+SlabModel2D planarModel(const PlanarCase& c, double ax, double fxHz);
+PlanarResult runPlanar(const PlanarCase& c, double ax, double fxHz);
+PointFunction planarPoint(const PlanarCase& c);
+
+} // namespace kinstab

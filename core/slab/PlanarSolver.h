@@ -1,0 +1,62 @@
+#pragma once
+// Solver of the planar slab (SPEC §5, §6; NUMERICS.md F4, F7, §5.6, §6): adaptive Dormand-Prince
+// 5(4) with a Hermite continuous extension and event location by brackets.
+//  - Slip onset |a_h| = mu n is a time-only event: its roots are found ahead on brackets and
+//    are step boundaries (tstops). Lift-off n = 0 likewise.
+//  - A slip starts from u = 0 along -a_h; the first short stretch is integrated as a quadrature
+//    (the direction is slaved to -a_h there), which spares the explicit method the stiff
+//    alignment of the direction (rate |a|/|u|) near |u| = 0.
+//  - The stop |u| -> 0 is approached in the log-radius variable s = ln|u| (NUMERICS.md §5.6),
+//    where the direction and time are smooth; the stop time is where s -> -inf. A test on the
+//    dot product of velocities would fire early (the direction swings by up to 180 degrees in
+//    the last instants, F7).
+//  - Collapse across (|dx| > limit) or along (|dy| > theta) the walls is located by safeguarded
+//    Newton on re-taken steps.
+
+#include "core/slab/SlabModel2D.h"
+
+#include <limits>
+#include <vector>
+
+namespace kinstab {
+
+enum class ExitSide { None, Across, Along };
+std::string exitSideName(ExitSide s); // "across" | "along" | "none"
+
+struct PlanarEvent {
+    double tau = 0;
+    EventKind kind = EventKind::SlipOnset;
+    double dx = 0, dy = 0; // relative displacement
+    double ux = 0, uy = 0; // relative velocity just after the event
+};
+
+// A point of the computed path: every accepted step and every event (only when asked).
+struct PlanarSample {
+    double tau = 0;
+    double dx = 0, dy = 0, ux = 0, uy = 0;
+    bool slipping = false;
+};
+
+struct PlanarOptions {
+    double relTol = 1e-10;
+    double absTol = 1e-12;
+    bool recordEvents = false;
+    bool recordPath = false;
+    long maxEvents = 2'000'000; // chattering guard
+    long maxSteps = 20'000'000;
+};
+
+struct PlanarResult {
+    // outcome, tauC (collapse or lift-off time), slip intervals, max |dx| and residual dx, work.
+    SlabResult slab;
+    ExitSide exitSide = ExitSide::None;
+    double tauLiftOff = std::numeric_limits<double>::quiet_NaN();
+    double maxAbsDeltaY = 0;
+    double residualDeltaY = 0;
+    std::vector<PlanarEvent> events;
+    std::vector<PlanarSample> path;
+};
+
+PlanarResult solvePlanar(const SlabModel2D& model, const PlanarOptions& options = {});
+
+} // namespace kinstab

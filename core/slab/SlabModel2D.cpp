@@ -1,0 +1,81 @@
+#include "core/slab/SlabModel2D.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace kinstab {
+
+std::string validatePlanarParams(const PlanarParams& p) {
+    std::ostringstream s;
+    if (!std::isfinite(p.mu) || p.mu < 0.0 || p.mu > 10.0)
+        s << "mu = " << p.mu << ": friction coefficient must be between 0 and 10";
+    else if (!std::isfinite(p.limit) || p.limit <= 0.0 || p.limit > 1e6)
+        s << "limit = " << p.limit << ": bearing limit (bearing / (d/2)) must be > 0";
+    else if (!std::isfinite(p.theta) || p.theta <= 0.0 || p.theta > 1e6)
+        s << "theta = " << p.theta << ": along-wall limit (2 wall length / wall width) must be > 0";
+    else if (p.duration && (!std::isfinite(*p.duration) || *p.duration <= 0.0))
+        s << "duration = " << *p.duration << ": tau_out must be a positive number";
+    return s.str();
+}
+
+SlabModel2D::SlabModel2D(std::shared_ptr<const Excitation1D> ax,
+                         std::shared_ptr<const Excitation1D> ay,
+                         std::shared_ptr<const Excitation1D> az, PlanarParams params)
+    : ax_(std::move(ax)), ay_(std::move(ay)), az_(std::move(az)), params_(params) {}
+
+Vec2 SlabModel2D::accel(double tau) const {
+    return {ax_->accel(tau), ay_ ? ay_->accel(tau) : 0.0};
+}
+Vec2 SlabModel2D::accelSlope(double tau) const {
+    return {ax_->accelSlope(tau), ay_ ? ay_->accelSlope(tau) : 0.0};
+}
+double SlabModel2D::normal(double tau) const {
+    return 1.0 + (az_ ? az_->accel(tau) : 0.0);
+}
+double SlabModel2D::normalSlope(double tau) const {
+    return az_ ? az_->accelSlope(tau) : 0.0;
+}
+
+double SlabModel2D::onsetMargin(double tau) const {
+    const Vec2 a = accel(tau);
+    return std::hypot(a.x, a.y) - params_.mu * normal(tau);
+}
+
+double SlabModel2D::onsetMarginSlope(double tau) const {
+    const Vec2 a = accel(tau), s = accelSlope(tau);
+    const double m = std::hypot(a.x, a.y);
+    const double dm = m > 0.0 ? (a.x * s.x + a.y * s.y) / m : std::hypot(s.x, s.y);
+    return dm - params_.mu * normalSlope(tau);
+}
+
+bool SlabModel2D::quietAfter(double tau) const {
+    const double bx = ax_->boundAfter(tau), by = ay_ ? ay_->boundAfter(tau) : 0.0;
+    const double nMin = 1.0 - (az_ ? az_->boundAfter(tau) : 0.0);
+    return std::hypot(bx, by) < params_.mu * nMin;
+}
+
+bool SlabModel2D::quietOn(double lo, double hi) const {
+    const double bx = ax_->boundOn(lo, hi), by = ay_ ? ay_->boundOn(lo, hi) : 0.0;
+    const double nMin = 1.0 - (az_ ? az_->boundOn(lo, hi) : 0.0);
+    return std::hypot(bx, by) <= params_.mu * nMin;
+}
+
+bool SlabModel2D::mayLiftOn(double lo, double hi) const {
+    return az_ && az_->boundOn(lo, hi) >= 1.0;
+}
+
+double SlabModel2D::segmentEnd(double tau) const {
+    double end = ax_->segmentEnd(tau);
+    if (ay_) end = std::min(end, ay_->segmentEnd(tau));
+    if (az_) end = std::min(end, az_->segmentEnd(tau));
+    return end;
+}
+
+double SlabModel2D::horizontalTimeScale() const {
+    double end = ax_->segmentEnd(0.0);
+    if (ay_) end = std::min(end, ay_->segmentEnd(0.0));
+    return end;
+}
+
+} // namespace kinstab

@@ -1,0 +1,63 @@
+#pragma once
+// The planar two-degree-of-freedom slab (Furgerson 1980, ch. VI; SPEC §5): relative displacement
+// (dx across the walls, dy along them) and relative velocity u, driven by two horizontal base
+// accelerations a_x, a_y and a vertical factor n(tau) = 1 + a_z(tau) on the normal force.
+// Each excitation is any Excitation1D (enveloped sine, recorded motion), in g of tau = t / t*.
+
+#include "core/excitation/Excitation1D.h"
+#include "core/slab/SlabTypes.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace kinstab {
+
+struct PlanarParams {
+    double mu = 0.6;     // friction coefficient
+    double limit = 1.0;  // across the walls: collapse when |dx| > limit (bearing / (d/2))
+    double theta = 20.0; // along the walls: collapse when |dy| > theta = 2 wall length / wall width
+    std::optional<double> duration; // tau_out
+};
+std::string validatePlanarParams(const PlanarParams& p); // empty when fine
+
+struct Vec2 {
+    double x = 0, y = 0;
+};
+
+class SlabModel2D {
+public:
+    // ay and az may be null: no motion along the walls, gravity only.
+    SlabModel2D(std::shared_ptr<const Excitation1D> ax, std::shared_ptr<const Excitation1D> ay,
+                std::shared_ptr<const Excitation1D> az, PlanarParams params);
+
+    Vec2 accel(double tau) const;      // a_h
+    Vec2 accelSlope(double tau) const; // a_h'
+    double normal(double tau) const;   // n = 1 + a_z
+    double normalSlope(double tau) const;
+    // g_on = |a_h| - mu n: the slab slips where it is positive (a time-only event).
+    double onsetMargin(double tau) const;
+    double onsetMarginSlope(double tau) const;
+    // True when nothing can start any more after tau: the root-sum-square of both components'
+    // bounds is below mu times the least n can be (SPEC §5, "End").
+    bool quietAfter(double tau) const;
+    // True when nothing can start inside [lo, hi] (cheap rigorous bounds).
+    bool quietOn(double lo, double hi) const;
+    // True when n may reach 0 inside [lo, hi].
+    bool mayLiftOn(double lo, double hi) const;
+    // Next cut of the time line: the earliest segment end of any component.
+    double segmentEnd(double tau) const;
+    // Length of the first segment of the horizontal motion (a half-period for a sine): the
+    // time scale on which a_h turns.
+    double horizontalTimeScale() const;
+
+    const PlanarParams& params() const { return params_; }
+    bool hasVertical() const { return az_ != nullptr; }
+    bool hasAlongWalls() const { return ay_ != nullptr; }
+
+private:
+    std::shared_ptr<const Excitation1D> ax_, ay_, az_;
+    PlanarParams params_;
+};
+
+} // namespace kinstab
