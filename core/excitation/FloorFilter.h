@@ -1,0 +1,39 @@
+#pragma once
+// The floor filter (paper's eq. 6; SPEC §7): the absolute acceleration of a damped linear
+// single-degree-of-freedom oscillator (period T, damping ratio zeta) whose base moves with the
+// ground record,  x'' + 2 zeta w x' + w^2 x = -a_g(t),  floor = x'' + a_g = -(2 zeta w x' + w^2 x).
+// The ground record is linear between samples, so the step from sample to sample is exact
+// (Nigam & Jennings 1969, "Calculation of response spectra from strong-motion earthquake
+// records", BSSA 59(2)): a 2x2 recurrence whose coefficients depend only on T, zeta and dt.
+
+#include "core/io/Accelerogram.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kinstab {
+
+struct FloorFilterParams {
+    double period = 1.0;   // s, the building's fundamental period
+    double damping = 0.02; // fraction of critical; the paper's 2 %
+    // Seconds of free vibration appended after the ground record ends (the floor keeps ringing).
+    // None: until the free vibration has decayed to 1 % (ln 100 / (zeta w)), at most 120 s.
+    std::optional<double> tail;
+};
+
+std::string validateFloorFilter(const FloorFilterParams& p); // empty when fine
+
+struct OscillatorState {
+    double x = 0; // relative displacement, g s^2
+    double v = 0; // relative velocity, g s
+};
+
+// Absolute accelerations at the sample times of the ground samples (g), starting from `start`.
+std::vector<double> floorAcceleration(const std::vector<double>& ground, double dt, double period,
+                                      double damping, OscillatorState start = {});
+
+// The floor motion of a ground record, with the free-vibration tail; metadata names the filter.
+Accelerogram floorMotion(const Accelerogram& ground, const FloorFilterParams& p);
+
+} // namespace kinstab
