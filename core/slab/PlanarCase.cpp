@@ -67,4 +67,9 @@ PointFunction planarPoint(const PlanarCase& c) {
     };
 }
 
+double planarNoSlipAmplitude(const PlanarCase& c) {
+    const double nMin = c.vertical ? 1.0 - c.vertical->peak() : 1.0;
+    return std::max(0.0, c.slab.mu * nMin / std::hypot(1.0, c.ayRatio));
+}
+
 } // namespace kinstab

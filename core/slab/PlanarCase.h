@@ -41,5 +41,8 @@ std::string validatePlanarCase(const PlanarCase& c); // empty when fine
 SlabModel2D planarModel(const PlanarCase& c, double ax, double fxHz);
 PlanarResult runPlanar(const PlanarCase& c, double ax, double fxHz);
 PointFunction planarPoint(const PlanarCase& c);
+// Below this A_x nothing can slip: |a_h| <= A_x sqrt(1 + ratio^2) < mu min n (each component
+// peaks at most at its amplitude). Where a critical-amplitude scan may start.
+double planarNoSlipAmplitude(const PlanarCase& c);
 
 } // namespace kinstab

@@ -28,6 +28,9 @@ namespace {
 using Vec4 = OdeVec<4>; // (dx, dy, ux, uy) in tau
 using Vec5 = OdeVec<5>; // (ex, ey, tau - tau_entry, dx, dy) in s = ln|u|
 
+// Below this speed a slip is slaved to -a_h (see PlanarRun::slaved).
+constexpr double kSlaved = 1e-6;
+
 // 10-point Gauss-Legendre on [-1, 1] (the quadrature of a slip's first stretch).
 constexpr std::array<double, 5> kGlX = {0.1488743389816312, 0.4333953941292472, 0.6794095682990244,
                                         0.8650633666889845, 0.9739065285171717};
@@ -57,7 +60,8 @@ private:
 
     Step window(double w0, double w1);
     Step slipTo(double end);
-    Step startSlip(double end);
+    Step slaved(double end);
+    bool isSlaved(double tau, const Vec4& y) const;
     Approach approachStop(double end);
     Step afterStop();
     double locate(auto&& fdf, double lo, double hi, double flo, double fhi);
@@ -264,8 +268,8 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
     Vec4 absTol = Vec4::Constant(o_.absTol);
     while (t_ < end) {
         const double rho = std::hypot(y_[2], y_[3]);
-        if (rho == 0.0) {
-            const Step s = startSlip(end);
+        if (isSlaved(t_, y_)) {
+            const Step s = slaved(end);
             if (s == Step::Done || !slipping_) return s;
             continue;
         }
@@ -353,11 +357,12 @@ PlanarRun::Step PlanarRun::collapse(double tau, const Vec4& y, int comp) {
     return finish(Outcome::Collapsed);
 }
 
-// A slip's first stretch from u = 0: the direction is slaved to -a_h (it relaxes to it at rate
-// |a|/|u|), so |u| is the quadrature of |a_h| - mu n and the displacement its second integral.
-PlanarRun::Step PlanarRun::startSlip(double end) {
-    const double t0 = t_;
-    const double h0 = std::min(startLength_, end - t0);
+// Slaved slip: while |u| is tiny the direction of u relaxes to -a_h at rate |a|/|u| and lags it
+// by only Omega |u| / |a| (NUMERICS.md F7), so |u| is the quadrature of |a_h| - mu n and the
+// displacement its integral along -a_h: a slip's first stretch from u = 0, and grazing slips and
+// stops, where an explicit method would crawl at steps of |u| / |a|. The neglected lag changes
+// |u| by O(Omega^2 |u|^2 / |a|) per unit time: below 1e-12 for |u| <= kSlaved.
+PlanarRun::Step PlanarRun::slaved(double end) {
     auto margin = [&](double s) {
         ++r_.slab.work.accelEvaluations;
         return m_.onsetMargin(s);
@@ -367,32 +372,66 @@ PlanarRun::Step PlanarRun::startSlip(double end) {
         const double am = std::hypot(a.x, a.y);
         return am > 0.0 ? Vec2{a.x / am, a.y / am} : Vec2{0.0, 0.0};
     };
-    const double rho = gaussLegendre(margin, t0, t0 + h0);
-    const double dxInt = gaussLegendre(
-        [&](double s) { return gaussLegendre(margin, t0, s) * unitA(s).x; }, t0, t0 + h0);
-    const double dyInt = gaussLegendre(
-        [&](double s) { return gaussLegendre(margin, t0, s) * unitA(s).y; }, t0, t0 + h0);
-    Vec4 y = y_;
-    y[0] -= dxInt;
-    y[1] -= dyInt;
-    if (!(rho > 0.0)) {
-        // Nothing to integrate (a grazing onset shorter than rounding): a stop at once.
-        moveTo(t0 + h0, y);
-        return afterStop();
+    double rho = std::hypot(y_[2], y_[3]);
+    while (t_ < end) {
+        const double t0 = t_, h = std::min(startLength_, end - t0), r0 = rho;
+        ++r_.slab.work.steps;
+        auto speedAt = [&](double t) { return r0 + gaussLegendre(margin, t0, t); };
+        auto shift = [&](double t1, int k) {
+            return gaussLegendre(
+                [&](double s) {
+                    const Vec2 e = unitA(s);
+                    return speedAt(s) * (k == 0 ? e.x : e.y);
+                },
+                t0, t1);
+        };
+        const double rEnd = speedAt(t0 + h);
+        Vec4 y = y_;
+        if (!(rEnd > 0.0)) {
+            // The speed reaches zero in this stretch (it is monotone: the sign of |a_h| - mu n
+            // is fixed on a piece): a stop.
+            const double ts = r0 <= 0.0 ? t0
+                                        : locate(
+                                              [&](double t, double& f, double& df) {
+                                                  f = speedAt(t);
+                                                  df = margin(t);
+                                              },
+                                              t0, t0 + h, r0, rEnd);
+            y[0] -= shift(ts, 0);
+            y[1] -= shift(ts, 1);
+            y[2] = y[3] = 0.0;
+            moveTo(ts, y);
+            return afterStop();
+        }
+        y[0] -= shift(t0 + h, 0);
+        y[1] -= shift(t0 + h, 1);
+        rho = rEnd;
+        // Direction at the end: -a_h, lagging its turn (rate Omega) by Omega |u| / |a|.
+        const double tEnd = t0 + h;
+        const Vec2 a = m_.accel(tEnd), sl = m_.accelSlope(tEnd);
+        const double am2 = a.x * a.x + a.y * a.y;
+        const Vec2 ah = unitA(tEnd);
+        const double lag =
+            am2 > 0.0 ? -(a.x * sl.y - a.y * sl.x) / am2 * rho / std::sqrt(am2) : 0.0;
+        const double c = std::cos(lag), sn = std::sin(lag);
+        y[2] = -rho * (ah.x * c - ah.y * sn);
+        y[3] = -rho * (ah.x * sn + ah.y * c);
+        // The direction relaxes at rate |a|/|u|: the first explicit step must resolve that.
+        hNext_ = 0.5 * rho / std::max(std::sqrt(am2), 1e-300);
+        moveTo(tEnd, y);
+        if (rho > 10.0 * kSlaved) break;
     }
-    // Direction at the end: -a_h, lagging its turn (rate Omega) by Omega |u| / |a|.
-    const double tEnd = t0 + h0;
-    const Vec2 a = m_.accel(tEnd), sl = m_.accelSlope(tEnd);
-    const double am2 = a.x * a.x + a.y * a.y;
-    const Vec2 ah = unitA(tEnd);
-    const double lag = am2 > 0.0 ? -(a.x * sl.y - a.y * sl.x) / am2 * rho / std::sqrt(am2) : 0.0;
-    const double c = std::cos(lag), s = std::sin(lag);
-    y[2] = -rho * (ah.x * c - ah.y * s);
-    y[3] = -rho * (ah.x * s + ah.y * c);
-    // The direction relaxes at rate |a|/|u|: the first explicit step must resolve that.
-    hNext_ = 0.5 * rho / std::max(std::sqrt(am2), 1e-300);
-    moveTo(tEnd, y);
     return Step::Continue;
+}
+
+// True when |u| is small enough and u points along -a_h, so that the slip is slaved.
+bool PlanarRun::isSlaved(double tau, const Vec4& y) const {
+    const double rho = std::hypot(y[2], y[3]);
+    if (rho > kSlaved) return false;
+    if (rho == 0.0) return true;
+    const Vec2 a = m_.accel(tau);
+    const double am = std::hypot(a.x, a.y);
+    return am > 0.0 && -(a.x * y[2] + a.y * y[3]) / (am * rho) >= 1.0 - 1e-6;
 }
 
 // Approach of a stop in s = ln|u|, from the current state (|u| > 0, |u| decreasing).
@@ -485,6 +524,10 @@ PlanarRun::Approach PlanarRun::approachStop(double end) {
         z[1] /= nrm;
         fz = f(s, z);
         ds = h * dopri5StepFactor(err);
+        if (isSlaved(tauNew, toTau(z, s))) {
+            moveTo(tauNew, toTau(z, s));
+            return Approach::Exited;
+        }
         // The speed is about to turn (D -> 0): leave s before dtau/ds blows up.
         const Vec2 a = m_.accel(tauNew);
         if (dNew < 1e-3 * (mu_ * m_.normal(tauNew) + std::hypot(a.x, a.y))) {
