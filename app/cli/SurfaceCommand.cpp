@@ -2,6 +2,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/ModelFlags.h"
 #include "core/io/ResultJson.h"
+#include "core/io/ResultTable.h"
 
 namespace kinstab::cli {
 
@@ -16,9 +17,13 @@ int runSurface(const ArgList& argv) {
     const int threads = args.integer("threads", 0);
     if (threads < 0 || threads > 1024)
         throw UsageError("--threads " + args.text("threads") + ": must be 0 (all) to 1024");
-    const std::string format = args.choice("format", {"json", "csv"}, "json");
+    const std::string format = args.choice("format", {"json", "csv", "table"}, "json");
 
     const SweepResult r = runSweep(grid, slab1DPoint(c), nullptr, threads);
+    if (format == "table") {
+        writeOutput(args.text("o"), sweepTable(r, c.tauRef()));
+        return 0;
+    }
     if (format == "csv") {
         writeOutput(args.text("o"), sweepCsv(r, c.tauRef()));
         return 0;

@@ -15,7 +15,7 @@ const char* kUsage = R"(usage: kinstab-cli COMMAND [flags]
 
 commands:
   simulate  --amplitude A --frequency F [model flags] [--history FILE.csv] [--events]
-  surface   --amplitudes LIST --frequencies LIST [model flags] [--threads N] [--format json|csv] [-o FILE]
+  surface   --amplitudes LIST --frequencies LIST [model flags] [--threads N] [--format json|csv|table] [-o FILE]
   critical  --frequencies LIST [model flags] [--max-amplitude A] [--scan-step S]
 
 LIST: comma-separated numbers or start:stop:step.

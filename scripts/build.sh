@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Configure and build kinstab into ${BUILD_DIR:-build} (extra CMake arguments pass through).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build="${BUILD_DIR:-build}"
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE="${BUILD_TYPE:-Release}" "$@" >/dev/null
+cmake --build "$build" -j"$(nproc)"
