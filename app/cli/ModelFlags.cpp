@@ -5,15 +5,16 @@ namespace kinstab::cli {
 std::set<std::string> modelFlagNames() {
     return {"model", "envelope", "alpha",  "beta",         "tstar",       "wall-width-in", "mu",
             "limit", "scale",    "solver", "duration",     "paper-steps", "ay-ratio",      "fy",
-            "theta", "vertical", "record", "floor-period", "damping"};
+            "theta", "vertical", "record", "floor-period", "damping",     "normalization"};
 }
 
 namespace {
 void requireOnly1D(const Args& args) {
     const std::string model = args.choice("model", {"slab1d", "planar"}, "slab1d");
     if (model != "slab1d")
-        throw UsageError("--model planar: the planar model is not available in this build");
-    for (const char* f : {"ay-ratio", "fy", "theta", "vertical"})
+        throw UsageError(
+            "--model planar: not available for this command (use simulate or surface)");
+    for (const char* f : {"ay-ratio", "fy", "theta", "vertical", "normalization"})
         if (args.has(f))
             throw UsageError(std::string("--") + f + " applies to --model planar only");
     for (const char* f : {"record", "floor-period", "damping"})
@@ -25,6 +26,10 @@ void requireOnly1D(const Args& args) {
 
 Slab1DCase slab1DCaseFromFlags(const Args& args) {
     requireOnly1D(args);
+    return commonCaseFromFlags(args);
+}
+
+Slab1DCase commonCaseFromFlags(const Args& args) {
     Slab1DCase c;
     const bool custom = args.has("alpha") || args.has("beta");
     if (custom) {

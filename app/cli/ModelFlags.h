@@ -13,6 +13,9 @@ namespace kinstab::cli {
 std::set<std::string> modelFlagNames();
 // Reads and validates the 1-DOF case; throws UsageError naming the bad flag.
 Slab1DCase slab1DCaseFromFlags(const Args& args);
+// The flags both models share (envelope, t*, mu, limit, scale, duration, solver), unchecked
+// against the model.
+Slab1DCase commonCaseFromFlags(const Args& args);
 // The "envelope" object of the JSON outputs.
 nlohmann::json envelopeJson(const Slab1DCase& c);
 

@@ -1,6 +1,7 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/ModelFlags.h"
+#include "app/cli/PlanarFlags.h"
 #include "core/excitation/EnvelopedSine.h"
 #include "core/io/ResultJson.h"
 #include "core/slab/History.h"
@@ -15,7 +16,6 @@ int runSimulate(const ArgList& argv) {
     std::set<std::string> flags = modelFlagNames();
     flags.insert({"amplitude", "frequency", "history", "history-step"});
     const Args args(argv, flags, {"events"});
-    const Slab1DCase c = slab1DCaseFromFlags(args);
     const double amplitude = args.requiredNumber("amplitude");
     const double frequency = args.requiredNumber("frequency");
     if (amplitude < 0.0 || amplitude > 1000.0)
@@ -28,6 +28,9 @@ int runSimulate(const ArgList& argv) {
     const double historyStep = args.number("history-step", 0.05);
     if (historyStep <= 0.0)
         throw UsageError("--history-step " + args.text("history-step") + ": must be > 0");
+
+    if (isPlanar(args)) return runSimulatePlanar(args, amplitude, frequency, historyStep);
+    const Slab1DCase c = slab1DCaseFromFlags(args);
 
     RunOptions options;
     options.recordEvents = wantHistory || args.has("events");

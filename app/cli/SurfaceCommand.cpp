@@ -1,6 +1,7 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/ModelFlags.h"
+#include "app/cli/PlanarFlags.h"
 #include "core/io/ResultJson.h"
 #include "core/io/ResultTable.h"
 
@@ -10,7 +11,6 @@ int runSurface(const ArgList& argv) {
     std::set<std::string> flags = modelFlagNames();
     flags.insert({"amplitudes", "frequencies", "threads", "format", "o"});
     const Args args(argv, flags);
-    const Slab1DCase c = slab1DCaseFromFlags(args);
     SweepGrid grid{args.list("amplitudes"), args.list("frequencies")};
     const std::string e = validateGrid(grid);
     if (!e.empty()) throw UsageError("--" + e);
@@ -18,6 +18,9 @@ int runSurface(const ArgList& argv) {
     if (threads < 0 || threads > 1024)
         throw UsageError("--threads " + args.text("threads") + ": must be 0 (all) to 1024");
     const std::string format = args.choice("format", {"json", "csv", "table"}, "json");
+
+    if (isPlanar(args)) return runSurfacePlanar(args, grid, threads, format);
+    const Slab1DCase c = slab1DCaseFromFlags(args);
 
     const SweepResult r = runSweep(grid, slab1DPoint(c), nullptr, threads);
     if (format == "table") {

@@ -1,0 +1,87 @@
+// simulate and surface with --model planar (SPEC §12): the JSON of the 1-DOF model with keys
+// added, never renamed: exit_side ("across" | "along", null unless collapsed), tau_lift_off,
+// max_abs_delta_y, residual_delta_y, and the planar case.
+
+#include "app/cli/Commands.h"
+#include "app/cli/PlanarFlags.h"
+#include "core/io/ResultJson.h"
+
+#include <chrono>
+#include <iostream>
+#include <sstream>
+
+namespace kinstab::cli {
+
+namespace {
+nlohmann::json planarEventsJson(const std::vector<PlanarEvent>& events) {
+    nlohmann::json a = nlohmann::json::array();
+    for (const auto& e : events)
+        a.push_back({{"tau", e.tau},
+                     {"kind", eventKindName(e.kind)},
+                     {"dx", e.dx},
+                     {"dy", e.dy},
+                     {"ux", e.ux},
+                     {"uy", e.uy}});
+    return a;
+}
+
+// The computed path (every accepted step and event) with the excitation there.
+std::string planarHistoryCsv(const SlabModel2D& m, const PlanarResult& r) {
+    std::ostringstream s;
+    s.precision(12);
+    s << "tau,ax,ay,n,dx,dy,ux,uy,state\n";
+    for (const PlanarSample& p : r.path) {
+        const Vec2 a = m.accel(p.tau);
+        s << p.tau << ',' << a.x << ',' << a.y << ',' << m.normal(p.tau) << ',' << p.dx << ','
+          << p.dy << ',' << p.ux << ',' << p.uy << ',' << (p.slipping ? "slip" : "stick") << '\n';
+    }
+    return s.str();
+}
+} // namespace
+
+int runSimulatePlanar(const Args& args, double amplitude, double frequency, double historyStep) {
+    PlanarCase c = planarCaseFromFlags(args);
+    if (args.has("history-step") && historyStep > 0.0)
+        throw UsageError("--history-step: with --model planar the history lists the solver's own "
+                         "steps and events");
+    c.solver.recordEvents = args.has("events");
+    c.solver.recordPath = args.has("history");
+    const SlabModel2D model = planarModel(c, amplitude, frequency);
+    const auto t0 = std::chrono::steady_clock::now();
+    const PlanarResult r = solvePlanar(model, c.solver);
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    nlohmann::json j = slabResultJson(r.slab, c.tauRef());
+    j.update(planarCaseJson(c));
+    j["amplitude"] = amplitude;
+    j["frequency"] = frequency;
+    j["tau_ref"] = c.tauRef();
+    j["exit_side"] = r.slab.outcome == Outcome::Collapsed ? nlohmann::json(exitSideName(r.exitSide))
+                                                          : nlohmann::json();
+    j["tau_lift_off"] = numberOrNull(r.tauLiftOff);
+    j["max_abs_delta_y"] = r.maxAbsDeltaY;
+    j["residual_delta_y"] = r.residualDeltaY;
+    j["work"]["rejected_steps"] = r.slab.work.restarts;
+    j["wall_time_s"] = wall;
+    if (args.has("events")) j["events"] = planarEventsJson(r.events);
+    if (args.has("history")) writeOutput(args.text("history"), planarHistoryCsv(model, r));
+    std::cout << j.dump(2) << "\n";
+    return 0;
+}
+
+int runSurfacePlanar(const Args& args, const SweepGrid& grid, int threads,
+                     const std::string& format) {
+    const PlanarCase c = planarCaseFromFlags(args);
+    const SweepResult r = runSweep(grid, planarPoint(c), nullptr, threads);
+    if (format == "csv") {
+        writeOutput(args.text("o"), sweepCsv(r, c.tauRef()));
+        return 0;
+    }
+    nlohmann::json j = sweepJson(r, c.tauRef());
+    j.update(planarCaseJson(c));
+    writeOutput(args.text("o"), j.dump() + "\n");
+    return 0;
+}
+
+} // namespace kinstab::cli

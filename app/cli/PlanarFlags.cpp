@@ -1,0 +1,88 @@
+#include "app/cli/PlanarFlags.h"
+
+#include "app/cli/ModelFlags.h"
+#include "core/excitation/RecordedMotion.h"
+#include "core/io/RecordReader.h"
+
+namespace kinstab::cli {
+
+bool isPlanar(const Args& args) {
+    return args.choice("model", {"slab1d", "planar"}, "slab1d") == "planar";
+}
+
+namespace {
+// The vertical record: upward acceleration in g, from its first sample at tau = 0.
+std::shared_ptr<const Excitation1D> verticalFromFile(const std::string& path, double tstar) {
+    Accelerogram record;
+    try {
+        record = readRecord(path);
+    } catch (const RecordError& e) {
+        throw UsageError("--vertical " + path + ": " + e.what());
+    }
+    const std::string e = validateRecordedMotion(record, tstar, std::nullopt);
+    if (!e.empty()) throw UsageError("--vertical " + path + ": " + e);
+    return std::make_shared<RecordedMotion>(record, tstar);
+}
+} // namespace
+
+PlanarCase planarCaseFromFlags(const Args& args) {
+    if (args.text("solver", "exact") == "paper" || args.has("paper-steps"))
+        throw UsageError("--solver paper: the paper's RK4 solver is for --model slab1d only");
+    for (const char* f : {"record", "floor-period", "damping"})
+        if (args.has(f))
+            throw UsageError(std::string("--") + f + ": not available with --model planar");
+    const Slab1DCase common = commonCaseFromFlags(args);
+    PlanarCase c;
+    c.envelope = common.envelope;
+    c.tstar = common.tstar;
+    c.scale = common.scale;
+    c.slab.mu = common.slab.mu;
+    c.slab.limit = common.slab.limit;
+    c.slab.duration = common.slab.duration;
+    c.ayRatio = args.number("ay-ratio", 0.9);
+    if (c.ayRatio < 0.0 || c.ayRatio > 100.0)
+        throw UsageError("--ay-ratio " + args.text("ay-ratio") +
+                         ": A_y / A_x must be between 0 and 100");
+    if (!args.has("fy"))
+        throw UsageError("--fy is required with --model planar (frequency along the walls, Hz; "
+                         "the paper uses 0.2, 0.5, 1, 2, 5, 10)");
+    c.fyHz = args.requiredNumber("fy");
+    if (c.fyHz <= 0.0 || c.fyHz > 1000.0)
+        throw UsageError("--fy " + args.text("fy") + ": must be > 0 and at most 1000 Hz");
+    c.slab.theta = args.number("theta", 20.0);
+    if (c.slab.theta <= 0.0 || c.slab.theta > 1e6)
+        throw UsageError("--theta " + args.text("theta") +
+                         ": must be > 0 (2 wall length / wall width)");
+    c.normalization =
+        *normalizationFromName(args.choice("normalization", {"product", "envelope"}, "product"));
+    if (args.has("vertical")) c.vertical = verticalFromFile(args.text("vertical"), c.tstar);
+    const std::string e = validatePlanarCase(c);
+    if (!e.empty()) throw UsageError(e);
+    return c;
+}
+
+nlohmann::json planarCaseJson(const PlanarCase& c) {
+    Slab1DCase common;
+    common.envelope = c.envelope;
+    common.tstar = c.tstar;
+    common.scale = c.scale;
+    nlohmann::json vertical; // null: gravity only
+    if (const auto* r = dynamic_cast<const RecordedMotion*>(c.vertical.get()))
+        vertical = {
+            {"samples", r->samples().size()}, {"dt_tau", r->sampleStep()}, {"peak_g", r->peak()}};
+    return {{"model", "planar"},
+            {"solver", "dopri5"},
+            {"rel_tol", c.solver.relTol},
+            {"abs_tol", c.solver.absTol},
+            {"envelope", envelopeJson(common)},
+            {"mu", c.slab.mu},
+            {"tstar", c.tstar},
+            {"limit", c.slab.limit},
+            {"theta", c.slab.theta},
+            {"ay_ratio", c.ayRatio},
+            {"fy", c.fyHz},
+            {"normalization", normalizationName(c.normalization)},
+            {"vertical", vertical}};
+}
+
+} // namespace kinstab::cli

@@ -1,0 +1,33 @@
+#pragma once
+// The planar model's flags (SPEC §12): --ay-ratio R (0.9), --fy F (Hz, required), --theta X (20),
+// --vertical FILE (none: gravity only), --normalization product|envelope (product).
+
+#include "app/cli/Args.h"
+#include "core/slab/PlanarCase.h"
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace kinstab::cli {
+
+bool isPlanar(const Args& args); // --model planar
+// Reads and validates the planar case; throws UsageError naming the bad flag.
+PlanarCase planarCaseFromFlags(const Args& args);
+// The planar keys of the JSON outputs (model, envelope, mu, tstar, limit, ay_ratio, fy, theta,
+// normalization, vertical, solver, tolerances).
+nlohmann::json planarCaseJson(const PlanarCase& c);
+
+} // namespace kinstab::cli
+
+namespace kinstab {
+struct SweepGrid;
+}
+
+namespace kinstab::cli {
+
+// The planar branches of simulate and surface, after the shared flags are read.
+int runSimulatePlanar(const Args& args, double amplitude, double frequency, double historyStep);
+int runSurfacePlanar(const Args& args, const SweepGrid& grid, int threads,
+                     const std::string& format);
+
+} // namespace kinstab::cli
