@@ -1,0 +1,76 @@
+#pragma once
+// The building an engineer describes once for every code (SPEC §9, CODES.md §0): stories with
+// their weights and heights (uniform by default), total height h_n, plan dimension D parallel to
+// the force, period entered or left to each code's own formula, units, system, occupancy.
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace kinstab {
+
+// Bad input to a code module or the building: the message names the field, the value and the
+// allowed range. Nothing is computed from bad input.
+struct InputError : std::invalid_argument {
+    using std::invalid_argument::invalid_argument;
+};
+
+enum class LengthUnit { Feet, Metres };
+
+// Lateral system, as far as the codes' period formulas and tables need it.
+enum class StructuralSystem {
+    SteelMomentFrame,     // moment frame resisting 100 % of the force, steel
+    ConcreteMomentFrame,  // moment frame resisting 100 % of the force, reinforced concrete
+    SteelBracedEccentric, // steel eccentrically (or buckling-restrained) braced frame
+    DualFrameWall,        // moment frame + shear walls (the paper's building)
+    ShearWall,            // concrete or masonry shear walls (bearing-wall or building-frame)
+    BracedFrame,          // concentrically braced frame
+    Other,
+};
+
+// What the building is used for; each code maps it to its own importance factor unless the
+// code's inputs give one explicitly.
+enum class Occupancy {
+    Standard,  // offices, dwellings, commerce (the paper's building)
+    Assembly,  // large assembly (> 300 persons in one room)
+    Hazardous, // hazardous contents
+    Essential, // hospitals, fire and police stations, emergency centres
+};
+
+struct Building {
+    std::string name;
+    int stories = 16;
+    LengthUnit unit = LengthUnit::Feet;
+    double height = 177.0;        // h_n, roof above the base, in `unit`
+    double planDimension = 78.62; // D (UBC) / L (ATC): plan dimension parallel to the force
+    std::optional<double> period; // s; nullopt: each code estimates it with its own formula
+    StructuralSystem system = StructuralSystem::DualFrameWall;
+    Occupancy occupancy = Occupancy::Standard;
+    std::vector<double> storyWeights; // bottom first, any unit of weight; empty: all equal
+    std::vector<double> storyHeights; // bottom first, in `unit`, summing to height; empty: equal
+};
+
+std::string validateBuilding(const Building& b); // empty when fine
+void requireValidBuilding(const Building& b);    // throws InputError
+
+double metresPerUnit(LengthUnit u);
+double heightFeet(const Building& b);
+double heightMetres(const Building& b);
+double planDimensionFeet(const Building& b);
+double planDimensionMetres(const Building& b);
+
+// Per level, bottom first (level n = roof last): weights and heights above the base in `unit`.
+std::vector<double> levelWeights(const Building& b);
+std::vector<double> levelHeights(const Building& b);
+
+std::string unitName(LengthUnit u); // "ft" | "m"
+std::optional<LengthUnit> unitFromName(const std::string& s);
+std::string systemName(StructuralSystem s); // e.g. "dual_frame_wall"
+std::optional<StructuralSystem> systemFromName(const std::string& s);
+std::vector<std::string> systemNames();
+std::string occupancyName(Occupancy o); // "standard" | "assembly" | "hazardous" | "essential"
+std::optional<Occupancy> occupancyFromName(const std::string& s);
+std::vector<std::string> occupancyNames();
+
+} // namespace kinstab

@@ -1,0 +1,80 @@
+#include "core/codes/DesignCheck.h"
+
+#include "core/codes/Building.h"
+#include "core/sweep/Sweep.h"
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace kinstab {
+
+std::string verdictText(Verdict v) {
+    return v == Verdict::OverstressGoverns ? "overstress governs" : "kinetic instability governs";
+}
+
+std::string validateCriticalSearch(const CriticalSearch& s) {
+    try {
+        requireRange("check.from", s.from, 0.0, 1000.0, "g");
+        requireAbove("check.max_amplitude", s.to, s.from, 1000.0, "g");
+        requireAbove("check.scan_step", s.scanStep, 0.0, s.to, "g");
+        requireAbove("check.tolerance", s.tolerance, 0.0, s.scanStep, "g");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return {};
+}
+
+namespace {
+CodeVerdict judge(const CodeResult& r, std::optional<double> aCrit, double searchLimit) {
+    CodeVerdict v;
+    v.code = r.code;
+    v.title = r.title;
+    v.ratio = r.topRatio;
+    v.ratioWithoutFt = r.topRatioWithoutFt;
+    v.periodSeconds = r.periodSeconds;
+    v.frequencyHz = 1.0 / r.periodSeconds;
+    v.aCrit = aCrit;
+    std::ostringstream s;
+    if (!aCrit) {
+        // Nothing collapses up to the search limit: A_crit exceeds it.
+        v.verdict = r.topRatio < searchLimit ? Verdict::OverstressGoverns
+                                             : Verdict::KineticInstabilityGoverns;
+        s << "no collapse up to A = " << searchLimit << " g at f = " << v.frequencyHz << " Hz";
+    } else {
+        if (r.topRatio > 0) v.margin = *aCrit / r.topRatio;
+        // Chapter V: below A_crit the members overstress first.
+        v.verdict =
+            r.topRatio < *aCrit ? Verdict::OverstressGoverns : Verdict::KineticInstabilityGoverns;
+        s << "F_top/w_top = " << r.topRatio << (r.topRatio < *aCrit ? " < " : " >= ")
+          << "A_crit = " << *aCrit << " g at f = " << v.frequencyHz << " Hz";
+    }
+    v.explanation = s.str();
+    return v;
+}
+} // namespace
+
+DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1DCase& slab,
+                              const CriticalSearch& search) {
+    if (const std::string e = validateCase(slab); !e.empty()) throw InputError(e);
+    if (const std::string e = validateCriticalSearch(search); !e.empty()) throw InputError(e);
+    DesignCheckResult out;
+    const PointFunction point = slab1DPoint(slab);
+    std::map<double, std::optional<double>> cache; // A_crit by frequency
+    for (const CodeResult& r : codes) {
+        if (!(r.periodSeconds > 0) || !std::isfinite(r.periodSeconds))
+            throw InputError(r.code + ".period_s = " + std::to_string(r.periodSeconds) +
+                             ": must be > 0");
+        const double f = 1.0 / r.periodSeconds;
+        auto it = cache.find(f);
+        if (it == cache.end()) {
+            const CriticalResult c = criticalAmplitude(point, f, slab.slab.mu, search);
+            out.runs += c.runs;
+            it = cache.emplace(f, c.amplitude).first;
+        }
+        out.codes.push_back(judge(r, it->second, search.to));
+    }
+    return out;
+}
+
+} // namespace kinstab

@@ -1,0 +1,44 @@
+#pragma once
+// The design check of the paper's chapter V: for each code, compare the top-floor ratio
+// F_top / w_top with the critical amplitude A_crit(f) of the 1-DOF slab at the building's
+// frequency f = 1/T. Below A_crit the members overstress first; at or above it the slab can
+// slide off (kinetic instability). Margin = A_crit / ratio.
+
+#include "core/codes/CodeResult.h"
+#include "core/slab/Slab1DCase.h"
+#include "core/sweep/CriticalAmplitude.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kinstab {
+
+enum class Verdict { OverstressGoverns, KineticInstabilityGoverns };
+std::string verdictText(Verdict v); // "overstress governs" | "kinetic instability governs"
+
+struct CodeVerdict {
+    std::string code;
+    std::string title;
+    double ratio = 0;                     // F_top / w_top as the code requires it
+    std::optional<double> ratioWithoutFt; // UBC: the paper's figure
+    double periodSeconds = 0;
+    double frequencyHz = 0;       // 1 / T
+    std::optional<double> aCrit;  // nullopt: nothing collapses up to the search limit
+    std::optional<double> margin; // A_crit / ratio; nullopt when aCrit or ratio is absent
+    Verdict verdict = Verdict::OverstressGoverns;
+    std::string explanation;
+};
+
+struct DesignCheckResult {
+    std::vector<CodeVerdict> codes;
+    long runs = 0; // slab runs spent on the A_crit searches
+};
+
+// A_crit(f) is searched once per distinct frequency. Throws InputError on a bad case or search.
+DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1DCase& slab,
+                              const CriticalSearch& search = {});
+
+std::string validateCriticalSearch(const CriticalSearch& s); // empty when fine
+
+} // namespace kinstab

@@ -1,0 +1,115 @@
+#include "core/io/JsonReader.h"
+
+#include "core/sweep/Grid.h"
+
+#include <cmath>
+
+namespace kinstab {
+
+namespace {
+std::string shown(const nlohmann::json& v) {
+    std::string s = v.dump();
+    return s.size() > 60 ? s.substr(0, 57) + "..." : s;
+}
+} // namespace
+
+JsonReader::JsonReader(const nlohmann::json& j, std::string path) : j_(&j), path_(std::move(path)) {
+    if (!j.is_object())
+        throw JsonFieldError((path_.empty() ? "document" : path_) + ": expected an object, got " +
+                             shown(j));
+}
+
+bool JsonReader::has(const std::string& key) const {
+    const auto it = j_->find(key);
+    return it != j_->end() && !it->is_null();
+}
+
+std::string JsonReader::field(const std::string& key) const {
+    return path_.empty() ? key : path_ + "." + key;
+}
+
+void JsonReader::fail(const std::string& key, const std::string& message) const {
+    throw JsonFieldError(field(key) + ": " + message);
+}
+
+const nlohmann::json& JsonReader::raw(const std::string& key) const {
+    if (!has(key)) fail(key, "missing");
+    return j_->at(key);
+}
+
+std::optional<double> JsonReader::optionalNumber(const std::string& key) const {
+    if (!has(key)) return std::nullopt;
+    const nlohmann::json& v = j_->at(key);
+    if (!v.is_number()) fail(key, "expected a number, got " + shown(v));
+    const double x = v.get<double>();
+    if (!std::isfinite(x)) fail(key, "expected a finite number, got " + shown(v));
+    return x;
+}
+
+double JsonReader::number(const std::string& key, double fallback) const {
+    return optionalNumber(key).value_or(fallback);
+}
+
+double JsonReader::requiredNumber(const std::string& key) const {
+    const auto v = optionalNumber(key);
+    if (!v) fail(key, "missing (a number is required)");
+    return *v;
+}
+
+std::optional<int> JsonReader::optionalInteger(const std::string& key) const {
+    const auto v = optionalNumber(key);
+    if (!v) return std::nullopt;
+    if (*v != std::floor(*v) || std::abs(*v) > 1e9)
+        fail(key, "expected a whole number, got " + shown(j_->at(key)));
+    return static_cast<int>(*v);
+}
+
+int JsonReader::integer(const std::string& key, int fallback) const {
+    return optionalInteger(key).value_or(fallback);
+}
+
+std::optional<std::string> JsonReader::optionalText(const std::string& key) const {
+    if (!has(key)) return std::nullopt;
+    const nlohmann::json& v = j_->at(key);
+    if (!v.is_string()) fail(key, "expected a string, got " + shown(v));
+    return v.get<std::string>();
+}
+
+std::string JsonReader::text(const std::string& key, const std::string& fallback) const {
+    return optionalText(key).value_or(fallback);
+}
+
+bool JsonReader::boolean(const std::string& key, bool fallback) const {
+    if (!has(key)) return fallback;
+    const nlohmann::json& v = j_->at(key);
+    if (!v.is_boolean()) fail(key, "expected true or false, got " + shown(v));
+    return v.get<bool>();
+}
+
+std::vector<double> JsonReader::numbers(const std::string& key) const {
+    const nlohmann::json& v = raw(key);
+    if (v.is_string()) {
+        const ParsedList p = parseList(v.get<std::string>());
+        if (!p.error.empty()) fail(key, p.error);
+        return p.values;
+    }
+    if (!v.is_array()) fail(key, "expected an array of numbers or a LIST string, got " + shown(v));
+    std::vector<double> out;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        if (!v[i].is_number() || !std::isfinite(v[i].get<double>()))
+            fail(key, "entry " + std::to_string(i) + " is not a finite number: " + shown(v[i]));
+        out.push_back(v[i].get<double>());
+    }
+    return out;
+}
+
+std::optional<JsonReader> JsonReader::optionalObject(const std::string& key) const {
+    if (!has(key)) return std::nullopt;
+    return JsonReader(j_->at(key), field(key));
+}
+
+JsonReader JsonReader::object(const std::string& key) const {
+    return JsonReader(raw(key), field(key));
+}
+
+} // namespace kinstab

@@ -1,0 +1,48 @@
+#pragma once
+// Typed, path-aware access to a JSON object read from a file: every problem is a
+// JsonFieldError naming the field by its path ("building.height: expected a number, got
+// \"abc\""). Absent and null keys are the same thing.
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace kinstab {
+
+struct JsonFieldError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+class JsonReader {
+public:
+    // j must be an object (else JsonFieldError naming path).
+    JsonReader(const nlohmann::json& j, std::string path);
+
+    bool has(const std::string& key) const;
+    std::string field(const std::string& key) const; // "path.key"
+
+    std::optional<double> optionalNumber(const std::string& key) const;
+    double number(const std::string& key, double fallback) const;
+    double requiredNumber(const std::string& key) const;
+    std::optional<int> optionalInteger(const std::string& key) const;
+    int integer(const std::string& key, int fallback) const;
+    std::optional<std::string> optionalText(const std::string& key) const;
+    std::string text(const std::string& key, const std::string& fallback) const;
+    bool boolean(const std::string& key, bool fallback) const;
+    // An array of numbers, or a LIST string ("0.7:1.15:0.05" or "1,2,3").
+    std::vector<double> numbers(const std::string& key) const;
+    std::optional<JsonReader> optionalObject(const std::string& key) const;
+    JsonReader object(const std::string& key) const;
+    const nlohmann::json& raw(const std::string& key) const;
+
+    [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+
+private:
+    const nlohmann::json* j_;
+    std::string path_;
+};
+
+} // namespace kinstab

@@ -1,0 +1,215 @@
+#include "core/io/Project.h"
+
+#include "core/io/AtomicFile.h"
+#include "core/io/CodesJson.h"
+#include "core/io/JsonReader.h"
+
+#include <cmath>
+
+namespace kinstab {
+
+using nlohmann::json;
+
+Project paperExampleProject() {
+    Project p;
+    p.name = "Furgerson 1980, 16-story building";
+    p.description =
+        "Chapter V example: 16-story RC frame with shear walls, Southern California "
+        "(UBC zone 4), 30 ft or more of soft-to-medium clay; T = 0.05 h_n/sqrt(D) = "
+        "0.998 s, taken as 1.0 s by the paper. ASCE 7-22 and EC8 inputs are chosen for a "
+        "comparable site (see resources/examples/README.md).";
+    p.building.name = "16-story office building";
+    p.building.period = 1.0;
+    p.codes.ubc1976 = Ubc1976Inputs{};
+    p.codes.atc306 = Atc306Inputs{};
+    p.codes.asce7_22 = Asce7Inputs{};
+    p.codes.ec8 = Eurocode8Inputs{};
+    p.grid.amplitudes = linspaceStep(0.70, 1.15, 0.05);
+    p.grid.frequencies = linspaceStep(0.5, 1.125, 0.125);
+    p.critical.tolerance = 1e-4;
+    return p;
+}
+
+std::string validateProject(const Project& p) {
+    if (p.model != "slab1d" && p.model != "planar")
+        return "model = '" + p.model + "': must be slab1d or planar";
+    std::string e = validateBuilding(p.building);
+    if (e.empty()) e = validateCodes(p.codes);
+    if (e.empty() && !(e = validateCase(p.slab)).empty()) e = "slab: " + e;
+    if (e.empty() && p.wallWidthIn &&
+        (!std::isfinite(*p.wallWidthIn) || *p.wallWidthIn <= 0.0 || *p.wallWidthIn > 1000.0))
+        e = "slab.wall_width_in = " + std::to_string(*p.wallWidthIn) +
+            ": must be > 0 and at most 1000";
+    if (e.empty() && (!p.grid.amplitudes.empty() || !p.grid.frequencies.empty()) &&
+        !(e = validateGrid(p.grid)).empty())
+        e = "grid: " + e;
+    if (e.empty()) e = validateCriticalSearch(p.critical);
+    return e;
+}
+
+namespace {
+
+json slabToJson(const Project& p) {
+    const Slab1DCase& c = p.slab;
+    json env = c.envelope.preset ? json(presetName(*c.envelope.preset))
+                                 : json{{"alpha", c.envelope.alpha}, {"beta", c.envelope.beta}};
+    json j = {{"envelope", env},
+              {"mu", c.slab.mu},
+              {"limit", c.slab.limit},
+              {"duration", c.slab.duration ? json(*c.slab.duration) : json()},
+              {"solver", solverName(c.solver)},
+              {"paper_steps", c.paperStepsPerPeriod},
+              {"scale", tauScaleName(c.scale)}};
+    if (p.wallWidthIn)
+        j["wall_width_in"] = *p.wallWidthIn;
+    else
+        j["tstar"] = c.tstar;
+    return j;
+}
+
+Envelope envelopeFrom(const JsonReader& r) {
+    const json& e = r.raw("envelope");
+    if (e.is_string()) {
+        const auto preset = presetFromName(e.get<std::string>());
+        if (!preset)
+            r.fail("envelope", "'" + e.get<std::string>() + "' must be fast, moderate or slow");
+        return Envelope::fromPreset(*preset);
+    }
+    const JsonReader o(e, r.field("envelope"));
+    Envelope env{o.requiredNumber("alpha"), o.requiredNumber("beta"), std::nullopt};
+    if (const std::string err = validateEnvelope(env.alpha, env.beta); !err.empty())
+        r.fail("envelope", err);
+    return env;
+}
+
+void slabFrom(const JsonReader& r, Project& p) {
+    Slab1DCase& c = p.slab;
+    c.envelope = envelopeFrom(r);
+    if (r.has("tstar") && r.has("wall_width_in"))
+        r.fail("tstar", "tstar and wall_width_in exclude each other");
+    if (r.has("wall_width_in")) {
+        p.wallWidthIn = r.requiredNumber("wall_width_in");
+        if (*p.wallWidthIn <= 0.0 || *p.wallWidthIn > 1000.0)
+            r.fail("wall_width_in",
+                   std::to_string(*p.wallWidthIn) + " in: must be > 0 and at most 1000");
+        c.tstar = tstarFromWallWidthInches(*p.wallWidthIn);
+    } else {
+        c.tstar = r.number("tstar", c.tstar);
+    }
+    c.slab.mu = r.number("mu", c.slab.mu);
+    c.slab.limit = r.number("limit", c.slab.limit);
+    c.slab.duration = r.optionalNumber("duration");
+    const std::string solver = r.text("solver", "exact");
+    if (solver != "exact" && solver != "paper")
+        r.fail("solver", "'" + solver + "' must be exact or paper");
+    c.solver = solver == "exact" ? SolverKind::Exact : SolverKind::Paper;
+    c.paperStepsPerPeriod = r.number("paper_steps", c.paperStepsPerPeriod);
+    const std::string scale = r.text("scale", "tau_max");
+    const auto s = tauScaleFromName(scale);
+    if (!s) r.fail("scale", "'" + scale + "' must be tau_max, tau_rise, tau_dur or one");
+    c.scale = *s;
+    if (const std::string e = validateCase(c); !e.empty()) throw JsonFieldError("slab: " + e);
+}
+
+json checkToJson(const CriticalSearch& s) {
+    return {{"from", s.from},
+            {"max_amplitude", s.to},
+            {"scan_step", s.scanStep},
+            {"tolerance", s.tolerance}};
+}
+
+CriticalSearch checkFrom(const JsonReader& r) {
+    CriticalSearch s;
+    s.from = r.number("from", s.from);
+    s.to = r.number("max_amplitude", s.to);
+    s.scanStep = r.number("scan_step", s.scanStep);
+    s.tolerance = r.number("tolerance", s.tolerance);
+    return s;
+}
+
+void checkHeader(const JsonReader& r) {
+    const auto format = r.optionalText("format");
+    if (format != std::string(kProjectFormat))
+        r.fail("format",
+               "this is not a kinstab project (expected \"" + std::string(kProjectFormat) + "\")");
+    const auto version = r.optionalInteger("version");
+    if (!version) r.fail("version", "missing");
+    if (*version < 1 || *version > kProjectVersion)
+        r.fail("version", std::to_string(*version) + ": this kinstab reads project versions 1 to " +
+                              std::to_string(kProjectVersion));
+}
+
+} // namespace
+
+json projectToJson(const Project& p) {
+    return {{"format", kProjectFormat},
+            {"version", kProjectVersion},
+            {"name", p.name},
+            {"description", p.description},
+            {"building", buildingToJson(p.building)},
+            {"codes", codesToJson(p.codes)},
+            {"slab", slabToJson(p)},
+            {"grid", {{"amplitudes", p.grid.amplitudes}, {"frequencies", p.grid.frequencies}}},
+            {"model", p.model},
+            {"check", checkToJson(p.critical)}};
+}
+
+Project projectFromJson(const json& j) {
+    try {
+        const JsonReader r(j, "");
+        checkHeader(r);
+        Project p;
+        p.name = r.text("name", "");
+        p.description = r.text("description", "");
+        p.building = buildingFromJson(r.object("building"));
+        if (auto c = r.optionalObject("codes")) p.codes = codesFromJson(*c);
+        if (auto s = r.optionalObject("slab")) slabFrom(*s, p);
+        if (auto g = r.optionalObject("grid")) {
+            p.grid.amplitudes = g->numbers("amplitudes");
+            p.grid.frequencies = g->numbers("frequencies");
+        }
+        p.model = r.text("model", "slab1d");
+        if (auto c = r.optionalObject("check")) p.critical = checkFrom(*c);
+        if (const std::string e = validateProject(p); !e.empty()) throw ProjectError(e);
+        return p;
+    } catch (const JsonFieldError& e) {
+        throw ProjectError(e.what());
+    } catch (const InputError& e) {
+        throw ProjectError(e.what());
+    } catch (const json::exception& e) {
+        throw ProjectError(std::string("malformed project: ") + e.what());
+    }
+}
+
+Project parseProject(const std::string& text) {
+    json j;
+    try {
+        j = json::parse(text);
+    } catch (const json::parse_error& e) {
+        // e.byte says where a truncated or corrupt file stops making sense.
+        throw ProjectError("not valid JSON (truncated or corrupt?) at byte " +
+                           std::to_string(e.byte) + ": " + e.what());
+    }
+    return projectFromJson(j);
+}
+
+Project loadProject(const std::string& path) {
+    try {
+        return parseProject(readWholeFile(path));
+    } catch (const FileError& e) {
+        throw ProjectError(e.what());
+    } catch (const ProjectError& e) {
+        throw ProjectError(path + ": " + e.what());
+    }
+}
+
+void saveProject(const Project& p, const std::string& path) {
+    if (const std::string e = validateProject(p); !e.empty()) throw ProjectError("not saved: " + e);
+    try {
+        writeFileAtomically(path, projectToJson(p).dump(2) + "\n");
+    } catch (const FileError& e) {
+        throw ProjectError(e.what());
+    }
+}
+
+} // namespace kinstab

@@ -1,0 +1,53 @@
+#pragma once
+// A kinstab project: everything an engineer enters once — the building, the codes with their
+// own inputs, the 1-DOF slab case, the sweep grid and the model — saved as versioned JSON
+// ({"format": "kinstab-project", "version": 1, ...}). Loading validates every field and names
+// the bad one ("building.height = -3: must be > 0 ..."); a truncated or corrupt file is a
+// ProjectError, never a crash. Saving is atomic (temporary file renamed into place).
+
+#include "core/codes/Building.h"
+#include "core/codes/CodeSet.h"
+#include "core/slab/Slab1DCase.h"
+#include "core/sweep/CriticalAmplitude.h"
+#include "core/sweep/Grid.h"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace kinstab {
+
+struct ProjectError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+inline constexpr const char* kProjectFormat = "kinstab-project";
+inline constexpr int kProjectVersion = 1;
+
+struct Project {
+    std::string name;
+    std::string description;
+    Building building;
+    CodeSelection codes;
+    Slab1DCase slab;                   // envelope, t*, mu, limit, solver, scale
+    std::optional<double> wallWidthIn; // set when t* comes from the wall width d (inches)
+    SweepGrid grid;                    // A (g) and f (Hz) of the γc surface
+    std::string model = "slab1d";      // "slab1d" | "planar" (the planar model comes later)
+    CriticalSearch critical;           // A_crit search of the design check
+};
+
+// The paper's 16-story building (chapter V) with the paper's slab, envelope and grid.
+Project paperExampleProject();
+
+std::string validateProject(const Project& p); // empty when fine
+
+nlohmann::json projectToJson(const Project& p);
+Project projectFromJson(const nlohmann::json& j); // throws ProjectError naming the field
+Project parseProject(const std::string& text);    // throws ProjectError (also on bad JSON)
+
+Project loadProject(const std::string& path);                // throws ProjectError
+void saveProject(const Project& p, const std::string& path); // atomic; throws ProjectError
+
+} // namespace kinstab
