@@ -12,6 +12,8 @@ using ArgList = std::vector<std::string>;
 int runSimulate(const ArgList& args);
 int runSurface(const ArgList& args);
 int runCritical(const ArgList& args);
+int runBench(const ArgList& args);
+int runPrecision(const ArgList& args);
 
 // Writes text to the file named by -o, or to stdout when there is none (atomically: a
 // temporary file renamed into place).

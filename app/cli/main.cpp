@@ -17,6 +17,8 @@ commands:
   simulate  --amplitude A --frequency F [model flags] [--history FILE.csv] [--events]
   surface   --amplitudes LIST --frequencies LIST [model flags] [--threads N] [--format json|csv|table] [-o FILE]
   critical  --frequencies LIST [model flags] [--max-amplitude A] [--scan-step S]
+  precision [-o FILE.csv] [--repeats N] [--no-regularized]
+  bench     [--repeats N] [--threads N] [--amplitudes LIST --frequencies LIST] [model flags]
 
 LIST: comma-separated numbers or start:stop:step.
 model flags: --model slab1d --envelope fast|moderate|slow | --alpha X --beta Y
@@ -29,9 +31,8 @@ model flags: --model slab1d --envelope fast|moderate|slow | --alpha X --beta Y
 int main(int argc, char** argv) {
     using namespace kinstab::cli;
     const std::map<std::string, std::function<int(const ArgList&)>> commands = {
-        {"simulate", runSimulate},
-        {"surface", runSurface},
-        {"critical", runCritical},
+        {"simulate", runSimulate}, {"surface", runSurface},     {"critical", runCritical},
+        {"bench", runBench},       {"precision", runPrecision},
     };
     if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
         std::cout << kUsage;

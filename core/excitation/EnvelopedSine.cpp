@@ -10,21 +10,13 @@
 
 namespace kinstab {
 
-namespace {
-// 10-point Gauss-Legendre on [-1, 1]. Used for the integrals over short intervals, where the
-// closed forms lose digits to cancellation (grazing slips last microseconds).
-constexpr std::array<double, 5> kGlX = {0.1488743389816312, 0.4333953941292472, 0.6794095682990244,
-                                        0.8650633666889845, 0.9739065285171717};
-constexpr std::array<double, 5> kGlW = {0.2955242247147529, 0.2692667193099963, 0.2190863625159820,
-                                        0.1494513491505806, 0.0666713443086881};
-} // namespace
-
 EnvelopedSine::EnvelopedSine(const Envelope& env, double amplitude, double frequencyHz,
                              double tstar)
     : amplitude_(amplitude), p_(env.alpha * tstar), q_(env.beta * tstar),
       omega_(2.0 * std::numbers::pi * frequencyHz * tstar), halfPeriod_(std::numbers::pi / omega_),
       tauEnvelopePeak_(p_ > 0.0 ? std::log1p((q_ - p_) / p_) / (q_ - p_)
-                                : std::numeric_limits<double>::infinity()) {
+                                : std::numeric_limits<double>::infinity()),
+      integrals_(p_, q_, omega_) {
     sMax_ = computeSMax();
     scale_ = amplitude_ / sMax_;
 }
@@ -32,11 +24,16 @@ EnvelopedSine::EnvelopedSine(const Envelope& env, double amplitude, double frequ
 double EnvelopedSine::envelopeAt(double tau) const {
     return std::exp(-p_ * tau) * -std::expm1(-(q_ - p_) * tau);
 }
-double EnvelopedSine::envelopeSlope(double tau) const {
-    return -p_ * std::exp(-p_ * tau) + q_ * std::exp(-q_ * tau);
-}
-double EnvelopedSine::envelopeCurvature(double tau) const {
-    return p_ * p_ * std::exp(-p_ * tau) - q_ * q_ * std::exp(-q_ * tau);
+
+// e, e' and e'' from two exponentials: e^{-q tau} = e^{-p tau} (1 + expm1(-(q - p) tau)), and
+// e = -e^{-p tau} expm1(-(q - p) tau) keeps its digits when q ~ p (NUMERICS.md §4 row 12).
+void EnvelopedSine::envelopeAndSlope(double tau, double& e, double& de, double* d2e) const {
+    const double ep = std::exp(-p_ * tau);
+    const double m = std::expm1(-(q_ - p_) * tau);
+    const double eq = ep * (1.0 + m);
+    e = -ep * m;
+    de = -p_ * ep + q_ * eq;
+    if (d2e) *d2e = p_ * p_ * ep - q_ * q_ * eq;
 }
 
 double EnvelopedSine::accel(double tau) const {
@@ -44,52 +41,25 @@ double EnvelopedSine::accel(double tau) const {
 }
 
 double EnvelopedSine::accelSlope(double tau) const {
+    double a = 0.0, da = 0.0;
+    accelAndSlope(tau, a, da);
+    return da;
+}
+
+void EnvelopedSine::accelAndSlope(double tau, double& a, double& da) const {
+    double e = 0.0, de = 0.0;
+    envelopeAndSlope(tau, e, de);
     const double s = std::sin(omega_ * tau), c = std::cos(omega_ * tau);
-    return scale_ * (envelopeSlope(tau) * s + omega_ * envelopeAt(tau) * c);
-}
-
-double EnvelopedSine::primitive1(double l, double tau) const {
-    const double d = l * l + omega_ * omega_;
-    return -std::exp(-l * tau) * (l * std::sin(omega_ * tau) + omega_ * std::cos(omega_ * tau)) / d;
-}
-
-double EnvelopedSine::primitive2(double l, double tau) const {
-    const double d = l * l + omega_ * omega_;
-    const double w = omega_;
-    return std::exp(-l * tau) *
-           ((l * l - w * w) * std::sin(w * tau) + 2.0 * l * w * std::cos(w * tau)) / (d * d);
+    a = scale_ * e * s;
+    da = scale_ * (de * s + omega_ * e * c);
 }
 
 double EnvelopedSine::velocityChange(double t0, double t1) const {
-    const double h = t1 - t0;
-    if (std::abs(omega_ * h) < 0.5) {
-        const double m = 0.5 * (t0 + t1), r = 0.5 * h;
-        double sum = 0.0;
-        for (std::size_t i = 0; i < kGlX.size(); ++i)
-            sum += kGlW[i] * (accel(m - r * kGlX[i]) + accel(m + r * kGlX[i]));
-        return r * sum;
-    }
-    return scale_ *
-           ((primitive1(p_, t1) - primitive1(p_, t0)) - (primitive1(q_, t1) - primitive1(q_, t0)));
+    return scale_ * integrals_.first(t0, t1 - t0);
 }
 
 double EnvelopedSine::displacementChange(double t0, double t1) const {
-    const double h = t1 - t0;
-    if (std::abs(omega_ * h) < 0.5) {
-        // int_{t0}^{t1} (t1 - s) a(s) ds
-        const double m = 0.5 * (t0 + t1), r = 0.5 * h;
-        double sum = 0.0;
-        // t1 - s written as r (1 +- x_i): t1 - s itself would cancel when t >> h.
-        for (std::size_t i = 0; i < kGlX.size(); ++i) {
-            const double sl = m - r * kGlX[i], sr = m + r * kGlX[i];
-            sum += kGlW[i] * (r * (1.0 + kGlX[i]) * accel(sl) + r * (1.0 - kGlX[i]) * accel(sr));
-        }
-        return r * sum;
-    }
-    auto part = [&](double l) {
-        return primitive2(l, t1) - primitive2(l, t0) - primitive1(l, t0) * h;
-    };
-    return scale_ * (part(p_) - part(q_));
+    return scale_ * integrals_.second(t0, t1 - t0);
 }
 
 double EnvelopedSine::segmentEnd(double segmentStart) const {
@@ -106,13 +76,20 @@ double EnvelopedSine::halfPeriodPeak(long k) const {
     const double hi = lo + halfPeriod_;
     // d/dtau log|e sin| = e'/e + omega cot(omega tau): strictly decreasing from +inf to -inf.
     auto fdf = [&](double t, double& f, double& df) {
-        const double e = envelopeAt(t), e1 = envelopeSlope(t), e2 = envelopeCurvature(t);
+        double e = 0.0, e1 = 0.0, e2 = 0.0;
+        envelopeAndSlope(t, e, e1, &e2);
         const double s = std::sin(omega_ * t), c = std::cos(omega_ * t);
         f = e1 / e + omega_ * c / s;
         df = (e2 * e - e1 * e1) / (e * e) - omega_ * omega_ / (s * s);
     };
+    // First guess: with e'/e frozen at the midpoint at lambda, the root is where
+    // cot(omega (tau - lo)) = -lambda/omega.
+    const double mid = lo + 0.5 * halfPeriod_;
+    double e = 0.0, e1 = 0.0;
+    envelopeAndSlope(mid, e, e1);
+    const double guess = lo + (0.5 * std::numbers::pi + std::atan(e1 / e / omega_)) / omega_;
     const double eps = 1e-12 * halfPeriod_;
-    return safeguardedNewton(fdf, lo + eps, hi - eps, 1.0, -1.0).x;
+    return safeguardedNewton(fdf, lo + eps, hi - eps, 1.0, -1.0, 200, guess).x;
 }
 
 Crossings EnvelopedSine::crossings(double level, double segmentStart, double segmentEnd) const {
@@ -127,12 +104,16 @@ Crossings EnvelopedSine::crossings(double level, double segmentStart, double seg
     const double peakValue = sign * accel(m);
     if (!(peakValue > target)) return out; // touching is not crossing
     auto fdf = [&](double t, double& f, double& df) {
-        f = sign * accel(t) - target;
-        df = sign * accelSlope(t);
+        accelAndSlope(t, f, df);
+        f = sign * f - target;
+        df = sign * df;
     };
     const double lo = static_cast<double>(k) * halfPeriod_, hi = lo + halfPeriod_;
-    out.add(safeguardedNewton(fdf, lo, m, -target, peakValue - target).x);
-    out.add(safeguardedNewton(fdf, m, hi, peakValue - target, -target).x);
+    // First guesses: the envelope frozen at its value at the peak, |a| = level where
+    // |sin(omega (tau - lo))| = level / (scale e(m)).
+    const double offset = std::asin(std::min(1.0, target / (scale_ * envelopeAt(m)))) / omega_;
+    out.add(safeguardedNewton(fdf, lo, m, -target, peakValue - target, 200, lo + offset).x);
+    out.add(safeguardedNewton(fdf, m, hi, peakValue - target, -target, 200, hi - offset).x);
     return out;
 }
 

@@ -4,6 +4,7 @@
 //   omega = 2 pi f t*.
 // Its first and second integrals are elementary, so slip phases are integrated exactly.
 
+#include "core/excitation/DecaySineIntegrals.h"
 #include "core/excitation/Envelope.h"
 #include "core/excitation/Excitation1D.h"
 
@@ -37,10 +38,8 @@ public:
     double halfPeriodPeak(long k) const;
 
 private:
-    double envelopeSlope(double tau) const;
-    double envelopeCurvature(double tau) const;
-    double primitive1(double lambda, double tau) const; // int e^{-l s} sin(w s) ds
-    double primitive2(double lambda, double tau) const; // int of primitive1
+    void envelopeAndSlope(double tau, double& e, double& de, double* d2e = nullptr) const;
+    void accelAndSlope(double tau, double& a, double& da) const;
     double computeSMax() const;
 
     double amplitude_;
@@ -50,6 +49,7 @@ private:
     double tauEnvelopePeak_;
     double sMax_ = 1.0;
     double scale_ = 1.0; // A / S_max
+    DecaySineIntegrals integrals_;
 };
 
 // Validates the inputs of an enveloped sine; empty when fine, else a message naming the field.

@@ -19,9 +19,14 @@ struct RootResult {
 // Root of f on [lo, hi] where f(lo) and f(hi) differ in sign (or one is zero).
 // fdf(x, f, df) evaluates the function and its derivative. Stops when the bracket is a few
 // ulps wide, so the answer is as exact as double arithmetic allows.
+// start: a first guess inside the bracket (the midpoint when absent or outside); a good one
+// saves the bisection steps before Newton takes over. absTolerance: stop once the bracket or
+// the Newton step is below it (0: a few ulps, as exact as double arithmetic allows).
 template <class FDF>
 RootResult safeguardedNewton(FDF&& fdf, double lo, double hi, double flo, double fhi,
-                             int maxIterations = 200) {
+                             int maxIterations = 200,
+                             double start = std::numeric_limits<double>::quiet_NaN(),
+                             double absTolerance = 0.0) {
     RootResult r;
     if (flo == 0.0) return {lo, 0, true};
     if (fhi == 0.0) return {hi, 0, true};
@@ -30,6 +35,7 @@ RootResult safeguardedNewton(FDF&& fdf, double lo, double hi, double flo, double
     double a = lo, b = hi;
     if (flo > 0.0) std::swap(a, b);
     double x = 0.5 * (lo + hi);
+    if (start > std::min(lo, hi) && start < std::max(lo, hi)) x = start;
     double dxOld = std::abs(hi - lo);
     double dx = dxOld;
     double f = 0.0, df = 0.0;
@@ -50,8 +56,8 @@ RootResult safeguardedNewton(FDF&& fdf, double lo, double hi, double flo, double
             dx = f / df;
             x -= dx;
         }
-        const double tol = 4.0 * std::numeric_limits<double>::epsilon() *
-                           std::max({std::abs(a), std::abs(b), 1e-300});
+        const double tol = std::max(absTolerance, 4.0 * std::numeric_limits<double>::epsilon() *
+                                                      std::max({std::abs(a), std::abs(b), 1e-300}));
         if (std::abs(b - a) <= tol || std::abs(dx) <= 0.25 * tol) {
             r.x = x;
             r.converged = true;

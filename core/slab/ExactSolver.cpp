@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace kinstab {
 
@@ -30,8 +31,26 @@ private:
         const double h = tau - t_;
         return x_ + v_ * h - 0.5 * s_ * p_.mu * h * h - a_.displacementChange(t_, tau);
     }
+    struct Cut {
+        double tau = 0;
+        int kind = 0; // +1: a crosses mu, -1: a crosses -mu, 0: segment end
+    };
+    // Sign of a where |a| > mu, else 0.
+    int excessAt(double tau) {
+        ++r_.work.accelEvaluations;
+        const double a = a_.accel(tau);
+        return std::abs(a) > p_.mu ? (a > 0.0 ? 1 : -1) : 0;
+    }
+    // The excess state on the other side of a cut (the same map both ways); nullopt when the
+    // cut does not fit the state (rounding).
+    static std::optional<int> crossCut(int state, int kind) {
+        if (kind == 0) return state;
+        if (state == 0) return kind;
+        if (state == kind) return 0;
+        return std::nullopt;
+    }
     Step segment(double lo, double hi);
-    Step piece(double lo, double hi);
+    Step piece(double lo, double hi, int excess);
     Step slipThrough(double hi, bool excess);
     void moveTo(double tau, double x, double v) {
         t_ = tau;
@@ -56,7 +75,11 @@ private:
         return Step::Done;
     }
     double rootOf(auto&& fdf, double lo, double hi, double flo, double fhi) {
-        const RootResult root = safeguardedNewton(fdf, lo, hi, flo, fhi);
+        // Start from the secant point: the functions are monotone on the bracket, and it saves
+        // the first Newton steps from the midpoint (every call costs closed-form integrals).
+        const double secant = lo + (hi - lo) * (flo / (flo - fhi));
+        const RootResult root =
+            safeguardedNewton(fdf, lo, hi, flo, fhi, 200, secant, o_.eventTolerance);
         r_.work.rootIterations += root.iterations;
         return std::clamp(root.x, lo, hi);
     }
@@ -98,43 +121,56 @@ SlabResult ExactRun::run() {
 }
 
 // One segment: cut at every crossing of |a| = mu, then each piece has a fixed sign of
-// |a| - mu and of a +- mu.
+// |a| - mu and of a +- mu. That sign flips at every cut, so a is evaluated once per segment
+// (in its longest piece) and carried through the cuts; a cut that contradicts the carried
+// state (only through rounding) falls back to evaluating a in the piece.
 ExactRun::Step ExactRun::segment(double lo, double hi) {
     if (s_ == 0 && a_.boundOn(lo, hi) <= p_.mu) return Step::Continue; // nothing can start
     Crossings up = a_.crossings(p_.mu, lo, hi);
     Crossings down = p_.mu > 0.0 ? a_.crossings(-p_.mu, lo, hi) : Crossings{};
-    std::array<double, 10> cuts{};
+    std::array<Cut, 10> cuts{};
     std::size_t n = 0;
-    cuts[n++] = lo;
+    cuts[n++] = {lo, 0};
     for (int i = 0; i < up.n; ++i)
-        cuts[n++] = up.t[static_cast<std::size_t>(i)];
+        cuts[n++] = {up.t[static_cast<std::size_t>(i)], 1};
     for (int i = 0; i < down.n; ++i)
-        cuts[n++] = down.t[static_cast<std::size_t>(i)];
+        cuts[n++] = {down.t[static_cast<std::size_t>(i)], -1};
     // At most eight crossings: insertion sort (std::sort trips a GCC 12 bounds warning here).
     for (std::size_t i = 2; i < n; ++i)
-        for (std::size_t j = i; j > 1 && cuts[j - 1] > cuts[j]; --j)
+        for (std::size_t j = i; j > 1 && cuts[j - 1].tau > cuts[j].tau; --j)
             std::swap(cuts[j - 1], cuts[j]);
-    cuts[n++] = hi;
+    cuts[n++] = {hi, 0};
+    // The sign of a where |a| > mu, 0 where |a| <= mu: at the longest piece, then back to lo.
+    std::size_t longest = 0;
+    for (std::size_t i = 1; i + 1 < n; ++i)
+        if (cuts[i + 1].tau - cuts[i].tau > cuts[longest + 1].tau - cuts[longest].tau) longest = i;
+    int state = excessAt(0.5 * (cuts[longest].tau + cuts[longest + 1].tau));
+    for (std::size_t i = longest; i > 0; --i) {
+        const auto before = crossCut(state, cuts[i].kind);
+        state = before ? *before : excessAt(0.5 * (cuts[i - 1].tau + cuts[i].tau));
+    }
     for (std::size_t i = 0; i + 1 < n; ++i) {
-        if (cuts[i + 1] <= cuts[i]) continue;
-        if (piece(cuts[i], cuts[i + 1]) == Step::Done) return Step::Done;
+        if (i > 0) {
+            const auto next = crossCut(state, cuts[i].kind);
+            state = next ? *next : excessAt(0.5 * (cuts[i].tau + cuts[i + 1].tau));
+        }
+        if (cuts[i + 1].tau <= cuts[i].tau) continue;
+        if (piece(cuts[i].tau, cuts[i + 1].tau, state) == Step::Done) return Step::Done;
     }
     return Step::Continue;
 }
 
-ExactRun::Step ExactRun::piece(double lo, double hi) {
-    const double aMid = a_.accel(0.5 * (lo + hi));
-    ++r_.work.accelEvaluations;
-    const bool excess = std::abs(aMid) > p_.mu;
+// excess: the sign of a where |a| > mu on the piece, 0 where |a| <= mu.
+ExactRun::Step ExactRun::piece(double lo, double hi, int excess) {
     if (s_ == 0) {
-        if (!excess) return Step::Continue;
+        if (excess == 0) return Step::Continue;
         // Slip onset: the slab lags the walls, sliding against the acceleration.
         t_ = lo;
-        s_ = aMid > 0.0 ? -1 : 1;
+        s_ = -excess;
         ++r_.slipIntervals;
         if (!event(EventKind::SlipOnset, s_)) return Step::Done;
     }
-    return slipThrough(hi, excess);
+    return slipThrough(hi, excess != 0);
 }
 
 // Slip from t_ to hi (inside one piece); handles a stop, a reversal and collapse.

@@ -61,6 +61,9 @@ struct SlabResult {
 struct RunOptions {
     bool recordEvents = false;
     long maxEvents = 2'000'000; // Zeno guard: a run that needs more is reported as failed
+    // Exact solver: stop and collapse times are located to this absolute tolerance in tau
+    // (0: to a few ulps). Only the work-precision study loosens it.
+    double eventTolerance = 0.0;
 };
 
 } // namespace kinstab

@@ -1,0 +1,28 @@
+// kinstab-cli precision: the work-precision study (SPEC §11), printed as a table, CSV with -o.
+
+#include "app/cli/Args.h"
+#include "app/cli/Commands.h"
+#include "core/numerics/WorkPrecision.h"
+
+#include <iostream>
+
+namespace kinstab::cli {
+
+int runPrecision(const ArgList& argv) {
+    const Args args(argv, {"o", "repeats"}, {"no-regularized"});
+    WorkPrecisionOptions options;
+    options.repeats = args.integer("repeats", 5);
+    if (options.repeats < 1 || options.repeats > 1000)
+        throw UsageError("--repeats " + args.text("repeats") + ": must be 1 to 1000");
+    options.includeRegularized = !args.has("no-regularized");
+    options.onProgress = [](std::size_t done, std::size_t total) {
+        std::cerr << "\rprecision: " << done << "/" << total << " settings" << std::flush;
+        if (done == total) std::cerr << "\n";
+    };
+    const WorkPrecisionStudy study = runWorkPrecisionStudy(options);
+    std::cout << workPrecisionText(study);
+    if (args.has("o")) writeOutput(args.text("o"), workPrecisionCsv(study));
+    return 0;
+}
+
+} // namespace kinstab::cli

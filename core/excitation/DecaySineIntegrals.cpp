@@ -1,0 +1,118 @@
+#include "core/excitation/DecaySineIntegrals.h"
+
+#include <cmath>
+
+namespace kinstab {
+
+namespace {
+// A span is short when |z_q| h <= 1/4: the phi-series then needs about 11 terms. A longer span
+// takes the difference of primitives, which loses at most a factor 1/(|z| h) <= 4 (2 bits) in
+// the first integral and (2/(|z| h))^2 <= 64 (6 bits) in the second: harmless at these scales.
+constexpr double kShortSpan = 0.25;
+constexpr int kSeriesTerms = 24;
+} // namespace
+
+DecaySineIntegrals::DecaySineIntegrals(double p, double q, double omega)
+    : p_(p), q_(q), d_(q - p), omega_(omega), zqAbs_(std::hypot(q, omega)), zp_(-p, omega),
+      zq_(-q, omega), inv_p_(1.0 / zp_), inv_q_(1.0 / zq_), inv_pq_(inv_p_ * inv_q_) {}
+
+// The exponentials at one time, with one sincos: exp(z_q t), and exp(z_p t) as
+// exp(z_q t) (1 + expm1(d t)) when d t < 1 (so that the p - q difference keeps its digits).
+DecaySineIntegrals::Point DecaySineIntegrals::pointAt(double t) const {
+    Point pt;
+    pt.t = t;
+    const double c = std::cos(omega_ * t), s = std::sin(omega_ * t);
+    const double dt = d_ * t;
+    pt.near = dt < 1.0;
+    if (pt.near) {
+        pt.em1 = std::expm1(dt);
+        pt.eq = std::exp(-q_ * t) * Complex(c, s);
+    } else {
+        const double ep = std::exp(-p_ * t);
+        pt.ep = ep * Complex(c, s);
+        pt.eq = ep * std::exp(-dt) * Complex(c, s);
+    }
+    // exp(z_p t)/z_p - exp(z_q t)/z_q = exp(z_q t) (z_q expm1(d t) - d) / (z_p z_q): for small d
+    // the direct difference cancels, this form has none (-q expm1(d t) - d is one-signed).
+    // exp(z_p t)/z_p^2 - exp(z_q t)/z_q^2 = exp(z_q t) (z_q^2 expm1(d t) - d (z_p + z_q)) / (z_p
+    // z_q)^2.
+    if (pt.near) {
+        pt.p1 = pt.eq * (zq_ * pt.em1 - d_) * inv_pq_;
+        pt.p2 = pt.eq * (zq_ * zq_ * pt.em1 - d_ * (zp_ + zq_)) * inv_pq_ * inv_pq_;
+    } else {
+        pt.p1 = pt.ep * inv_p_ - pt.eq * inv_q_;
+        pt.p2 = pt.ep * inv_p_ * inv_p_ - pt.eq * inv_q_ * inv_q_;
+    }
+    return pt;
+}
+
+// Slips integrate from one origin t0 through many Newton iterations: remember the last one per
+// thread. The key holds every input, so objects can never see each other's values.
+const DecaySineIntegrals::Point& DecaySineIntegrals::origin(double t0) const {
+    struct Memo {
+        double p = -1, q = -1, omega = -1;
+        Point point;
+    };
+    thread_local Memo memo;
+    if (memo.point.t != t0 || memo.p != p_ || memo.q != q_ || memo.omega != omega_) {
+        memo.point = pointAt(t0);
+        memo.p = p_;
+        memo.q = q_;
+        memo.omega = omega_;
+    }
+    return memo.point;
+}
+
+// int_0^h (h - u)^(k-1)/(k-1)! exp(z (t0 + u)) du = exp(z t0) h^k phi_k(z h),
+// phi_k(w) = sum_n w^n / (n + k)!. The p - q difference is
+// exp(z_q t0) h^k [expm1(d t0) phi_k(w_p) + (w_p - w_q) sum_{n>=1} D_n / (n + k)!],
+// D_n = (w_p^n - w_q^n) / (w_p - w_q) = w_p D_{n-1} + w_q^{n-1}: no cancellation anywhere.
+DecaySineIntegrals::Complex DecaySineIntegrals::shortSpan(const Point& o, double h, int k) const {
+    // Plain real arithmetic: std::complex's operator* may go through __muldc3 (NaN rules).
+    const double pr = zp_.real() * h, pi = zp_.imag() * h; // w_p
+    const double qr = zq_.real() * h, qi = zq_.imag() * h; // w_q
+    const double r = zqAbs_ * h;                           // |w_p| <= |w_q| = r <= 1/4
+    double coef = (k == 1) ? 1.0 : 0.5;                    // 1/(n + k)!
+    double phiR = coef, phiI = 0.0, divR = 0.0, divI = 0.0;
+    double rPow = 1.0;
+    double wpR = 1.0, wpI = 0.0, wqR = 1.0, wqI = 0.0, dR = 0.0, dI = 0.0;
+    for (int n = 1; n < kSeriesTerms; ++n) {
+        coef /= (n + k);
+        // D_n = w_p D_{n-1} + w_q^{n-1} (D_1 = 1, from D_0 = 0 and w_q^0 = 1)
+        const double nr = pr * dR - pi * dI + wqR, ni = pr * dI + pi * dR + wqI;
+        dR = nr;
+        dI = ni;
+        const double qR = wqR * qr - wqI * qi, qI = wqR * qi + wqI * qr;
+        wqR = qR;
+        wqI = qI;
+        const double pR = wpR * pr - wpI * pi, pI = wpR * pi + wpI * pr;
+        wpR = pR;
+        wpI = pI;
+        phiR += wpR * coef;
+        phiI += wpI * coef;
+        divR += dR * coef;
+        divI += dI * coef;
+        // |w_p^n| <= r^n and |D_n| <= n r^(n-1): stop once the terms fall below the rounding
+        // of the sums (phi ~ 1/k!, the divided sum ~ 1/(k+1)!).
+        rPow *= r;
+        if (n * rPow * coef < 1e-18 * r) break;
+    }
+    const double hk = (k == 1) ? h : h * h;
+    const double e = o.near ? o.em1 : std::expm1(d_ * o.t), dh = d_ * h;
+    const double bR = e * phiR + dh * divR, bI = e * phiI + dh * divI;
+    return Complex(o.eq.real() * bR - o.eq.imag() * bI, o.eq.real() * bI + o.eq.imag() * bR) * hk;
+}
+
+double DecaySineIntegrals::first(double t0, double h) const {
+    const Point& o = origin(t0);
+    if (zqAbs_ * h <= kShortSpan) return shortSpan(o, h, 1).imag();
+    return (pointAt(t0 + h).p1 - o.p1).imag();
+}
+
+double DecaySineIntegrals::second(double t0, double h) const {
+    const Point& o = origin(t0);
+    if (zqAbs_ * h <= kShortSpan) return shortSpan(o, h, 2).imag();
+    return (pointAt(t0 + h).p2 - o.p2 - o.p1 * h).imag();
+}
+
+} // namespace kinstab

@@ -1,0 +1,45 @@
+#pragma once
+// Integrals of the enveloped sine's shape g(s) = (exp(-p s) - exp(-q s)) sin(w s), 0 <= p < q,
+// over [t0, t0 + h], in closed form and free of cancellation (NUMERICS.md §5.1 "numerical
+// hygiene"; §4 row 12):
+//  - a short span h (grazing slips last microseconds): the increments are formed from the
+//    phi-functions phi_k(z h) by their Taylor series, not as a difference of primitives;
+//  - q close to p (A / S_max is then huge, ~1/(q - p)): the two exponentials are never
+//    subtracted; their difference is carried as expm1((q - p) s) and divided differences.
+// With z_l = -l + i w, g(s) = Im(exp(z_p s) - exp(z_q s)) and d = q - p = z_p - z_q.
+
+#include <complex>
+#include <limits>
+
+namespace kinstab {
+
+class DecaySineIntegrals {
+public:
+    DecaySineIntegrals(double p, double q, double omega);
+
+    // int_{t0}^{t0+h} g(s) ds
+    double first(double t0, double h) const;
+    // int_{t0}^{t0+h} (t0 + h - s) g(s) ds  (the second integral of g from t0)
+    double second(double t0, double h) const;
+
+private:
+    using Complex = std::complex<double>;
+    struct Point {
+        double t = std::numeric_limits<double>::quiet_NaN();
+        bool near = true; // d t < 1: exp(z_p t) is carried as exp(z_q t) (1 + em1)
+        double em1 = 0;   // expm1(d t) when near
+        Complex eq, ep;   // exp(z_q t); exp(z_p t) when not near
+        Complex p1, p2;   // primitives of exp(z_p s) - exp(z_q s): exp(z s)/z, exp(z s)/z^2
+    };
+    Point pointAt(double t) const;
+    const Point& origin(double t0) const;
+    // Increment over a short span from o.t: k = 1 gives first(), k = 2 second().
+    Complex shortSpan(const Point& o, double h, int k) const;
+
+    double p_, q_, d_, omega_;
+    double zqAbs_; // |z_q|: spans with |z_q| h <= 1/2 are short
+    Complex zp_, zq_;
+    Complex inv_p_, inv_q_, inv_pq_; // 1/z_p, 1/z_q, 1/(z_p z_q)
+};
+
+} // namespace kinstab
