@@ -82,14 +82,17 @@ double EnvelopedSine::halfPeriodPeak(long k) const {
         f = e1 / e + omega_ * c / s;
         df = (e2 * e - e1 * e1) / (e * e) - omega_ * omega_ / (s * s);
     };
-    // First guess: with e'/e frozen at the midpoint at lambda, the root is where
-    // cot(omega (tau - lo)) = -lambda/omega.
-    const double mid = lo + 0.5 * halfPeriod_;
-    double e = 0.0, e1 = 0.0;
-    envelopeAndSlope(mid, e, e1);
-    const double guess = lo + (0.5 * std::numbers::pi + std::atan(e1 / e / omega_)) / omega_;
     const double eps = 1e-12 * halfPeriod_;
-    return safeguardedNewton(fdf, lo + eps, hi - eps, 1.0, -1.0, 200, guess).x;
+    return safeguardedNewton(fdf, lo + eps, hi - eps, 1.0, -1.0, 200, peakGuess(k)).x;
+}
+
+// With e'/e frozen at its midpoint value lambda, the peak is where
+// cot(omega (tau - lo)) = -lambda/omega: within ~1e-3 of the true one.
+double EnvelopedSine::peakGuess(long k) const {
+    const double lo = static_cast<double>(k) * halfPeriod_;
+    double e = 0.0, e1 = 0.0;
+    envelopeAndSlope(lo + 0.5 * halfPeriod_, e, e1);
+    return lo + (0.5 * std::numbers::pi + std::atan(e1 / e / omega_)) / omega_;
 }
 
 Crossings EnvelopedSine::crossings(double level, double segmentStart, double segmentEnd) const {
@@ -100,16 +103,22 @@ Crossings EnvelopedSine::crossings(double level, double segmentStart, double seg
     if ((level > 0.0) != (sign > 0.0)) return out;
     const double target = std::abs(level);
     if (boundOn(segmentStart, segmentEnd) <= target) return out;
-    const double m = halfPeriodPeak(k);
-    const double peakValue = sign * accel(m);
-    if (!(peakValue > target)) return out; // touching is not crossing
+    // |a| is unimodal on the half-period, so any point above the level splits its two
+    // crossings: the peak guess usually is one; only near grazing is the true peak needed.
+    double m = peakGuess(k);
+    double peakValue = sign * accel(m);
+    if (!(peakValue > target)) {
+        m = halfPeriodPeak(k);
+        peakValue = sign * accel(m);
+        if (!(peakValue > target)) return out; // touching is not crossing
+    }
     auto fdf = [&](double t, double& f, double& df) {
         accelAndSlope(t, f, df);
         f = sign * f - target;
         df = sign * df;
     };
     const double lo = static_cast<double>(k) * halfPeriod_, hi = lo + halfPeriod_;
-    // First guesses: the envelope frozen at its value at the peak, |a| = level where
+    // First guesses: the envelope frozen at its value at m, |a| = level where
     // |sin(omega (tau - lo))| = level / (scale e(m)).
     const double offset = std::asin(std::min(1.0, target / (scale_ * envelopeAt(m)))) / omega_;
     out.add(safeguardedNewton(fdf, lo, m, -target, peakValue - target, 200, lo + offset).x);

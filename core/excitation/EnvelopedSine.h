@@ -36,6 +36,8 @@ public:
     double envelopePeakTau() const { return tauEnvelopePeak_; }
     // Where |a| peaks in the half-period [k pi/omega, (k+1) pi/omega].
     double halfPeriodPeak(long k) const;
+    // A cheap first guess of halfPeriodPeak(k), within ~1e-3 of it.
+    double peakGuess(long k) const;
 
 private:
     void envelopeAndSlope(double tau, double& e, double& de, double* d2e = nullptr) const;
