@@ -14,6 +14,11 @@ int runSurface(const ArgList& args);
 int runCritical(const ArgList& args);
 int runBench(const ArgList& args);
 int runPrecision(const ArgList& args);
+int runRecord(const ArgList& args);
+
+class Args;
+// simulate --record FILE (SimulateRecord.cpp), called by runSimulate.
+int runSimulateRecord(const Args& args);
 
 // Writes text to the file named by -o, or to stdout when there is none (atomically: a
 // temporary file renamed into place).

@@ -9,7 +9,7 @@ std::set<std::string> modelFlagNames() {
 }
 
 namespace {
-void requireOnly1D(const Args& args) {
+void requireOnly1D(const Args& args, bool allowRecord) {
     const std::string model = args.choice("model", {"slab1d", "planar"}, "slab1d");
     if (model != "slab1d")
         throw UsageError(
@@ -18,14 +18,14 @@ void requireOnly1D(const Args& args) {
         if (args.has(f))
             throw UsageError(std::string("--") + f + " applies to --model planar only");
     for (const char* f : {"record", "floor-period", "damping"})
-        if (args.has(f))
-            throw UsageError(std::string("--") + f +
-                             ": recorded motions are not available in this build");
+        if (args.has(f) && !allowRecord)
+            throw UsageError(std::string("--") + f + " " + args.text(f) +
+                             ": recorded motions run with 'simulate --record FILE' only");
 }
 } // namespace
 
-Slab1DCase slab1DCaseFromFlags(const Args& args) {
-    requireOnly1D(args);
+Slab1DCase slab1DCaseFromFlags(const Args& args, bool allowRecord) {
+    requireOnly1D(args, allowRecord);
     return commonCaseFromFlags(args);
 }
 

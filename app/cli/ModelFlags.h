@@ -12,7 +12,8 @@ namespace kinstab::cli {
 // Flags every model command accepts.
 std::set<std::string> modelFlagNames();
 // Reads and validates the 1-DOF case; throws UsageError naming the bad flag.
-Slab1DCase slab1DCaseFromFlags(const Args& args);
+// allowRecord: --record/--floor-period/--damping are read by the caller (simulate only).
+Slab1DCase slab1DCaseFromFlags(const Args& args, bool allowRecord = false);
 // The flags both models share (envelope, t*, mu, limit, scale, duration, solver), unchecked
 // against the model.
 Slab1DCase commonCaseFromFlags(const Args& args);

@@ -2,6 +2,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/PlanarFlags.h"
+#include "app/cli/RecordFlags.h"
 #include "core/excitation/EnvelopedSine.h"
 #include "core/io/ResultJson.h"
 #include "core/slab/History.h"
@@ -15,7 +16,12 @@ namespace kinstab::cli {
 int runSimulate(const ArgList& argv) {
     std::set<std::string> flags = modelFlagNames();
     flags.insert({"amplitude", "frequency", "history", "history-step"});
+    const std::set<std::string> recordFlags = recordReadFlagNames();
+    flags.insert(recordFlags.begin(), recordFlags.end());
     const Args args(argv, flags, {"events"});
+    if (args.has("record") && !isPlanar(args)) return runSimulateRecord(args);
+    for (const std::string& f : recordFlags)
+        if (args.has(f)) throw UsageError("--" + f + " " + args.text(f) + ": needs --record FILE");
     const double amplitude = args.requiredNumber("amplitude");
     const double frequency = args.requiredNumber("frequency");
     if (amplitude < 0.0 || amplitude > 1000.0)

@@ -19,11 +19,15 @@ commands:
   critical  --frequencies LIST [model flags] [--max-amplitude A] [--scan-step S]
   precision [-o FILE.csv] [--repeats N] [--no-regularized]
   bench     [--repeats N] [--threads N] [--amplitudes LIST --frequencies LIST] [model flags]
+  simulate  --record FILE [--amplitude PEAK_G] [--floor-period T [--damping Z]] [model flags]
+  record    --file FILE [--floor-period T [--damping Z]] [--peaks N] [--spectrum-csv FILE]
 
 LIST: comma-separated numbers or start:stop:step.
 model flags: --model slab1d --envelope fast|moderate|slow | --alpha X --beta Y
              --tstar S | --wall-width-in D   --mu M  --limit L  --duration TAU
              --scale tau_max|tau_rise|tau_dur|one  --solver exact|paper [--paper-steps N]
+record flags: --record-format auto|at2|cosmos|csmip|values|time-accel  --record-dt S
+              --record-unit g|m/s2|cm/s2|ft/s2|in/s2  --record-channel N|NAME
 )";
 
 } // namespace
@@ -32,7 +36,7 @@ int main(int argc, char** argv) {
     using namespace kinstab::cli;
     const std::map<std::string, std::function<int(const ArgList&)>> commands = {
         {"simulate", runSimulate}, {"surface", runSurface},     {"critical", runCritical},
-        {"bench", runBench},       {"precision", runPrecision},
+        {"bench", runBench},       {"precision", runPrecision}, {"record", runRecord},
     };
     if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
         std::cout << kUsage;

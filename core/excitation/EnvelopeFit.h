@@ -5,6 +5,7 @@
 
 #include "core/io/Accelerogram.h"
 
+#include <cmath>
 #include <vector>
 
 namespace kinstab {
@@ -16,6 +17,10 @@ struct EnvelopeFit {
     double rms = 0;   // g, root-mean-square residual at the peaks
     std::size_t peaks = 0;
     double at(double t) const;
+    double peakTime() const {
+        return std::log(beta / alpha) / (beta - alpha);
+    }                                              // s, where e is largest
+    double peak() const { return at(peakTime()); } // g
 };
 
 struct PeakPoint {

@@ -69,12 +69,16 @@ std::vector<double> floorAcceleration(const std::vector<double>& ground, double 
     return out;
 }
 
+double floorTailSeconds(const FloorFilterParams& p) {
+    const double w = 2.0 * std::numbers::pi / p.period;
+    return p.tail.value_or(p.damping > 0.0 ? std::min(std::log(100.0) / (p.damping * w), 120.0)
+                                           : 0.0);
+}
+
 Accelerogram floorMotion(const Accelerogram& ground, const FloorFilterParams& p) {
     if (const std::string e = validateFloorFilter(p); !e.empty()) throw std::invalid_argument(e);
     validateAccelerogram(ground);
-    const double w = 2.0 * std::numbers::pi / p.period;
-    const double tail =
-        p.tail.value_or(p.damping > 0.0 ? std::min(std::log(100.0) / (p.damping * w), 120.0) : 0.0);
+    const double tail = floorTailSeconds(p);
     std::vector<double> input = ground.samples;
     input.resize(input.size() + static_cast<std::size_t>(std::ceil(tail / ground.dt)), 0.0);
     Accelerogram floor = ground;

@@ -23,6 +23,7 @@ struct FloorFilterParams {
 };
 
 std::string validateFloorFilter(const FloorFilterParams& p); // empty when fine
+double floorTailSeconds(const FloorFilterParams& p);         // the tail actually appended
 
 struct OscillatorState {
     double x = 0; // relative displacement, g s^2

@@ -76,8 +76,8 @@ Accelerogram parseTimeAccel(const RecordText& text, AccelUnit unit) {
         if (fields.size() == 1)
             text.fail(i, "one value on the line: a single-column record needs dt");
         if (fields.size() != 2)
-            text.fail(i,
-                      "expected 2 columns (time, accel), found " + std::to_string(fields.size()));
+            text.fail(i, "expected 2 columns (time, accel), found " +
+                             std::to_string(fields.size()) + " (a file of values only needs dt)");
         time.push_back(finiteAt(text, i, fields[0], "time"));
         a.samples.push_back(finiteAt(text, i, fields[1], "acceleration") * gPerUnit(unit));
         lineOf.push_back(i);

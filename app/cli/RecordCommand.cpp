@@ -1,0 +1,97 @@
+// kinstab-cli record: what a record file holds (SPEC §7) — summary, Fourier amplitude spectrum
+// peaks of the ground (and floor) motion and the envelope fitted over |floor acc| (Figs. 25-27).
+
+#include "app/cli/Args.h"
+#include "app/cli/Commands.h"
+#include "app/cli/RecordFlags.h"
+#include "core/excitation/EnvelopeFit.h"
+#include "core/excitation/FourierSpectrum.h"
+#include "core/io/ResultJson.h"
+
+#include <iostream>
+#include <sstream>
+
+namespace kinstab::cli {
+
+namespace {
+
+nlohmann::json spectrumJson(const AmplitudeSpectrum& s, std::size_t count) {
+    nlohmann::json peaks = nlohmann::json::array();
+    for (const SpectrumPeak& p : spectrumPeaks(s, count))
+        peaks.push_back({{"frequency_hz", p.frequency}, {"amplitude", p.amplitude}});
+    return {{"points", s.points}, {"df_hz", s.df}, {"peaks", peaks}};
+}
+
+nlohmann::json envelopeFitJson(const Accelerogram& motion) {
+    try {
+        const EnvelopeFit fit = fitEnvelope(motion);
+        // With t* = 1 s the dimensionless times are seconds.
+        const CharacteristicTimes t =
+            Envelope{fit.alpha, fit.beta, std::nullopt}.computedTimes(1.0);
+        return {
+            {"alpha", fit.alpha},    {"beta", fit.beta},     {"scale_g", fit.scale},
+            {"rms_g", fit.rms},      {"peak_g", fit.peak()}, {"peaks", fit.peaks},
+            {"t_rise_s", t.tauRise}, {"t_max_s", t.tauMax},  {"t_dur_s", numberOrNull(t.tauDur)}};
+    } catch (const std::invalid_argument& e) {
+        return {{"error", e.what()}};
+    }
+}
+
+std::string spectraCsv(const AmplitudeSpectrum& ground, const AmplitudeSpectrum* floor) {
+    std::ostringstream out;
+    out.precision(10);
+    out << "frequency_hz,ground" << (floor ? ",floor" : "") << "\n";
+    for (std::size_t k = 0; k < ground.frequency.size(); ++k) {
+        out << ground.frequency[k] << "," << ground.amplitude[k];
+        if (floor) out << "," << (k < floor->amplitude.size() ? floor->amplitude[k] : 0.0);
+        out << "\n";
+    }
+    return out.str();
+}
+
+} // namespace
+
+int runRecord(const ArgList& argv) {
+    std::set<std::string> flags = recordReadFlagNames();
+    flags.insert({"file", "floor-period", "damping", "peaks", "spectrum-csv"});
+    const Args args(argv, flags);
+    if (!args.has("file")) throw UsageError("--file: required (the accelerogram to read)");
+    const int count = args.integer("peaks", 5);
+    if (count < 1 || count > 1000)
+        throw UsageError("--peaks " + args.text("peaks") + ": must be between 1 and 1000");
+    const Accelerogram ground = readRecordFromFlag(args, "file");
+    const std::optional<FloorFilterParams> filter = floorFilterFromFlags(args);
+
+    nlohmann::json j;
+    j["record"] = accelerogramJson(ground);
+    const AmplitudeSpectrum sg = amplitudeSpectrum(ground.samples, ground.dt);
+    j["spectrum"] = spectrumJson(sg, static_cast<std::size_t>(count));
+    j["floor"] = nullptr;
+    std::optional<AmplitudeSpectrum> sf;
+    if (filter) {
+        // Same transform length as the ground spectrum: the floor motion without its tail.
+        FloorFilterParams noTail = *filter;
+        noTail.tail = 0.0;
+        const Accelerogram floorSame = floorMotion(ground, noTail);
+        sf = amplitudeSpectrum(floorSame.samples, ground.dt);
+        const Accelerogram floor = floorMotion(ground, *filter);
+        j["floor"] = {{"filter", floorFilterJson(*filter)},
+                      {"peak_g", floor.peak().value},
+                      {"peak_time_s", floor.peak().time},
+                      {"npts", floor.size()},
+                      {"spectrum", spectrumJson(*sf, static_cast<std::size_t>(count))},
+                      {"energy_near_1_over_T",
+                       bandEnergyFraction(*sf, 0.8 / filter->period, 1.2 / filter->period)}};
+        j["envelope"] = envelopeFitJson(floor);
+        j["envelope"]["of"] = "floor";
+    } else {
+        j["envelope"] = envelopeFitJson(ground);
+        j["envelope"]["of"] = "ground";
+    }
+    if (args.has("spectrum-csv"))
+        writeOutput(args.text("spectrum-csv"), spectraCsv(sg, sf ? &*sf : nullptr));
+    std::cout << j.dump(2) << "\n";
+    return 0;
+}
+
+} // namespace kinstab::cli

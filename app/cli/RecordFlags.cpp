@@ -1,0 +1,79 @@
+#include "app/cli/RecordFlags.h"
+
+namespace kinstab::cli {
+
+std::set<std::string> recordReadFlagNames() {
+    return {"record-format", "record-dt", "record-unit", "record-channel"};
+}
+
+RecordReadOptions recordReadOptionsFromFlags(const Args& args) {
+    RecordReadOptions o;
+    o.format = *recordFormatFromName(args.choice(
+        "record-format", {"auto", "at2", "cosmos", "csmip", "values", "time-accel"}, "auto"));
+    if (const auto dt = args.optionalNumber("record-dt")) {
+        if (!(*dt > 0.0) || *dt > 10.0)
+            throw UsageError("--record-dt " + args.text("record-dt") +
+                             ": must be > 0 and at most 10 s");
+        o.dt = *dt;
+    }
+    if (args.has("record-unit")) {
+        o.unit = accelUnitFromName(args.text("record-unit"));
+        if (!o.unit)
+            throw UsageError("--record-unit " + args.text("record-unit") +
+                             ": must be one of g, m/s2, cm/s2, ft/s2, in/s2");
+    }
+    o.channel = args.text("record-channel");
+    if (o.format == RecordFormat::Values && !o.dt)
+        throw UsageError("--record-format values: needs --record-dt (the file has no time column)");
+    return o;
+}
+
+Accelerogram readRecordFromFlag(const Args& args, const std::string& fileFlag) {
+    const std::string path = args.text(fileFlag);
+    if (path.empty()) throw UsageError("--" + fileFlag + ": needs a file name");
+    try {
+        return readRecord(path, recordReadOptionsFromFlags(args));
+    } catch (const RecordError& e) {
+        throw UsageError("--" + fileFlag + " " + path + ": " + e.what());
+    }
+}
+
+std::optional<FloorFilterParams> floorFilterFromFlags(const Args& args) {
+    if (!args.has("floor-period")) {
+        if (args.has("damping"))
+            throw UsageError("--damping " + args.text("damping") + ": needs --floor-period");
+        return std::nullopt;
+    }
+    FloorFilterParams p;
+    p.period = args.requiredNumber("floor-period");
+    p.damping = args.number("damping", 0.02);
+    if (const std::string e = validateFloorFilter(p); !e.empty()) {
+        const bool period = e.rfind("floor period", 0) == 0;
+        throw UsageError(std::string(period ? "--floor-period " : "--damping ") +
+                         args.text(period ? "floor-period" : "damping") + ": " + e);
+    }
+    return p;
+}
+
+nlohmann::json accelerogramJson(const Accelerogram& a) {
+    const SignedPeak p = a.peak();
+    return {
+        {"file", a.sourceFile},
+        {"format", a.format},
+        {"name", a.name},
+        {"station", a.station},
+        {"component", a.component},
+        {"npts", a.size()},
+        {"dt", a.dt},
+        {"duration_s", a.duration()},
+        {"file_units", accelUnitName(a.fileUnit)},
+        {"peak_g", p.value},
+        {"peak_time_s", p.time},
+        {"header_peak_g", a.headerPeak ? nlohmann::json(*a.headerPeak) : nlohmann::json(nullptr)}};
+}
+
+nlohmann::json floorFilterJson(const FloorFilterParams& p) {
+    return {{"period_s", p.period}, {"damping", p.damping}, {"tail_s", floorTailSeconds(p)}};
+}
+
+} // namespace kinstab::cli
