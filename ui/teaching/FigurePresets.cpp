@@ -1,0 +1,80 @@
+#include "ui/teaching/FigurePresets.h"
+
+namespace kinstab::ui {
+
+namespace {
+
+TeachingParams paperParams(EnvelopePreset e, TauScale s, double a, double f) {
+    TeachingParams p;
+    p.envelope = e;
+    p.scale = s;
+    p.amplitude = a;
+    p.frequencyHz = f;
+    p.mu = 0.6;                               // the model default (SPEC §8)
+    p.wallWidthM = wallWidthFromTstar(0.099); // the "8 inch" wall, t* = 0.099 s (Table 4)
+    p.limit = 1.0;                            // bearing = d/2 (ch. IV)
+    return p;
+}
+
+FigurePreset surface(int fig, EnvelopePreset e, TauScale s) {
+    const QString env = e == EnvelopePreset::Fast       ? QStringLiteral("fast")
+                        : e == EnvelopePreset::Moderate ? QStringLiteral("moderately")
+                                                        : QStringLiteral("slowly");
+    const QString ref = s == TauScale::TauMax ? QStringLiteral("τ_max") : QStringLiteral("τ_rise");
+    FigurePreset p;
+    p.id = QStringLiteral("fig%1").arg(fig);
+    p.title = QStringLiteral("Fig. %1 — γc = %2/τc, %3 rising envelope").arg(fig).arg(ref, env);
+    p.caption =
+        QStringLiteral("Surface γc(A, f) for the scaling parameter %1, computed with the base "
+                       "acceleration contained in a %2 rising envelope.")
+            .arg(ref, env);
+    // The run shown: A = 1.0 g at the example building's 1 Hz (ch. V), on the surface.
+    p.params = paperParams(e, s, 1.0, 1.0);
+    p.range = kPaperRange;
+    return p;
+}
+
+std::vector<FigurePreset> build() {
+    std::vector<FigurePreset> v;
+    v.push_back(surface(28, EnvelopePreset::Fast, TauScale::TauMax));
+    v.push_back(surface(29, EnvelopePreset::Moderate, TauScale::TauMax));
+    v.push_back(surface(30, EnvelopePreset::Slow, TauScale::TauMax));
+    v.push_back(surface(31, EnvelopePreset::Fast, TauScale::TauRise));
+    v.push_back(surface(32, EnvelopePreset::Moderate, TauScale::TauRise));
+    v.push_back(surface(33, EnvelopePreset::Slow, TauScale::TauRise));
+    FigurePreset f34;
+    f34.id = QStringLiteral("fig34");
+    f34.title = QStringLiteral("Fig. 34 — τc against A at f = 0.75 Hz");
+    f34.caption =
+        QStringLiteral("Nondimensional collapse time τc vs. amplitude A given fixed frequency "
+                       "f = 0.75 Hz and moderately rising acceleration envelope.");
+    f34.params = paperParams(EnvelopePreset::Moderate, TauScale::TauMax, 1.0, 0.75);
+    f34.mode = MapMode::Slice;
+    f34.range = kPaperRange;
+    v.push_back(f34);
+    FigurePreset f35;
+    f35.id = QStringLiteral("fig35");
+    f35.title = QStringLiteral("Fig. 35 — δ(τ) with envelope, A = 1.0, f = 1.125 Hz");
+    f35.caption =
+        QStringLiteral("Nondimensional relative displacement δ(τ) vs. τ with the acceleration "
+                       "envelope, A = 1.0, f = 1.125 Hz, moderately rising envelope.");
+    f35.params = paperParams(EnvelopePreset::Moderate, TauScale::TauMax, 1.0, 1.125);
+    f35.range = kPaperRange;
+    v.push_back(f35);
+    return v;
+}
+
+} // namespace
+
+const std::vector<FigurePreset>& figurePresets() {
+    static const std::vector<FigurePreset> presets = build();
+    return presets;
+}
+
+const FigurePreset* findFigurePreset(const QString& id) {
+    for (const FigurePreset& p : figurePresets())
+        if (p.id == id) return &p;
+    return nullptr;
+}
+
+} // namespace kinstab::ui

@@ -1,0 +1,39 @@
+#pragma once
+// One-click settings that reproduce the figures of Furgerson (1980), ch. IV: the gamma_c
+// surfaces of Figs. 28-33 (three envelopes, gamma_c = tau_max / tau_c or tau_rise / tau_c),
+// Fig. 34 (tau_c against A at f = 0.75 Hz) and Fig. 35 (delta(tau) with the envelope for
+// A = 1.0, f = 1.125 Hz). All at the paper's t* = 0.099 s, mu = 0.6, bearing d/2.
+
+#include "ui/teaching/TeachingRun.h"
+
+#include <QString>
+
+#include <vector>
+
+namespace kinstab::ui {
+
+// What the small "where am I" panel shows.
+enum class MapMode { Surface, Slice };
+
+struct MapRange {
+    double aMin = 0.5, aMax = 1.5;  // g
+    double fMin = 0.25, fMax = 2.0; // Hz
+    bool operator==(const MapRange&) const = default;
+};
+
+struct FigurePreset {
+    QString id;      // "fig29"
+    QString title;   // shown in the preset list
+    QString caption; // what the figure shows, after the paper's caption
+    TeachingParams params;
+    MapMode mode = MapMode::Surface;
+    MapRange range;
+};
+
+// The paper's computed range: 0.7 <= A <= 1.15, 0.5 <= f <= 1.125 (ch. IV, "Results").
+inline constexpr MapRange kPaperRange{0.7, 1.15, 0.5, 1.125};
+
+const std::vector<FigurePreset>& figurePresets();
+const FigurePreset* findFigurePreset(const QString& id);
+
+} // namespace kinstab::ui

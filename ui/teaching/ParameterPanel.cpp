@@ -1,0 +1,145 @@
+#include "ui/teaching/ParameterPanel.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QGridLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QSlider>
+
+#include <cmath>
+
+namespace kinstab::ui {
+
+namespace {
+constexpr int kA = 0, kF = 1, kMu = 2, kD = 3;
+}
+
+ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
+    auto* grid = new QGridLayout(this);
+    grid->setContentsMargins(0, 0, 0, 0);
+    envelope_ = new QComboBox(this);
+    envelope_->addItem(tr("fast rising"), int(EnvelopePreset::Fast));
+    envelope_->addItem(tr("moderately rising"), int(EnvelopePreset::Moderate));
+    envelope_->addItem(tr("slowly rising"), int(EnvelopePreset::Slow));
+    scale_ = new QComboBox(this);
+    scale_->addItem(tr("γc = τ_max / τc"), int(TauScale::TauMax));
+    scale_->addItem(tr("γc = τ_rise / τc"), int(TauScale::TauRise));
+    scale_->addItem(tr("γc = τ_dur / τc"), int(TauScale::TauDur));
+    scale_->addItem(tr("γc = 1 / τc"), int(TauScale::One));
+    grid->addWidget(new QLabel(tr("Envelope"), this), 0, 0);
+    grid->addWidget(envelope_, 0, 1, 1, 2);
+    grid->addWidget(new QLabel(tr("Scaling"), this), 1, 0);
+    grid->addWidget(scale_, 1, 1, 1, 2);
+    rows_[kA] = addRow(grid, kA, tr("A"), 0.0, 3.0, 0.005, 3, tr(" g"));
+    rows_[kF] = addRow(grid, kF, tr("f"), 0.05, 5.0, 0.005, 3, tr(" Hz"));
+    rows_[kMu] = addRow(grid, kMu, tr("μ"), 0.05, 1.5, 0.01, 2, QString());
+    rows_[kD] = addRow(grid, kD, tr("wall d"), 50.0, 500.0, 0.5, 1, tr(" mm"));
+    limit_ = new QDoubleSpinBox(this);
+    limit_->setRange(0.1, 2.0);
+    limit_->setSingleStep(0.05);
+    limit_->setDecimals(2);
+    limit_->setToolTip(tr("Bearing length / (d/2): the slab falls when |δ| exceeds it (paper: 1)"));
+    grid->addWidget(new QLabel(tr("bearing"), this), 6, 0);
+    grid->addWidget(limit_, 6, 1);
+    grid->addWidget(new QLabel(tr("× d/2"), this), 6, 2);
+    tstarLabel_ = new QLabel(this);
+    grid->addWidget(tstarLabel_, 7, 0, 1, 3);
+    grid->setColumnStretch(1, 1);
+    setParams(TeachingParams{});
+    connect(envelope_, &QComboBox::currentIndexChanged, this, &ParameterPanel::changed);
+    connect(scale_, &QComboBox::currentIndexChanged, this, &ParameterPanel::changed);
+    connect(limit_, &QDoubleSpinBox::valueChanged, this, &ParameterPanel::changed);
+}
+
+ParameterPanel::Row ParameterPanel::addRow(QGridLayout* grid, int quantity, const QString& label,
+                                           double lo, double hi, double step, int decimals,
+                                           const QString& suffix) {
+    const int row = quantity + 2;
+    Row r{new QSlider(Qt::Horizontal, this), new QDoubleSpinBox(this), step};
+    r.slider->setRange(static_cast<int>(std::lround(lo / step)),
+                       static_cast<int>(std::lround(hi / step)));
+    r.spin->setRange(lo, hi);
+    r.spin->setDecimals(decimals);
+    r.spin->setSingleStep(step);
+    r.spin->setSuffix(suffix);
+    r.spin->setKeyboardTracking(false);
+    grid->addWidget(new QLabel(label, this), row, 0);
+    grid->addWidget(r.slider, row, 1);
+    grid->addWidget(r.spin, row, 2);
+    connect(r.slider, &QSlider::valueChanged, this, [this, r, quantity](int v) {
+        {
+            const QSignalBlocker block(r.spin);
+            r.spin->setValue(v * r.step);
+        }
+        setValue(quantity, r.spin->value());
+    });
+    connect(r.spin, &QDoubleSpinBox::valueChanged, this, [this, r, quantity](double v) {
+        {
+            const QSignalBlocker block(r.slider);
+            r.slider->setValue(static_cast<int>(std::lround(v / r.step)));
+        }
+        setValue(quantity, v);
+    });
+    return r;
+}
+
+// The exact values are kept apart from the widgets: a preset's wall width (2 g (0.099 s)^2)
+// must not be rounded to the spin box's 0.1 mm, or t* would no longer be the paper's.
+void ParameterPanel::setValue(int quantity, double v) {
+    if (quiet_) return;
+    switch (quantity) {
+    case kA:
+        values_.amplitude = v;
+        break;
+    case kF:
+        values_.frequencyHz = v;
+        break;
+    case kMu:
+        values_.mu = v;
+        break;
+    case kD:
+        values_.wallWidthM = v / 1000.0;
+        break;
+    }
+    changed();
+}
+
+void ParameterPanel::setParams(const TeachingParams& p) {
+    quiet_ = true;
+    envelope_->setCurrentIndex(envelope_->findData(int(p.envelope)));
+    scale_->setCurrentIndex(scale_->findData(int(p.scale)));
+    rows_[kA].spin->setValue(p.amplitude);
+    rows_[kF].spin->setValue(p.frequencyHz);
+    rows_[kMu].spin->setValue(p.mu);
+    rows_[kD].spin->setValue(p.wallWidthM * 1000.0);
+    limit_->setValue(p.limit);
+    values_ = p;
+    quiet_ = false;
+    updateTstarLabel();
+}
+
+QSlider* ParameterPanel::slider(Quantity q) const {
+    return rows_[static_cast<int>(q)].slider;
+}
+QDoubleSpinBox* ParameterPanel::spinBox(Quantity q) const {
+    return rows_[static_cast<int>(q)].spin;
+}
+
+void ParameterPanel::changed() {
+    if (quiet_) return;
+    values_.envelope = static_cast<EnvelopePreset>(envelope_->currentData().toInt());
+    values_.scale = static_cast<TauScale>(scale_->currentData().toInt());
+    values_.limit = limit_->value();
+    updateTstarLabel();
+    emit paramsChanged(values_);
+}
+
+void ParameterPanel::updateTstarLabel() {
+    const double d = values_.wallWidthM;
+    tstarLabel_->setText(tr("d = %1 in,  t* = √(d/2g) = %2 s")
+                             .arg(d / 0.0254, 0, 'f', 2)
+                             .arg(tstarFromWallWidth(d), 0, 'f', 4));
+}
+
+} // namespace kinstab::ui

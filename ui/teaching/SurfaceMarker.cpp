@@ -1,0 +1,237 @@
+#include "ui/teaching/SurfaceMarker.h"
+
+#include "ui/teaching/StateStyle.h"
+#include "ui/teaching/TracePainter.h"
+
+#include <QMouseEvent>
+#include <QPainter>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <algorithm>
+#include <cmath>
+
+namespace kinstab::ui {
+
+namespace {
+
+std::vector<double> spread(double lo, double hi, int n) {
+    std::vector<double> v(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i)
+        v[static_cast<std::size_t>(i)] = lo + (hi - lo) * i / (n - 1);
+    return v;
+}
+
+MarkerMap computeMap(const TeachingParams& p, const MapRange& r, MapMode mode,
+                     SweepControl* control) {
+    MarkerMap m;
+    m.context = p;
+    m.range = r;
+    m.mode = mode;
+    const Slab1DCase c = p.toCase();
+    m.tauRef = c.tauRef();
+    SweepGrid grid;
+    if (mode == MapMode::Surface) {
+        grid.amplitudes = spread(r.aMin, r.aMax, SurfaceMarker::kCells);
+        grid.frequencies = spread(r.fMin, r.fMax, SurfaceMarker::kCells);
+    } else {
+        grid.amplitudes = spread(r.aMin, r.aMax, SurfaceMarker::kSlicePoints);
+        grid.frequencies = {p.frequencyHz};
+    }
+    m.sweep = runSweep(grid, slab1DPoint(c), control, 1); // one thread: the GUI keeps a core
+    m.gamma = collapseFactors(m.sweep, m.tauRef);
+    return m;
+}
+
+// White (stable) through yellow and orange to dark red as gamma_c grows.
+QColor gammaColor(double g, double gMax) {
+    if (!(g > 0)) return QColor(0xee, 0xf2, 0xf6);
+    const double x = std::clamp(g / std::max(gMax, 1e-12), 0.0, 1.0);
+    return QColor::fromHsvF(0.16 * (1.0 - x), 0.35 + 0.6 * x, 1.0 - 0.45 * x);
+}
+
+} // namespace
+
+SurfaceMarker::SurfaceMarker(QWidget* parent) : QWidget(parent) {
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+    setToolTip(tr("Click to run that amplitude and frequency"));
+    connect(&watcher_, &QFutureWatcher<MarkerMap>::finished, this, &SurfaceMarker::onFinished);
+}
+
+SurfaceMarker::~SurfaceMarker() {
+    if (control_) control_->cancel();
+    watcher_.waitForFinished();
+}
+
+bool sameSweep(const SweepKey& a, const SweepKey& b) {
+    return a.mode == b.mode && a.range == b.range && a.params.envelope == b.params.envelope &&
+           a.params.scale == b.params.scale && a.params.mu == b.params.mu &&
+           a.params.wallWidthM == b.params.wallWidthM && a.params.limit == b.params.limit &&
+           (a.mode == MapMode::Surface || a.params.frequencyHz == b.params.frequencyHz);
+}
+
+void SurfaceMarker::setContext(const TeachingParams& p, const MapRange& range, MapMode mode) {
+    current_ = {p, range, mode};
+    const bool shown = hasMap_ && sameSweep(current_, {map_.context, map_.range, map_.mode});
+    const bool coming = isComputing() && !restart_ && sameSweep(current_, running_);
+    if (!shown && !coming) start();
+    update();
+}
+
+void SurfaceMarker::start() {
+    if (watcher_.isRunning()) {
+        control_->cancel(); // onFinished starts again with the latest context
+        restart_ = true;
+        return;
+    }
+    restart_ = false;
+    running_ = current_;
+    control_ = std::make_shared<SweepControl>();
+    watcher_.setFuture(QtConcurrent::run(
+        [k = current_, c = control_] { return computeMap(k.params, k.range, k.mode, c.get()); }));
+}
+
+void SurfaceMarker::onFinished() {
+    const MarkerMap m = watcher_.result();
+    if (restart_ || m.sweep.cancelled) {
+        restart_ = false;
+        start();
+        return;
+    }
+    map_ = m;
+    hasMap_ = true;
+    if (!sameSweep(current_, running_)) start(); // the context moved on meanwhile
+    update();
+    emit mapReady();
+}
+
+QRectF SurfaceMarker::plotRect() const {
+    return QRectF(rect()).adjusted(44, 22, -10, -30);
+}
+
+void SurfaceMarker::paintEvent(QPaintEvent*) {
+    QPainter p(this);
+    p.fillRect(rect(), Qt::white);
+    p.setRenderHint(QPainter::Antialiasing);
+    QFont font = p.font();
+    font.setPixelSize(11);
+    p.setFont(font);
+    const QRectF r = plotRect();
+    const bool surface = current_.mode == MapMode::Surface;
+    const QString ref = tauScaleName(current_.params.scale) == "tau_rise" ? QStringLiteral("τ_rise")
+                                                                          : QStringLiteral("τ_max");
+    p.setPen(QColor(0x22, 0x22, 0x22));
+    p.drawText(QRectF(4, 2, width() - 8, 18), Qt::AlignLeft | Qt::AlignVCenter,
+               surface ? QStringLiteral("Where am I?  γc = %1/τc over A and f").arg(ref)
+                       : QStringLiteral("τc against A at f = %1 Hz")
+                             .arg(current_.params.frequencyHz, 0, 'g', 4));
+    const auto xOf = [&](double v, double lo, double hi) {
+        return r.left() + r.width() * (v - lo) / (hi - lo);
+    };
+    const auto yOf = [&](double v, double lo, double hi) {
+        return r.bottom() - r.height() * (v - lo) / (hi - lo);
+    };
+    const MapRange& R = current_.range;
+    if (hasMap_ && surface && map_.mode == MapMode::Surface) {
+        p.save();
+        p.setClipRect(r);
+        const auto& g = map_.sweep.grid;
+        const double gMax = *std::max_element(map_.gamma.begin(), map_.gamma.end());
+        const double cw = r.width() / (g.frequencies.size() - 1),
+                     ch = r.height() / (g.amplitudes.size() - 1);
+        for (std::size_t i = 0; i < g.amplitudes.size(); ++i)
+            for (std::size_t j = 0; j < g.frequencies.size(); ++j) {
+                const QPointF c(xOf(g.frequencies[j], R.fMin, R.fMax),
+                                yOf(g.amplitudes[i], R.aMin, R.aMax));
+                p.fillRect(QRectF(c.x() - cw / 2, c.y() - ch / 2, cw + 0.5, ch + 0.5),
+                           gammaColor(map_.gamma[i * g.frequencies.size() + j], gMax));
+            }
+        p.restore();
+        p.setPen(QColor(0x55, 0x55, 0x55));
+        p.drawText(QRectF(r.left(), r.bottom() + 14, r.width(), 14), Qt::AlignRight,
+                   QStringLiteral("pale: stable; darkest: γc = %1").arg(gMax, 0, 'f', 2));
+    } else if (hasMap_ && !surface && map_.mode == MapMode::Slice) {
+        double tMax = 0;
+        for (const auto& pt : map_.sweep.points)
+            if (pt.outcome == Outcome::Collapsed) tMax = std::max(tMax, pt.tauC);
+        tMax = tMax > 0 ? tMax * 1.1 : 1.0;
+        p.setPen(QPen(stateColor(DisplayState::Collapse), 1.5));
+        QPointF last;
+        bool have = false;
+        for (std::size_t i = 0; i < map_.sweep.points.size(); ++i) {
+            const auto& pt = map_.sweep.points[i];
+            const double x = xOf(map_.sweep.grid.amplitudes[i], R.aMin, R.aMax);
+            if (pt.outcome != Outcome::Collapsed) {
+                p.drawText(QRectF(x - 4, r.top(), 8, 12), Qt::AlignCenter, QStringLiteral("·"));
+                have = false;
+                continue;
+            }
+            const QPointF q(x, yOf(pt.tauC, 0, tMax));
+            if (have) p.drawLine(last, q);
+            p.drawEllipse(q, 2, 2);
+            last = q;
+            have = true;
+        }
+        p.setPen(QColor(0x55, 0x55, 0x55));
+        for (double v = 0; v <= tMax; v += niceTickStep(tMax, 4))
+            p.drawText(QRectF(0, yOf(v, 0, tMax) - 7, r.left() - 4, 14),
+                       Qt::AlignRight | Qt::AlignVCenter, QString::number(v, 'g', 3));
+        p.drawText(QRectF(r.left() + 4, r.top() + 12, r.width(), 14), Qt::AlignLeft,
+                   QStringLiteral("τc (stable: dots on top)"));
+    } else {
+        p.setPen(QColor(0x77, 0x77, 0x77));
+        p.drawText(r, Qt::AlignCenter, tr("computing…"));
+    }
+    p.setPen(QColor(0x44, 0x44, 0x44));
+    p.setBrush(Qt::NoBrush);
+    p.drawRect(r);
+    // Axes: f across and A up for the surface; A across for the slice.
+    const double xLo = surface ? R.fMin : R.aMin, xHi = surface ? R.fMax : R.aMax;
+    for (double v = std::ceil(xLo / niceTickStep(xHi - xLo, 4)) * niceTickStep(xHi - xLo, 4);
+         v <= xHi + 1e-9; v += niceTickStep(xHi - xLo, 4))
+        p.drawText(QRectF(xOf(v, xLo, xHi) - 20, r.bottom() + 1, 40, 14), Qt::AlignCenter,
+                   QString::number(v, 'g', 3));
+    p.drawText(QRectF(r.left(), r.bottom() + 14, r.width(), 14), Qt::AlignLeft,
+               surface ? QStringLiteral("f [Hz]") : QStringLiteral("A [g]"));
+    if (surface) {
+        const double step = niceTickStep(R.aMax - R.aMin, 4);
+        for (double v = std::ceil(R.aMin / step) * step; v <= R.aMax + 1e-9; v += step)
+            p.drawText(QRectF(0, yOf(v, R.aMin, R.aMax) - 7, r.left() - 4, 14),
+                       Qt::AlignRight | Qt::AlignVCenter, QString::number(v, 'g', 3));
+        p.save();
+        p.translate(10, r.center().y());
+        p.rotate(-90);
+        p.drawText(QRectF(-40, -8, 80, 14), Qt::AlignCenter, QStringLiteral("A [g]"));
+        p.restore();
+    }
+    // The current run.
+    const double cx = surface ? xOf(current_.params.frequencyHz, R.fMin, R.fMax)
+                              : xOf(current_.params.amplitude, R.aMin, R.aMax);
+    const double cy = surface ? yOf(current_.params.amplitude, R.aMin, R.aMax) : r.center().y();
+    const QPointF c(std::clamp(cx, r.left(), r.right()), std::clamp(cy, r.top(), r.bottom()));
+    p.setPen(QPen(QColor(0x10, 0x10, 0x10), 2));
+    if (surface) {
+        p.drawEllipse(c, 6, 6);
+        p.drawLine(c + QPointF(-10, 0), c + QPointF(-6, 0));
+        p.drawLine(c + QPointF(6, 0), c + QPointF(10, 0));
+        p.drawLine(c + QPointF(0, -10), c + QPointF(0, -6));
+        p.drawLine(c + QPointF(0, 6), c + QPointF(0, 10));
+    } else {
+        p.setPen(QPen(QColor(0x10, 0x10, 0x10), 1.5, Qt::DashLine));
+        p.drawLine(QPointF(c.x(), r.top()), QPointF(c.x(), r.bottom()));
+    }
+}
+
+void SurfaceMarker::mousePressEvent(QMouseEvent* e) {
+    const QRectF r = plotRect();
+    if (e->button() != Qt::LeftButton || !r.contains(e->position())) return;
+    const double u = (e->position().x() - r.left()) / r.width();
+    const double v = (r.bottom() - e->position().y()) / r.height();
+    if (current_.mode == MapMode::Surface)
+        emit pointPicked(current_.range.aMin + v * (current_.range.aMax - current_.range.aMin),
+                         current_.range.fMin + u * (current_.range.fMax - current_.range.fMin));
+    else
+        emit pointPicked(current_.range.aMin + u * (current_.range.aMax - current_.range.aMin),
+                         current_.params.frequencyHz);
+}
+
+} // namespace kinstab::ui

@@ -1,0 +1,72 @@
+#pragma once
+// "Where am I on the surface": a coarse gamma_c(A, f) map (or, for Fig. 34, tau_c against A at
+// the current f) of the current envelope, mu and wall, with the current run marked. The
+// sweep runs in a worker thread; a change while it runs cancels it and starts again.
+
+#include "core/sweep/Sweep.h"
+#include "ui/teaching/FigurePresets.h"
+
+#include <QFutureWatcher>
+#include <QWidget>
+
+#include <memory>
+
+namespace kinstab::ui {
+
+struct MarkerMap {
+    TeachingParams context; // what the sweep was run for (A, f ignored except f in Slice mode)
+    MapRange range;
+    MapMode mode = MapMode::Surface;
+    SweepResult sweep;
+    std::vector<double> gamma; // gamma_c per point, as sweep.points
+    double tauRef = 1;
+};
+
+// What a sweep depends on (the current point's A, and f for a surface, do not count).
+struct SweepKey {
+    TeachingParams params;
+    MapRange range;
+    MapMode mode = MapMode::Surface;
+};
+bool sameSweep(const SweepKey& a, const SweepKey& b);
+
+class SurfaceMarker : public QWidget {
+    Q_OBJECT
+public:
+    static constexpr int kCells = 24;       // 24 x 24 surface
+    static constexpr int kSlicePoints = 46; // A every 0.01 over the paper's 0.7..1.15
+
+    explicit SurfaceMarker(QWidget* parent = nullptr);
+    ~SurfaceMarker() override;
+
+    // Re-sweeps only when something but the current point changed.
+    void setContext(const TeachingParams& p, const MapRange& range, MapMode mode);
+    const MarkerMap& map() const { return map_; }
+    bool isComputing() const { return watcher_.isRunning(); }
+    bool hasMap() const { return hasMap_; }
+    QSize sizeHint() const override { return {320, 250}; }
+    QSize minimumSizeHint() const override { return {220, 180}; }
+
+signals:
+    void pointPicked(double amplitude, double frequencyHz);
+    void mapReady();
+
+protected:
+    void paintEvent(QPaintEvent*) override;
+    void mousePressEvent(QMouseEvent* e) override;
+
+private:
+    void start();
+    void onFinished();
+    QRectF plotRect() const;
+
+    SweepKey current_; // what is shown and marked
+    SweepKey running_; // what the worker computes
+    MarkerMap map_;
+    bool hasMap_ = false;
+    bool restart_ = false;
+    std::shared_ptr<SweepControl> control_;
+    QFutureWatcher<MarkerMap> watcher_;
+};
+
+} // namespace kinstab::ui

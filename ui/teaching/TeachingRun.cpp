@@ -1,0 +1,150 @@
+#include "ui/teaching/TeachingRun.h"
+
+#include "core/slab/History.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+namespace kinstab::ui {
+
+Slab1DCase TeachingParams::toCase() const {
+    Slab1DCase c;
+    c.envelope = Envelope::fromPreset(envelope);
+    c.tstar = tstar();
+    c.slab.mu = mu;
+    c.slab.limit = limit;
+    c.scale = scale;
+    return c;
+}
+
+double TeachingParams::tstar() const {
+    return tstarFromWallWidth(wallWidthM);
+}
+
+DisplayState displayStateOf(EventKind k) {
+    switch (k) {
+    case EventKind::SlipOnset:
+        return DisplayState::Slip;
+    case EventKind::Stick:
+        return DisplayState::Stick;
+    case EventKind::Reversal:
+        return DisplayState::Reversal;
+    case EventKind::Collapse:
+        return DisplayState::Collapse;
+    case EventKind::Stable:
+    case EventKind::DurationCap:
+        return DisplayState::Stable;
+    case EventKind::LiftOff:
+        return DisplayState::LiftOff;
+    }
+    return DisplayState::Failed;
+}
+
+const char* displayStateName(DisplayState s) {
+    switch (s) {
+    case DisplayState::AtRest:
+        return "at rest";
+    case DisplayState::Slip:
+        return "slip";
+    case DisplayState::Stick:
+        return "stick";
+    case DisplayState::Reversal:
+        return "reversal";
+    case DisplayState::Collapse:
+        return "collapse";
+    case DisplayState::Stable:
+        return "stable";
+    case DisplayState::LiftOff:
+        return "lift-off";
+    case DisplayState::Failed:
+        return "failed";
+    }
+    return "?";
+}
+
+TeachingRun::TeachingRun(const TeachingParams& p) : params_(p) {
+    std::string e = validateEnvelopedSine(p.amplitude, p.frequencyHz, 1.0);
+    if (e.empty() && !(std::isfinite(p.wallWidthM) && p.wallWidthM > 0.0 && p.wallWidthM < 10.0))
+        e = "wall width = " + std::to_string(p.wallWidthM) + " m: must be > 0 and below 10";
+    const Slab1DCase c = p.toCase();
+    if (e.empty()) e = validateCase(c);
+    if (!e.empty()) {
+        error_ = e;
+        result_.failure = e;
+        return;
+    }
+    tstar_ = c.tstar;
+    tauRef_ = c.tauRef();
+    accel_ = std::make_unique<EnvelopedSine>(c.envelope, p.amplitude, p.frequencyHz, c.tstar);
+    const auto t0 = std::chrono::steady_clock::now();
+    result_ = runSlab1D(c, p.amplitude, p.frequencyHz, RunOptions{.recordEvents = true});
+    runSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (result_.outcome == Outcome::Failed) error_ = result_.failure;
+    displayEnd_ = std::max(result_.tauEnd, 1.2 * accel_->envelopePeakTau());
+    if (result_.outcome == Outcome::Collapsed) displayEnd_ = result_.tauC + kFallTau;
+    if (!std::isfinite(displayEnd_) || displayEnd_ <= 0.0) displayEnd_ = 1.0;
+    sampleTrace();
+}
+
+double TeachingRun::gammaC() const {
+    return collapseFactor(tauRef_, result_);
+}
+
+std::vector<double> TeachingRun::eventTimes() const {
+    std::vector<double> t;
+    t.reserve(result_.events.size());
+    for (const SlabEvent& e : result_.events)
+        t.push_back(e.tau);
+    return t;
+}
+
+TeachingFrame TeachingRun::frameAt(double tau) const {
+    TeachingFrame f;
+    f.tau = std::clamp(tau, 0.0, displayEnd_);
+    if (!accel_) return f;
+    const auto& ev = result_.events;
+    const bool collapsed = result_.outcome == Outcome::Collapsed;
+    // After collapse the relative motion is frozen at tau_c; only the free end falls.
+    const double tRel = collapsed ? std::min(f.tau, result_.tauC) : f.tau;
+    const HistorySample s = stateAt(*accel_, params_.mu, ev, tRel);
+    f.accel = accel_->accel(f.tau);
+    f.envelope = accel_->amplitude() / accel_->sMax() * accel_->envelopeAt(f.tau);
+    f.delta = s.delta;
+    f.velocity = s.velocity;
+    f.direction = s.state;
+    f.baseDisp = accel_->displacementChange(0.0, f.tau); // from rest: y_b(0) = y_b'(0) = 0
+    const auto it = std::upper_bound(ev.begin(), ev.end(), f.tau,
+                                     [](double t, const SlabEvent& e) { return t < e.tau; });
+    f.eventIndex = static_cast<int>(it - ev.begin()) - 1;
+    f.state = f.eventIndex < 0 ? DisplayState::AtRest : displayStateOf(ev[f.eventIndex].kind);
+    if (collapsed && f.tau > result_.tauC) {
+        const double h = f.tau - result_.tauC;
+        f.fallDrop = 0.5 * h * h; // 1 g in units of d/2 and t*
+    }
+    return f;
+}
+
+void TeachingRun::sampleTrace() {
+    // Enough points to resolve every half-period, capped so a long run stays cheap to draw.
+    const double halfPeriod = std::numbers::pi / accel_->omega();
+    const double step =
+        std::max(displayEnd_ / 6000.0, std::min(halfPeriod / 16.0, displayEnd_ / 1500.0));
+    std::vector<double> times;
+    for (double t = 0.0; t < displayEnd_; t += step)
+        times.push_back(t);
+    for (const SlabEvent& e : result_.events)
+        times.push_back(e.tau);
+    times.push_back(displayEnd_);
+    std::sort(times.begin(), times.end());
+    times.erase(std::unique(times.begin(), times.end()), times.end());
+    trace_.clear();
+    trace_.reserve(times.size());
+    for (double t : times) {
+        const TeachingFrame f = frameAt(t);
+        trace_.push_back({t, f.accel, f.envelope, f.delta, f.state});
+    }
+}
+
+} // namespace kinstab::ui

@@ -1,0 +1,306 @@
+#include "ui/teaching/TeachingView.h"
+
+#include "ui/teaching/EventLog.h"
+#include "ui/teaching/FrameExport.h"
+#include "ui/teaching/ParameterPanel.h"
+#include "ui/teaching/SlabAnimation.h"
+#include "ui/teaching/StateStyle.h"
+#include "ui/teaching/SurfaceMarker.h"
+#include "ui/teaching/TeachingPlayer.h"
+#include "ui/teaching/TracePlot.h"
+
+#include <QComboBox>
+#include <QFileDialog>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMessageBox>
+#include <QProgressDialog>
+#include <QPushButton>
+#include <QShortcut>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QStyle>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace kinstab::ui {
+
+namespace {
+constexpr int kScrubSteps = 10000;
+const double kSpeeds[] = {0.1, 0.25, 0.5, 1.0, 2.0, 5.0, 10.0};
+} // namespace
+
+TeachingView::TeachingView(QWidget* parent)
+    : QWidget(parent), run_(std::make_unique<TeachingRun>()), player_(new TeachingPlayer(this)),
+      animation_(new SlabAnimation(this)), traces_(new TracePlot(this)),
+      panel_(new ParameterPanel(this)), marker_(new SurfaceMarker(this)), log_(new EventLog(this)) {
+    auto* left = new QVBoxLayout;
+    left->addWidget(animation_, 5);
+    left->addWidget(traces_, 4);
+    left->addWidget(buildTransport());
+    auto* root = new QHBoxLayout(this);
+    root->addLayout(left, 1);
+    root->addWidget(buildSidePanel());
+
+    connect(player_, &TeachingPlayer::tauChanged, this, &TeachingView::showFrame);
+    connect(traces_, &TracePlot::seekRequested, player_, &TeachingPlayer::seek);
+    connect(log_, &EventLog::eventClicked, player_, &TeachingPlayer::seekToEvent);
+    connect(panel_, &ParameterPanel::paramsChanged, this, [this](const TeachingParams& p) {
+        presetId_.clear();
+        rerun(p);
+    });
+    connect(marker_, &SurfaceMarker::pointPicked, this, &TeachingView::showPoint);
+    auto* space = new QShortcut(QKeySequence(Qt::Key_Space), this, nullptr, nullptr,
+                                Qt::WidgetWithChildrenShortcut);
+    connect(space, &QShortcut::activated, player_, &TeachingPlayer::togglePlay);
+    auto* next = new QShortcut(QKeySequence(Qt::Key_N), this, nullptr, nullptr,
+                               Qt::WidgetWithChildrenShortcut);
+    connect(next, &QShortcut::activated, player_, &TeachingPlayer::stepToNextEvent);
+    auto* prev = new QShortcut(QKeySequence(Qt::Key_B), this, nullptr, nullptr,
+                               Qt::WidgetWithChildrenShortcut);
+    connect(prev, &QShortcut::activated, player_, &TeachingPlayer::stepToPreviousEvent);
+    applyPreset(QStringLiteral("fig29"));
+}
+
+TeachingView::~TeachingView() = default;
+
+QWidget* TeachingView::buildTransport() {
+    auto* bar = new QWidget(this);
+    auto* h = new QHBoxLayout(bar);
+    h->setContentsMargins(0, 0, 0, 0);
+    auto tool = [&](QStyle::StandardPixmap icon, const QString& tip, auto slot) {
+        auto* b = new QToolButton(bar);
+        b->setIcon(style()->standardIcon(icon));
+        b->setToolTip(tip);
+        b->setMinimumWidth(34);
+        connect(b, &QToolButton::clicked, player_, slot);
+        h->addWidget(b);
+        return b;
+    };
+    tool(QStyle::SP_MediaSkipBackward, tr("Back to the start"), &TeachingPlayer::rewind);
+    tool(QStyle::SP_MediaSeekBackward, tr("Previous event (B)"),
+         &TeachingPlayer::stepToPreviousEvent);
+    playButton_ =
+        tool(QStyle::SP_MediaPlay, tr("Play / pause (space)"), &TeachingPlayer::togglePlay);
+    tool(QStyle::SP_MediaSeekForward, tr("Next event (N)"), &TeachingPlayer::stepToNextEvent);
+    connect(player_, &TeachingPlayer::playingChanged, this, [this](bool on) {
+        playButton_->setIcon(
+            style()->standardIcon(on ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    });
+    scrub_ = new QSlider(Qt::Horizontal, bar);
+    scrub_->setRange(0, kScrubSteps);
+    scrub_->setToolTip(tr("Scrub through the run"));
+    connect(scrub_, &QSlider::valueChanged, this,
+            [this](int v) { player_->seek(run_->displayEnd() * v / kScrubSteps); });
+    h->addWidget(scrub_, 1);
+    timeLabel_ = new QLabel(bar);
+    timeLabel_->setMinimumWidth(170);
+    h->addWidget(timeLabel_);
+    speed_ = new QComboBox(bar);
+    for (double s : kSpeeds)
+        speed_->addItem(QStringLiteral("%1×").arg(s), s);
+    speed_->setCurrentIndex(3);
+    speed_->setToolTip(tr("Speed: 1× is real time for this wall (τ advances 1/t* per second)"));
+    connect(speed_, &QComboBox::currentIndexChanged, this,
+            [this](int i) { player_->setSpeed(speed_->itemData(i).toDouble()); });
+    connect(player_, &TeachingPlayer::speedChanged, this, [this](double s) {
+        const QSignalBlocker block(speed_);
+        int best = 0;
+        for (int i = 0; i < speed_->count(); ++i)
+            if (std::abs(speed_->itemData(i).toDouble() - s) <
+                std::abs(speed_->itemData(best).toDouble() - s))
+                best = i;
+        speed_->setCurrentIndex(best);
+    });
+    h->addWidget(speed_);
+    return bar;
+}
+
+QWidget* TeachingView::buildSidePanel() {
+    auto* side = new QWidget(this);
+    side->setFixedWidth(350);
+    auto* v = new QVBoxLayout(side);
+    v->setContentsMargins(0, 0, 0, 0);
+    presets_ = new QComboBox(side);
+    presets_->addItem(tr("(your own settings)"), QString());
+    for (const FigurePreset& p : figurePresets())
+        presets_->addItem(p.title, p.id);
+    presets_->setToolTip(tr("Reproduce a figure of Furgerson (1980) in one click"));
+    connect(presets_, &QComboBox::activated, this, [this](int i) {
+        const QString id = presets_->itemData(i).toString();
+        if (!id.isEmpty()) applyPreset(id);
+    });
+    v->addWidget(presets_);
+    caption_ = new QLabel(side);
+    caption_->setWordWrap(true);
+    caption_->setStyleSheet(QStringLiteral("color: #555;"));
+    v->addWidget(caption_);
+    v->addWidget(panel_);
+    outcome_ = new QLabel(side);
+    outcome_->setWordWrap(true);
+    outcome_->setTextFormat(Qt::RichText);
+    v->addWidget(outcome_);
+    marker_->setMinimumHeight(230);
+    v->addWidget(marker_);
+    v->addWidget(log_, 1);
+    auto* exports = new QHBoxLayout;
+    auto* frame = new QPushButton(tr("Save frame…"), side);
+    frame->setToolTip(tr("The current frame as PNG or SVG"));
+    connect(frame, &QPushButton::clicked, this, &TeachingView::exportFrameDialog);
+    auto* seq = new QPushButton(tr("Save run as PNGs…"), side);
+    seq->setToolTip(tr("Every frame of the run at 25 frames per second and the current speed"));
+    connect(seq, &QPushButton::clicked, this, &TeachingView::exportSequenceDialog);
+    exports->addWidget(frame);
+    exports->addWidget(seq);
+    v->addLayout(exports);
+    return side;
+}
+
+TeachingParams TeachingView::params() const {
+    return run_->params();
+}
+
+DisplayState TeachingView::displayedState() const {
+    return animation_->scene().frame.state;
+}
+
+void TeachingView::setParams(const TeachingParams& p) {
+    panel_->setParams(p);
+    presetId_.clear();
+    rerun(p);
+}
+
+void TeachingView::showPoint(double amplitude, double frequencyHz) {
+    TeachingParams p = run_->params();
+    p.amplitude = amplitude;
+    p.frequencyHz = frequencyHz;
+    setParams(p);
+}
+
+bool TeachingView::applyPreset(const QString& id) {
+    const FigurePreset* preset = findFigurePreset(id);
+    if (!preset) return false;
+    presetId_ = id;
+    mapMode_ = preset->mode;
+    mapRange_ = preset->range;
+    caption_->setText(preset->caption);
+    panel_->setParams(preset->params);
+    rerun(preset->params);
+    player_->rewind();
+    emit presetApplied(id);
+    return true;
+}
+
+void TeachingView::rerun(const TeachingParams& p) {
+    run_ = std::make_unique<TeachingRun>(p);
+    traces_->setRun(run_.get());
+    log_->setEvents(run_->events(), run_->tstar());
+    marker_->setContext(p, mapRange_, mapMode_);
+    {
+        const QSignalBlocker block(presets_);
+        presets_->setCurrentIndex(std::max(0, presets_->findData(presetId_)));
+    }
+    if (presetId_.isEmpty()) caption_->clear();
+    updateOutcome();
+    player_->setRun(run_->eventTimes(), run_->displayEnd(), run_->tstar()); // shows the frame
+    emit runChanged();
+    emit paramsChanged(p);
+}
+
+void TeachingView::showFrame(double tau) {
+    const TeachingFrame f = run_->frameAt(tau);
+    animation_->setScene(SlabScene{f, run_->params(), run_->tstar(), run_->displayEnd()});
+    traces_->setCursor(tau);
+    log_->setCurrent(f.eventIndex);
+    {
+        const QSignalBlocker block(scrub_);
+        const double end = run_->displayEnd();
+        scrub_->setValue(end > 0 ? static_cast<int>(std::lround(tau / end * kScrubSteps)) : 0);
+    }
+    timeLabel_->setText(QStringLiteral("τ %1 / %2   t %3 s")
+                            .arg(tau, 0, 'f', 2)
+                            .arg(run_->displayEnd(), 0, 'f', 1)
+                            .arg(tau * run_->tstar(), 0, 'f', 2));
+    emit frameChanged(tau);
+}
+
+void TeachingView::updateOutcome() {
+    const TeachingRun& r = *run_;
+    if (!r.error().empty()) {
+        outcome_->setText(QStringLiteral("<span style='color:#c0392b'>%1</span>")
+                              .arg(QString::fromStdString(r.error()).toHtmlEscaped()));
+        return;
+    }
+    const SlabResult& s = r.result();
+    const QString timing =
+        tr("%1 events, run %2 ms").arg(s.events.size()).arg(r.runSeconds() * 1e3, 0, 'f', 2);
+    if (s.outcome == Outcome::Collapsed)
+        outcome_->setText(tr("<b style='color:%1'>Collapses</b> at τc = %2 (t = %3 s): γc = "
+                             "%4<br>%5 slip intervals; %6")
+                              .arg(stateColor(DisplayState::Collapse).name())
+                              .arg(s.tauC, 0, 'f', 2)
+                              .arg(s.tauC * r.tstar(), 0, 'f', 2)
+                              .arg(r.gammaC(), 0, 'f', 3)
+                              .arg(s.slipIntervals)
+                              .arg(timing));
+    else
+        outcome_->setText(tr("<b style='color:%1'>Stable</b>: max |δ| = %2, residual δ = %3<br>%4 "
+                             "slip intervals; %5")
+                              .arg(stateColor(DisplayState::Stable).name())
+                              .arg(s.maxAbsDelta, 0, 'f', 3)
+                              .arg(s.residualDelta, 0, 'f', 3)
+                              .arg(s.slipIntervals)
+                              .arg(timing));
+}
+
+QString TeachingView::exportFramePng(const QString& path, QSize size) const {
+    return saveFramePng(path, *run_, player_->tau(), size);
+}
+
+QString TeachingView::exportFrameSvg(const QString& path, QSize size) const {
+    return saveFrameSvg(path, *run_, player_->tau(), size);
+}
+
+int TeachingView::exportSequence(const QString& directory, double framesPerSecond, QSize size,
+                                 QString* error) {
+    SequenceOptions o;
+    o.framesPerSecond = framesPerSecond;
+    o.speed = player_->speed();
+    o.size = size;
+    const SequenceResult r = saveFrameSequence(directory, *run_, o);
+    if (error) *error = r.error;
+    return r.error.isEmpty() ? r.frames : 0;
+}
+
+void TeachingView::exportFrameDialog() {
+    QString filter;
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Save frame"), QStringLiteral("teaching-frame.png"),
+                                     tr("PNG image (*.png);;SVG drawing (*.svg)"), &filter);
+    if (path.isEmpty()) return;
+    const bool svg = path.endsWith(QStringLiteral(".svg"), Qt::CaseInsensitive) ||
+                     filter.contains(QStringLiteral("svg"));
+    const QString err = svg ? exportFrameSvg(path) : exportFramePng(path);
+    if (!err.isEmpty()) QMessageBox::warning(this, tr("Save frame"), err);
+}
+
+void TeachingView::exportSequenceDialog() {
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Folder for the PNG sequence"));
+    if (dir.isEmpty()) return;
+    player_->pause();
+    QProgressDialog progress(tr("Writing frames…"), tr("Cancel"), 0, 100, this);
+    progress.setWindowModality(Qt::WindowModal);
+    SequenceOptions o;
+    o.speed = player_->speed();
+    const SequenceResult r = saveFrameSequence(dir, *run_, o, [&](int done, int total) {
+        progress.setMaximum(total);
+        progress.setValue(done);
+        return !progress.wasCanceled();
+    });
+    if (!r.error.isEmpty()) QMessageBox::warning(this, tr("Save run"), r.error);
+}
+
+} // namespace kinstab::ui

@@ -1,0 +1,27 @@
+#pragma once
+// The traces under the drawing: a(tau) with the +-mu band and the envelope, and delta(tau)
+// coloured by state with the bearing limit; a cursor at the current tau. Already-played time
+// is drawn in full colour, what is still to come in grey.
+
+#include "ui/teaching/TeachingRun.h"
+
+#include <QRectF>
+
+class QPainter;
+
+namespace kinstab::ui {
+
+struct TraceLayout {
+    QRectF accelPlot; // plotting areas (inside the axes)
+    QRectF deltaPlot;
+    double tauEnd = 1;
+    double tauAt(double x) const; // screen x -> tau
+};
+
+TraceLayout traceLayout(const QRectF& area, const TeachingRun& run);
+void paintTraces(QPainter& p, const QRectF& area, const TeachingRun& run, double cursorTau);
+
+// A "nice" tick step (1, 2 or 5 times a power of ten) for about `count` ticks over `range`.
+double niceTickStep(double range, int count);
+
+} // namespace kinstab::ui
