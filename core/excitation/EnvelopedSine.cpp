@@ -25,15 +25,18 @@ double EnvelopedSine::envelopeAt(double tau) const {
     return std::exp(-p_ * tau) * -std::expm1(-(q_ - p_) * tau);
 }
 
-// e, e' and e'' from two exponentials: e^{-q tau} = e^{-p tau} (1 + expm1(-(q - p) tau)), and
-// e = -e^{-p tau} expm1(-(q - p) tau) keeps its digits when q ~ p (NUMERICS.md §4 row 12).
+// e, e' and e'' from two exponentials: e^{-q tau} = e^{-p tau} (1 + m), m = expm1(-(q - p) tau),
+// and e = -e^{-p tau} m keeps its digits when q ~ p (NUMERICS.md §4 row 12).
 void EnvelopedSine::envelopeAndSlope(double tau, double& e, double& de, double* d2e) const {
     const double ep = std::exp(-p_ * tau);
     const double m = std::expm1(-(q_ - p_) * tau);
-    const double eq = ep * (1.0 + m);
+    // e' = -p e^{-p tau} + q e^{-q tau} = e^{-p tau} (d + q m) and
+    // e'' = e^{-p tau} (-d (p + q) - q^2 m), d = q - p: the two terms of the textbook forms
+    // are nearly equal when q ~ p (at beta = alpha (1 + 1e-15) e' kept one digit).
+    const double d = q_ - p_;
     e = -ep * m;
-    de = -p_ * ep + q_ * eq;
-    if (d2e) *d2e = p_ * p_ * ep - q_ * q_ * eq;
+    de = ep * (d + q_ * m);
+    if (d2e) *d2e = ep * (-d * (p_ + q_) - q_ * q_ * m);
 }
 
 double EnvelopedSine::accel(double tau) const {
@@ -98,7 +101,8 @@ double EnvelopedSine::peakGuess(long k) const {
 Crossings EnvelopedSine::crossings(double level, double segmentStart, double segmentEnd) const {
     Crossings out;
     if (level == 0.0) return out;
-    const long k = std::lround(segmentStart / halfPeriod_);
+    // The half-period holding the segment (as segmentEnd() cuts them).
+    const long k = static_cast<long>(std::floor(segmentStart / halfPeriod_ + 1e-9));
     const double sign = (k % 2 == 0) ? 1.0 : -1.0;
     if ((level > 0.0) != (sign > 0.0)) return out;
     const double target = std::abs(level);
@@ -121,8 +125,12 @@ Crossings EnvelopedSine::crossings(double level, double segmentStart, double seg
     // First guesses: the envelope frozen at its value at m, |a| = level where
     // |sin(omega (tau - lo))| = level / (scale e(m)).
     const double offset = std::asin(std::min(1.0, target / (scale_ * envelopeAt(m)))) / omega_;
-    out.add(safeguardedNewton(fdf, lo, m, -target, peakValue - target, 200, lo + offset).x);
-    out.add(safeguardedNewton(fdf, m, hi, peakValue - target, -target, 200, hi - offset).x);
+    // Only the crossings inside the segment: a segment cut short (a duration cap) must not
+    // report the half-period's crossings beyond its end.
+    for (const double t :
+         {safeguardedNewton(fdf, lo, m, -target, peakValue - target, 200, lo + offset).x,
+          safeguardedNewton(fdf, m, hi, peakValue - target, -target, 200, hi - offset).x})
+        if (t > segmentStart && t < segmentEnd) out.add(t);
     return out;
 }
 

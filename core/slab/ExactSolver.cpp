@@ -108,7 +108,11 @@ SlabResult ExactRun::run() {
             return r_;
         }
         if (segStart >= end) {
-            if (s_ != 0) moveTo(end, displacementAt(end), velocityAt(end));
+            // The run ends at the cap, sticking or slipping.
+            if (s_ != 0)
+                moveTo(end, displacementAt(end), velocityAt(end));
+            else
+                t_ = end;
             event(EventKind::DurationCap, s_);
             finish(Outcome::Stable);
             return r_;

@@ -1,0 +1,79 @@
+#pragma once
+// Shared by the stress tests (tst_stress_*): a finite-and-bounded check for every result,
+// an excitation wrapper for the a -> -a metamorphic test, and independent integrals of a(tau)
+// by composite Gauss-Legendre (no closed forms).
+
+#include "core/excitation/Excitation1D.h"
+#include "core/slab/SlabTypes.h"
+
+#include <QtTest>
+#include <array>
+#include <cmath>
+
+namespace kinstab::testing {
+
+// Every run must end with a defined outcome, finite numbers and a bounded amount of work.
+inline void checkDefined(const SlabResult& r, long maxEvents = 1'000'000) {
+    QVERIFY2(r.outcome != Outcome::Failed, r.failure.c_str());
+    QVERIFY(std::isfinite(r.tauEnd));
+    QVERIFY(std::isfinite(r.residualDelta));
+    QVERIFY(std::isfinite(r.maxAbsDelta));
+    if (r.outcome == Outcome::Collapsed) QVERIFY(std::isfinite(r.tauC));
+    QVERIFY(r.work.events <= maxEvents);
+    for (const SlabEvent& e : r.events) {
+        QVERIFY(std::isfinite(e.tau));
+        QVERIFY(std::isfinite(e.delta));
+        QVERIFY(std::isfinite(e.velocity));
+    }
+}
+
+// a(tau) -> -a(tau): every answer must come out mirrored (NUMERICS.md §4, metamorphic tests).
+class NegatedExcitation final : public Excitation1D {
+public:
+    explicit NegatedExcitation(const Excitation1D& a) : a_(a) {}
+    double accel(double tau) const override { return -a_.accel(tau); }
+    double accelSlope(double tau) const override { return -a_.accelSlope(tau); }
+    double velocityChange(double t0, double t1) const override {
+        return -a_.velocityChange(t0, t1);
+    }
+    double displacementChange(double t0, double t1) const override {
+        return -a_.displacementChange(t0, t1);
+    }
+    double segmentEnd(double s) const override { return a_.segmentEnd(s); }
+    Crossings crossings(double level, double s0, double s1) const override {
+        return a_.crossings(-level, s0, s1);
+    }
+    double boundAfter(double tau) const override { return a_.boundAfter(tau); }
+    double boundOn(double lo, double hi) const override { return a_.boundOn(lo, hi); }
+    double peak() const override { return a_.peak(); }
+
+private:
+    const Excitation1D& a_;
+};
+
+// int_0^T a and int_0^T (T - s) a(s) ds by 10-point Gauss-Legendre on n equal pieces.
+struct Integrals {
+    double first = 0, second = 0;
+};
+inline Integrals integrateAccel(const Excitation1D& a, double T, int pieces) {
+    static constexpr std::array<double, 5> x = {0.1488743389816312, 0.4333953941292472,
+                                                0.6794095682990244, 0.8650633666889845,
+                                                0.9739065285171717};
+    static constexpr std::array<double, 5> w = {0.2955242247147529, 0.2692667193099963,
+                                                0.2190863625159820, 0.1494513491505806,
+                                                0.0666713443086881};
+    Integrals out;
+    for (int p = 0; p < pieces; ++p) {
+        const double lo = T * p / pieces, hi = T * (p + 1) / pieces;
+        const double m = 0.5 * (lo + hi), r = 0.5 * (hi - lo);
+        for (std::size_t i = 0; i < x.size(); ++i)
+            for (double s : {m - r * x[i], m + r * x[i]}) {
+                const double as = a.accel(s);
+                out.first += r * w[i] * as;
+                out.second += r * w[i] * (T - s) * as;
+            }
+    }
+    return out;
+}
+
+} // namespace kinstab::testing
