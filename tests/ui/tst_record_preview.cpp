@@ -1,0 +1,133 @@
+// RecordPreview (ui): loads shipped records from the Qt resources, plots ground, |floor| with
+// its fitted envelope, and the normalized spectra; a broken file leaves a line-numbered
+// message and the previous record. Offscreen; saves a screenshot for inspection.
+
+#include "ui/RecordPreview.h"
+
+#include <QDir>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtCharts/QChart>
+#include <QtCharts/QLineSeries>
+#include <QtTest>
+
+using namespace kinstab;
+using kinstab::ui::RecordPreview;
+
+namespace {
+
+QLineSeries* seriesAt(QChart* c, int i) {
+    return qobject_cast<QLineSeries*>(c->series().value(i));
+}
+
+// Frequency of the largest point of a spectrum series.
+double peakFrequency(QLineSeries* s) {
+    QPointF best(0, -1);
+    for (const QPointF& p : s->points())
+        if (p.y() > best.y()) best = p;
+    return best.x();
+}
+
+} // namespace
+
+class TestRecordPreview : public QObject {
+    Q_OBJECT
+private slots:
+    void loadsResourceAndPlotsFloorMotion();
+    void floorFilterOffAndRetuned();
+    void brokenFileKeepsPreviousRecord();
+    void defaultVerticalIsNamed();
+    void decimationKeepsExtremes();
+    void screenshot();
+};
+
+void TestRecordPreview::loadsResourceAndPlotsFloorMotion() {
+    RecordPreview w;
+    QSignalSpy spy(&w, &RecordPreview::recordChanged);
+    QVERIFY2(w.loadFile(":/records/RSN77_SFERN_PUL164.AT2"), qPrintable(w.errorText()));
+    QCOMPARE(spy.count(), 1);
+    QCOMPARE(w.record()->size(), std::size_t(4172)); // SOURCES.md §1
+    QVERIFY(w.floorMotion().has_value());
+    QCOMPARE(w.groundChart()->series().size(), 1);
+    QVERIFY(seriesAt(w.groundChart(), 0)->count() <= 2 * 1500 + 4);
+    QCOMPARE(w.floorChart()->series().size(), 2); // |floor| and the envelope
+    QCOMPARE(w.spectrumChart()->series().size(), 2);
+    // Default filter T = 1 s, 2 %: the floor spectrum peaks at 1 Hz (paper Fig. 26).
+    const double df = 1.0 / (8192 * 0.01);
+    QVERIFY(std::abs(peakFrequency(seriesAt(w.spectrumChart(), 1)) - 1.0) <= df);
+    QVERIFY(w.envelope()->beta > w.envelope()->alpha);
+}
+
+void TestRecordPreview::floorFilterOffAndRetuned() {
+    RecordPreview w;
+    QVERIFY(w.loadFile(":/records/RSN77_SFERN_PUL164.AT2"));
+    w.setFloorFilter(std::nullopt);
+    QVERIFY(!w.floorMotion().has_value());
+    QCOMPARE(w.spectrumChart()->series().size(), 1);
+    QVERIFY(w.floorChart()->title().contains("floor filter off"));
+    w.setFloorFilter(FloorFilterParams{0.5, 0.05, std::nullopt});
+    QCOMPARE(w.floorFilter()->period, 0.5);
+    // The floor spectrum now peaks inside the oscillator's half-power band, 2 Hz (1 +- zeta).
+    QVERIFY(std::abs(peakFrequency(seriesAt(w.spectrumChart(), 1)) - 2.0) <= 0.05 * 2.0);
+}
+
+void TestRecordPreview::brokenFileKeepsPreviousRecord() {
+    RecordPreview w;
+    QVERIFY(w.loadFile(":/records/RSN68_SFERN_PEL-UP.AT2"));
+    QTemporaryDir dir;
+    const QString path = dir.filePath("broken.AT2");
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("PEER NGA STRONG MOTION DATABASE RECORD\nX, 1/1/2000, Y, 90\nACCELERATION TIME SERIES "
+            "IN UNITS OF G\n"
+            "NPTS= 4, DT= .01 SEC\n .1E-02 .2E-02 nan\n");
+    f.close();
+    QVERIFY(!w.loadFile(path));
+    QVERIFY2(w.errorText().contains("broken.AT2:5:"), qPrintable(w.errorText()));
+    QCOMPARE(w.record()->size(), std::size_t(7945));
+    QVERIFY(!w.loadFile(dir.filePath("missing.AT2")));
+    QVERIFY(w.errorText().contains("cannot open"));
+}
+
+void TestRecordPreview::defaultVerticalIsNamed() {
+    RecordPreview w;
+    QVERIFY(w.loadFile(RecordPreview::defaultVerticalRecord()));
+    QCOMPARE(QString::fromStdString(w.record()->component), QString("UP"));
+    QVERIFY(RecordPreview::defaultVerticalNote().contains("Pacoima Dam vertical"));
+}
+
+void TestRecordPreview::decimationKeepsExtremes() {
+    std::vector<double> y(42000);
+    for (std::size_t i = 0; i < y.size(); ++i)
+        y[i] = std::sin(0.01 * static_cast<double>(i)) * (i == 31234 ? 5.0 : 1.0);
+    const QList<QPointF> d = ui::decimatedSeries(y, 0.005, 1500);
+    QVERIFY(d.size() <= 2 * 1500 + 4);
+    double top = -1e9, bottom = 1e9;
+    for (const QPointF& p : d) {
+        top = std::max(top, p.y());
+        bottom = std::min(bottom, p.y());
+    }
+    QCOMPARE(top, *std::max_element(y.begin(), y.end()));
+    QCOMPARE(bottom, *std::min_element(y.begin(), y.end()));
+}
+
+void TestRecordPreview::screenshot() {
+    RecordPreview w;
+    QVERIFY(w.loadFile(":/records/RSN77_SFERN_PUL164.AT2"));
+    w.resize(1100, 950);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    const QString out =
+        qEnvironmentVariable("KINSTAB_SCREENSHOT_DIR", QDir::tempPath()) + "/record_preview.png";
+    const QImage image = w.grab().toImage();
+    QVERIFY(image.save(out));
+    // Not blank: the charts drew lines in more than one colour.
+    QSet<QRgb> colours;
+    for (int y = 0; y < image.height(); y += 7)
+        for (int x = 0; x < image.width(); x += 7)
+            colours.insert(image.pixel(x, y));
+    QVERIFY(colours.size() > 20);
+}
+
+QTEST_MAIN(TestRecordPreview)
+#include "tst_record_preview.moc"

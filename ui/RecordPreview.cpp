@@ -1,0 +1,324 @@
+#include "ui/RecordPreview.h"
+
+#include "core/excitation/FourierSpectrum.h"
+
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QVBoxLayout>
+#include <QtCharts/QChart>
+#include <QtCharts/QChartView>
+#include <QtCharts/QLineSeries>
+#include <QtCharts/QValueAxis>
+
+#include <algorithm>
+#include <cmath>
+
+namespace kinstab::ui {
+
+namespace {
+
+constexpr int kBuckets = 1500;
+
+QChartView* makeView(const QString& title, const QString& xTitle, const QString& yTitle) {
+    auto* chart = new QChart;
+    chart->setTitle(title);
+    chart->setAnimationOptions(QChart::NoAnimation);
+    chart->legend()->setAlignment(Qt::AlignTop);
+    auto* x = new QValueAxis;
+    x->setTitleText(xTitle);
+    auto* y = new QValueAxis;
+    y->setTitleText(yTitle);
+    chart->addAxis(x, Qt::AlignBottom);
+    chart->addAxis(y, Qt::AlignLeft);
+    auto* view = new QChartView(chart);
+    view->setRenderHint(QPainter::Antialiasing);
+    view->setMinimumHeight(180);
+    return view;
+}
+
+QValueAxis* axis(QChart* chart, Qt::Orientation o) {
+    return qobject_cast<QValueAxis*>(chart->axes(o).value(0));
+}
+
+void addSeries(QChart* chart, const QString& name, const QList<QPointF>& points,
+               const QColor& color) {
+    auto* s = new QLineSeries;
+    s->setName(name);
+    s->replace(points); // one replace: QT-NOTES §2.4
+    s->setPen(QPen(color, 1.2));
+    chart->addSeries(s);
+    s->attachAxis(axis(chart, Qt::Horizontal));
+    s->attachAxis(axis(chart, Qt::Vertical));
+}
+
+// Round tick values (0, 10, 20 s rather than 0, 10.4, 20.9 s) on the data's own range: ticks at
+// multiples of 1, 2 or 5 x 10^k, about six of them.
+void niceTicks(QValueAxis* a) {
+    const double span = a->max() - a->min();
+    if (!(span > 0.0)) return;
+    const double raw = span / 6.0, decade = std::pow(10.0, std::floor(std::log10(raw)));
+    const double step = raw / decade < 1.5   ? decade
+                        : raw / decade < 3.5 ? 2 * decade
+                        : raw / decade < 7.5 ? 5 * decade
+                                             : 10 * decade;
+    a->setTickType(QValueAxis::TicksDynamic);
+    a->setTickAnchor(0.0);
+    a->setTickInterval(step);
+    a->setLabelFormat(step >= 1.0 ? "%.0f" : step >= 0.1 ? "%.1f" : "%.2f");
+}
+
+void niceAxes(QChart* chart) {
+    niceTicks(axis(chart, Qt::Horizontal));
+    niceTicks(axis(chart, Qt::Vertical));
+}
+
+void clearSeries(QChart* chart) {
+    const auto series = chart->series();
+    for (QAbstractSeries* s : series) {
+        chart->removeSeries(s);
+        delete s;
+    }
+}
+
+} // namespace
+
+QList<QPointF> decimatedSeries(const std::vector<double>& y, double dt, int buckets,
+                               bool absolute) {
+    QList<QPointF> out;
+    const std::size_t n = y.size();
+    const std::size_t per =
+        std::max<std::size_t>(1, (n + static_cast<std::size_t>(std::max(buckets, 1)) - 1) /
+                                     static_cast<std::size_t>(std::max(buckets, 1)));
+    const auto value = [&](std::size_t i) { return absolute ? std::abs(y[i]) : y[i]; };
+    for (std::size_t b = 0; b < n; b += per) {
+        const std::size_t e = std::min(n, b + per);
+        std::size_t lo = b, hi = b;
+        for (std::size_t i = b; i < e; ++i) {
+            if (value(i) < value(lo)) lo = i;
+            if (value(i) > value(hi)) hi = i;
+        }
+        for (std::size_t i : {std::min(lo, hi), std::max(lo, hi)}) {
+            out.append(QPointF(dt * static_cast<double>(i), value(i)));
+            if (lo == hi) break;
+        }
+    }
+    return out;
+}
+
+RecordPreview::RecordPreview(QWidget* parent) : QWidget(parent) {
+    info_ = new QLabel(tr("No record loaded."));
+    info_->setWordWrap(true);
+    info_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    filterOn_ = new QCheckBox(tr("Floor filter"));
+    filterOn_->setChecked(true);
+    filterOn_->setToolTip(
+        tr("Absolute acceleration of a damped linear oscillator under the record (paper eq. 6)"));
+    period_ = new QDoubleSpinBox;
+    period_->setRange(0.02, 20.0);
+    period_->setDecimals(3);
+    period_->setValue(1.0);
+    period_->setSuffix(tr(" s"));
+    period_->setToolTip(tr("Fundamental period T of the building"));
+    damping_ = new QDoubleSpinBox;
+    damping_->setRange(0.0, 99.0);
+    damping_->setDecimals(1);
+    damping_->setValue(2.0);
+    damping_->setSuffix(tr(" %"));
+    damping_->setToolTip(tr("Damping, per cent of critical (the paper uses 2 %)"));
+    auto* controls = new QHBoxLayout;
+    controls->addWidget(filterOn_);
+    auto* form = new QFormLayout;
+    form->addRow(tr("Period T"), period_);
+    controls->addLayout(form);
+    auto* form2 = new QFormLayout;
+    form2->addRow(tr("Damping"), damping_);
+    controls->addLayout(form2);
+    controls->addStretch();
+
+    groundView_ = makeView(tr("Ground acceleration"), tr("t (s)"), tr("a (g)"));
+    floorView_ = makeView(tr("|Floor acceleration| and fitted envelope (Fig. 27)"), tr("t (s)"),
+                          tr("|a| (g)"));
+    spectrumView_ = makeView(tr("Fourier amplitude spectra, normalized (Figs. 25-26)"),
+                             tr("f (Hz)"), tr("|X| / max"));
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(info_);
+    layout->addLayout(controls);
+    layout->addWidget(groundView_, 1);
+    layout->addWidget(floorView_, 1);
+    layout->addWidget(spectrumView_, 1);
+
+    const auto changed = [this] { rebuild(); };
+    connect(filterOn_, &QCheckBox::toggled, this, changed);
+    connect(period_, &QDoubleSpinBox::valueChanged, this, changed);
+    connect(damping_, &QDoubleSpinBox::valueChanged, this, changed);
+}
+
+QChart* RecordPreview::groundChart() const {
+    return groundView_->chart();
+}
+QChart* RecordPreview::floorChart() const {
+    return floorView_->chart();
+}
+QChart* RecordPreview::spectrumChart() const {
+    return spectrumView_->chart();
+}
+
+QString RecordPreview::defaultVerticalRecord() {
+    return QStringLiteral(":/records/RSN68_SFERN_PEL-UP.AT2");
+}
+
+QString RecordPreview::defaultVerticalNote() {
+    return tr(
+        "Vertical motion: 1971 San Fernando, LA Hollywood Storage FF, UP (NGA RSN68) stands in for "
+        "the paper's Pacoima Dam vertical, which is not publicly available.");
+}
+
+bool RecordPreview::loadFile(const QString& path, const RecordReadOptions& options) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        error_ = tr("%1: cannot open the file").arg(path);
+        info_->setText(error_);
+        return false;
+    }
+    try {
+        setRecord(parseRecord(RecordText(f.readAll().toStdString(), path.toStdString()), options));
+        return true;
+    } catch (const RecordError& e) {
+        error_ = QString::fromStdString(e.what());
+        info_->setText(tr("Cannot read the record: %1").arg(error_));
+        return false;
+    }
+}
+
+void RecordPreview::setRecord(const Accelerogram& ground) {
+    validateAccelerogram(ground);
+    ground_ = ground;
+    error_.clear();
+    rebuild();
+}
+
+std::optional<FloorFilterParams> RecordPreview::floorFilter() const {
+    if (!filterOn_->isChecked()) return std::nullopt;
+    return FloorFilterParams{period_->value(), damping_->value() / 100.0, std::nullopt};
+}
+
+void RecordPreview::setFloorFilter(std::optional<FloorFilterParams> filter) {
+    const QSignalBlocker b1(filterOn_), b2(period_), b3(damping_);
+    filterOn_->setChecked(filter.has_value());
+    if (filter) {
+        period_->setValue(filter->period);
+        damping_->setValue(filter->damping * 100.0);
+    }
+    rebuild();
+}
+
+void RecordPreview::rebuild() {
+    period_->setEnabled(filterOn_->isChecked());
+    damping_->setEnabled(filterOn_->isChecked());
+    if (!ground_) return;
+    const std::optional<FloorFilterParams> filter = floorFilter();
+    floor_.reset();
+    if (filter && validateFloorFilter(*filter).empty())
+        floor_ = kinstab::floorMotion(*ground_, *filter);
+    fit_.reset();
+    try {
+        fit_ = fitEnvelope(floor_ ? *floor_ : *ground_);
+    } catch (const std::invalid_argument&) {
+    }
+    plotGround();
+    plotFloor();
+    plotSpectra();
+    showInfo();
+    emit recordChanged();
+}
+
+void RecordPreview::plotGround() {
+    QChart* c = groundChart();
+    clearSeries(c);
+    addSeries(c, tr("ground"), decimatedSeries(ground_->samples, ground_->dt, kBuckets),
+              QColor(40, 90, 160));
+    const double peak = std::abs(ground_->peak().value);
+    axis(c, Qt::Horizontal)->setRange(0.0, ground_->duration());
+    axis(c, Qt::Vertical)->setRange(-1.1 * peak, 1.1 * peak);
+    niceAxes(c);
+    c->legend()->hide();
+}
+
+void RecordPreview::plotFloor() {
+    QChart* c = floorChart();
+    clearSeries(c);
+    const Accelerogram& m = floor_ ? *floor_ : *ground_;
+    c->setTitle(floor_ ? tr("|Floor acceleration| and fitted envelope (Fig. 27)")
+                       : tr("|Ground acceleration| and fitted envelope (floor filter off)"));
+    addSeries(c, floor_ ? tr("|floor|") : tr("|ground|"),
+              decimatedSeries(m.samples, m.dt, kBuckets, true), QColor(120, 120, 120));
+    if (fit_) {
+        QList<QPointF> env;
+        for (int i = 0; i <= 400; ++i) {
+            const double t = m.duration() * i / 400.0;
+            env.append(QPointF(t, fit_->at(t)));
+        }
+        addSeries(
+            c, tr("envelope α=%1 β=%2 /s").arg(fit_->alpha, 0, 'f', 3).arg(fit_->beta, 0, 'f', 3),
+            env, QColor(200, 40, 40));
+    }
+    axis(c, Qt::Horizontal)->setRange(0.0, m.duration());
+    axis(c, Qt::Vertical)->setRange(0.0, 1.1 * std::abs(m.peak().value));
+    niceAxes(c);
+}
+
+void RecordPreview::plotSpectra() {
+    QChart* c = spectrumChart();
+    clearSeries(c);
+    const double fMax = std::min(15.0, 0.5 / ground_->dt);
+    const auto points = [fMax](const AmplitudeSpectrum& s) {
+        QList<QPointF> p;
+        for (std::size_t k = 0; k < s.frequency.size() && s.frequency[k] <= fMax; ++k)
+            p.append(QPointF(s.frequency[k], s.amplitude[k]));
+        return p;
+    };
+    addSeries(c, tr("ground"), points(amplitudeSpectrum(ground_->samples, ground_->dt)),
+              QColor(40, 90, 160));
+    if (floor_) {
+        // Same length as the ground record, so both spectra share their frequency bins.
+        const std::vector<double> same(
+            floor_->samples.begin(), floor_->samples.begin() + static_cast<long>(ground_->size()));
+        addSeries(c, tr("floor"), points(amplitudeSpectrum(same, ground_->dt)),
+                  QColor(200, 40, 40));
+    }
+    axis(c, Qt::Horizontal)->setRange(0.0, fMax);
+    axis(c, Qt::Vertical)->setRange(0.0, 1.05);
+    niceAxes(c);
+}
+
+void RecordPreview::showInfo() {
+    const Accelerogram& a = *ground_;
+    const SignedPeak p = a.peak();
+    QString text =
+        tr("<b>%1</b><br>%2 — %3 · %4 points at %5 s (%6 s) · peak %7 g at %8 s · file units %9")
+            .arg(QString::fromStdString(a.name).toHtmlEscaped(),
+                 QString::fromStdString(a.station).toHtmlEscaped(),
+                 QString::fromStdString(a.component).toHtmlEscaped())
+            .arg(a.size())
+            .arg(a.dt)
+            .arg(a.duration(), 0, 'f', 2)
+            .arg(p.value, 0, 'f', 4)
+            .arg(p.time, 0, 'f', 2)
+            .arg(QString::fromStdString(accelUnitName(a.fileUnit)));
+    if (floor_) text += tr("<br>Floor motion peak %1 g").arg(floor_->peak().value, 0, 'f', 4);
+    if (fit_)
+        text += tr(" · envelope fit α = %1 /s, β = %2 /s, peak %3 g at %4 s")
+                    .arg(fit_->alpha, 0, 'f', 4)
+                    .arg(fit_->beta, 0, 'f', 4)
+                    .arg(fit_->peak(), 0, 'f', 3)
+                    .arg(fit_->peakTime(), 0, 'f', 2);
+    if (QString::fromStdString(a.sourceFile).endsWith("RSN68_SFERN_PEL-UP.AT2"))
+        text += "<br><i>" + defaultVerticalNote() + "</i>";
+    info_->setText(text);
+}
+
+} // namespace kinstab::ui

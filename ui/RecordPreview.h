@@ -1,0 +1,73 @@
+#pragma once
+// A preview of an accelerogram for record import (SPEC §7, §10; paper Figs. 25-27): the ground
+// record, the floor motion through the floor filter with |floor acc| and its fitted envelope,
+// and the normalized Fourier amplitude spectra of both. Standalone: the main window docks it.
+
+#include "core/excitation/EnvelopeFit.h"
+#include "core/excitation/FloorFilter.h"
+#include "core/io/RecordReader.h"
+
+#include <QWidget>
+#include <optional>
+
+class QChart;
+class QChartView;
+class QCheckBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineSeries;
+
+namespace kinstab::ui {
+
+class RecordPreview : public QWidget {
+    Q_OBJECT
+public:
+    explicit RecordPreview(QWidget* parent = nullptr);
+
+    // Reads a file (also ":/records/..." resources); false with errorText() set when it is broken.
+    bool loadFile(const QString& path, const RecordReadOptions& options = {});
+    void setRecord(const Accelerogram& ground);
+    void setFloorFilter(std::optional<FloorFilterParams> filter);
+
+    const std::optional<Accelerogram>& record() const { return ground_; }
+    const std::optional<Accelerogram>& floorMotion() const { return floor_; }
+    std::optional<FloorFilterParams> floorFilter() const;
+    const std::optional<EnvelopeFit>& envelope() const { return fit_; }
+    QString errorText() const { return error_; }
+
+    // The shipped stand-in for the paper's Pacoima Dam vertical, and the note the UI shows with it.
+    static QString defaultVerticalRecord();
+    static QString defaultVerticalNote();
+
+    QChart* groundChart() const;
+    QChart* floorChart() const;
+    QChart* spectrumChart() const;
+
+signals:
+    void recordChanged();
+
+private:
+    void rebuild();
+    void plotGround();
+    void plotFloor();
+    void plotSpectra();
+    void showInfo();
+
+    std::optional<Accelerogram> ground_, floor_;
+    std::optional<EnvelopeFit> fit_;
+    QString error_;
+    QLabel* info_ = nullptr;
+    QCheckBox* filterOn_ = nullptr;
+    QDoubleSpinBox* period_ = nullptr;
+    QDoubleSpinBox* damping_ = nullptr;
+    QChartView* groundView_ = nullptr;
+    QChartView* floorView_ = nullptr;
+    QChartView* spectrumView_ = nullptr;
+};
+
+// Min/max decimation of a sampled series to about `buckets` pairs of points: keeps every peak
+// visible while a chart draws a 42 000-point record quickly.
+QList<QPointF> decimatedSeries(const std::vector<double>& y, double dt, int buckets,
+                               bool absolute = false);
+
+} // namespace kinstab::ui
