@@ -14,6 +14,8 @@ int runSurface(const ArgList& args);
 int runCritical(const ArgList& args);
 int runBench(const ArgList& args);
 int runPrecision(const ArgList& args);
+int runCodes(const ArgList& args);
+int runCheck(const ArgList& args);
 int runRecord(const ArgList& args);
 
 class Args;

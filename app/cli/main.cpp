@@ -21,6 +21,8 @@ commands:
   bench     [--repeats N] [--threads N] [--amplitudes LIST --frequencies LIST] [model flags]
   simulate  --record FILE [--amplitude PEAK_G] [--floor-period T [--damping Z]] [model flags]
   record    --file FILE [--floor-period T [--damping Z]] [--peaks N] [--spectrum-csv FILE]
+  codes     --project FILE | building flags + code flags
+  check     --project FILE
 
 LIST: comma-separated numbers or start:stop:step.
 model flags: --model slab1d --envelope fast|moderate|slow | --alpha X --beta Y
@@ -28,6 +30,16 @@ model flags: --model slab1d --envelope fast|moderate|slow | --alpha X --beta Y
              --scale tau_max|tau_rise|tau_dur|one  --solver exact|paper [--paper-steps N]
 record flags: --record-format auto|at2|cosmos|csmip|values|time-accel  --record-dt S
               --record-unit g|m/s2|cm/s2|ft/s2|in/s2  --record-channel N|NAME
+building flags: --stories N --height-ft H|--height-m H --dimension-ft D|--dimension-m D [--period T]
+             [--system dual_frame_wall|steel_moment_frame|concrete_moment_frame|steel_eccentric_braced|
+              shear_wall|braced_frame|other] [--occupancy standard|assembly|hazardous|essential]
+             [--weights LIST] [--story-heights LIST]   (period: each code's formula when absent)
+code flags:  UBC 1976  --zone 0-4 --k-factor K [--importance I] [--site-period TS]
+             ATC 3-06  --av AV --aa AA | --map-area 1-7; --soil S1|S2|S3 --r R
+             UBC 1997  --ubc97-zone 1|2A|2B|3|4 --ubc97-r R [--ubc97-soil SA..SE] [--na --nv] [--ubc97-importance I]
+             ASCE 7-22 --sds S --sd1 S --tl T --asce-r R [--s1 S] [--site-class C] [--risk-category 1-4] [--ie I]
+             EC8       --ag AGR --ground A-E --q Q [--spectrum-type 1|2] [--importance-class 1-4]
+                       [--gamma-i G] [--beta B] [--irregular]
 )";
 
 } // namespace
@@ -37,6 +49,7 @@ int main(int argc, char** argv) {
     const std::map<std::string, std::function<int(const ArgList&)>> commands = {
         {"simulate", runSimulate}, {"surface", runSurface},     {"critical", runCritical},
         {"bench", runBench},       {"precision", runPrecision}, {"record", runRecord},
+        {"codes", runCodes},       {"check", runCheck},
     };
     if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
         std::cout << kUsage;

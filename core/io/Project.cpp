@@ -26,7 +26,6 @@ Project paperExampleProject() {
     p.codes.ec8 = Eurocode8Inputs{};
     p.grid.amplitudes = linspaceStep(0.70, 1.15, 0.05);
     p.grid.frequencies = linspaceStep(0.5, 1.125, 0.125);
-    p.critical.tolerance = 1e-4;
     return p;
 }
 

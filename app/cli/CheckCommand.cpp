@@ -1,0 +1,48 @@
+#include "app/cli/Args.h"
+#include "app/cli/BuildingFlags.h"
+#include "app/cli/Commands.h"
+#include "app/cli/ModelFlags.h"
+#include "core/codes/DesignCheck.h"
+#include "core/io/CodesJson.h"
+#include "core/io/Project.h"
+
+#include <chrono>
+#include <iostream>
+
+namespace kinstab::cli {
+
+// The design check of chapter V for a project: per code the top-floor ratio, A_crit(1/T),
+// the margin and the verdict.
+int runCheck(const ArgList& argv) {
+    const Args args(argv, {"project"});
+    if (!args.has("project")) throw UsageError("missing required flag --project");
+    const Project p = projectFromFlag(args);
+    if (p.codes.empty())
+        throw UsageError("--project " + args.text("project") + ": the project selects no code");
+    if (p.model != "slab1d")
+        throw UsageError("--project " + args.text("project") + ": model '" + p.model +
+                         "': the design check uses the slab1d model");
+    const auto start = std::chrono::steady_clock::now();
+    nlohmann::json j;
+    try {
+        const std::vector<CodeResult> codes = kinstab::runCodes(p.building, p.codes);
+        j = designCheckJson(designCheck(codes, p.slab, p.critical));
+    } catch (const InputError& e) {
+        throw inputUsageError(e);
+    }
+    j["project"] = p.name;
+    j["model"] = "slab1d";
+    j["solver"] = solverName(p.slab.solver);
+    j["envelope"] = envelopeJson(p.slab);
+    j["mu"] = p.slab.slab.mu;
+    j["tstar"] = p.slab.tstar;
+    j["search"] = {{"max_amplitude", p.critical.to},
+                   {"scan_step", p.critical.scanStep},
+                   {"tolerance", p.critical.tolerance}};
+    j["wall_time_s"] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cout << j.dump(2) << "\n";
+    return 0;
+}
+
+} // namespace kinstab::cli
