@@ -27,16 +27,10 @@ std::optional<NptsLine> findNptsLine(const RecordText& text) {
     return std::nullopt;
 }
 
-std::string lower(std::string s) {
-    for (char& c : s)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
-
 // "ACCELERATION TIME SERIES IN UNITS OF G", "The units are (g)"; g when nothing is said.
 AccelUnit headerUnit(const RecordText& text, std::size_t nptsLine) {
     for (std::size_t i = 0; i < nptsLine; ++i) {
-        const std::string l = lower(text.line(i));
+        const std::string l = lowerCase(text.line(i));
         const std::size_t at = l.find("units");
         if (at == std::string::npos) continue;
         const std::string rest = l.substr(at);
@@ -51,23 +45,17 @@ AccelUnit headerUnit(const RecordText& text, std::size_t nptsLine) {
     return AccelUnit::G;
 }
 
-std::string trim(const std::string& s) {
-    const std::size_t a = s.find_first_not_of(" \t");
-    if (a == std::string::npos) return {};
-    return s.substr(a, s.find_last_not_of(" \t") - a + 1);
-}
-
 // Line 2: "San Fernando, 2/9/1971, Pacoima Dam (upper left abut), 164": station is the
 // next-to-last comma field, component the last.
 void describe(Accelerogram& a, const RecordText& text) {
     if (text.size() < 2) return;
-    a.name = trim(text.line(1));
+    a.name = trimmed(text.line(1));
     std::vector<std::string> fields;
     std::size_t start = 0;
     const std::string& l = text.line(1);
     while (true) {
         const std::size_t comma = l.find(',', start);
-        fields.push_back(trim(l.substr(start, comma - start)));
+        fields.push_back(trimmed(l.substr(start, comma - start)));
         if (comma == std::string::npos) break;
         start = comma + 1;
     }

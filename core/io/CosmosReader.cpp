@@ -9,12 +9,6 @@ namespace {
 
 constexpr double kUnknown = -999.0; // COSMOS "value unknown"
 
-std::string trim(const std::string& s) {
-    const std::size_t a = s.find_first_not_of(" \t");
-    if (a == std::string::npos) return {};
-    return s.substr(a, s.find_last_not_of(" \t") - a + 1);
-}
-
 // "100 Integer-header values follow on 10 lines, Format= (10I8)": count and line count.
 std::pair<std::size_t, std::size_t> blockSize(const RecordText& text, std::size_t i,
                                               const char* what) {
@@ -43,15 +37,15 @@ std::vector<double> realHeader(const RecordText& text, std::size_t& i) {
 void describe(Accelerogram& a, const RecordText& text, std::size_t textLines) {
     static const std::regex chan(R"(Chan\s+(\d+)\s*:\s*(.*?)\s*\(.*Location:\s*(.*))",
                                  std::regex::icase);
-    a.name = trim(text.line(std::min<std::size_t>(1, textLines - 1)));
+    a.name = trimmed(text.line(std::min<std::size_t>(1, textLines - 1)));
     for (std::size_t i = 0; i < textLines; ++i) {
         const std::string& l = text.line(i);
         std::smatch m;
         if (l.rfind("Statn No:", 0) == 0)
-            a.station = trim(l.substr(9));
+            a.station = trimmed(l.substr(9));
         else if (std::regex_search(l, m, chan))
-            a.component = "Chan " + m[1].str() + ": " + trim(m[2].str()) +
-                          (trim(m[3].str()).empty() ? "" : ", " + trim(m[3].str()));
+            a.component = "Chan " + m[1].str() + ": " + trimmed(m[2].str()) +
+                          (trimmed(m[3].str()).empty() ? "" : ", " + trimmed(m[3].str()));
     }
 }
 
@@ -87,8 +81,8 @@ Accelerogram parseCosmos(const RecordText& text) {
     if (m[2].str().rfind("accel", 0) != 0)
         text.fail(i, "the first data block holds " + m[2].str() + ", not acceleration");
     const std::size_t npts = std::stoul(m[1].str());
-    const std::optional<AccelUnit> unit = accelUnitFromName(trim(m[3].str()));
-    if (!unit) text.fail(i, "unknown units '" + trim(m[3].str()) + "'");
+    const std::optional<AccelUnit> unit = accelUnitFromName(trimmed(m[3].str()));
+    if (!unit) text.fail(i, "unknown units '" + trimmed(m[3].str()) + "'");
     const std::optional<FixedFormat> format =
         parseFortranFormat(text.line(i).substr(text.line(i).find("ormat")));
     if (!format) text.fail(i, "no Fortran data format such as 'Format=(1E15.6)'");

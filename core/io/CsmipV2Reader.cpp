@@ -6,27 +6,16 @@ namespace kinstab {
 
 namespace {
 
-std::string lower(std::string s) {
-    for (char& c : s)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
-
-std::string trim(const std::string& s) {
-    const std::size_t a = s.find_first_not_of(" \t");
-    if (a == std::string::npos) return {};
-    return s.substr(a, s.find_last_not_of(" \t") - a + 1);
-}
-
 bool startsChannel(const std::string& line) {
-    return lower(line).rfind("corrected accelerogram", 0) == 0;
+    return lowerCase(line).rfind("corrected accelerogram", 0) == 0;
 }
 
 const CsmipChannel& pick(const RecordText& text, const std::vector<CsmipChannel>& channels,
                          const std::string& wanted) {
     if (wanted.empty()) return channels.front();
     for (const CsmipChannel& c : channels)
-        if (std::to_string(c.number) == trim(wanted) || lower(c.name) == lower(trim(wanted)))
+        if (std::to_string(c.number) == trimmed(wanted) ||
+            lowerCase(c.name) == lowerCase(trimmed(wanted)))
             return c;
     std::string list;
     for (const CsmipChannel& c : channels)
@@ -37,9 +26,9 @@ const CsmipChannel& pick(const RecordText& text, const std::vector<CsmipChannel>
 void describe(Accelerogram& a, const RecordText& text, const CsmipChannel& c, std::size_t end) {
     a.component = "CHAN " + std::to_string(c.number) + ": " + c.name;
     if (c.firstLine + 6 < end) {
-        a.name = trim(text.line(c.firstLine + 2));
+        a.name = trimmed(text.line(c.firstLine + 2));
         const std::string station = text.line(c.firstLine + 6);
-        a.station = trim(station.substr(0, station.find("   "))); // text before the next column
+        a.station = trimmed(station.substr(0, station.find("   "))); // text before the next column
     }
 }
 
@@ -99,7 +88,7 @@ Accelerogram parseCsmipV2(const RecordText& text, const std::string& channel) {
         const std::string rest = m.suffix().str();
         std::smatch u;
         if (!std::regex_search(rest, u, units)) text.fail(i, "no units on the data line");
-        const std::string unitName = trim(u[1].str());
+        const std::string unitName = trimmed(u[1].str());
         const auto unit = accelUnitFromName(
             unitName.back() == '.' ? unitName.substr(0, unitName.size() - 1) : unitName);
         if (!unit) text.fail(i, "unknown units '" + unitName + "'");

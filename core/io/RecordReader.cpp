@@ -10,11 +10,6 @@
 namespace kinstab {
 
 namespace {
-std::string lower(std::string s) {
-    for (char& c : s)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
 const std::pair<RecordFormat, const char*> kNames[] = {
     {RecordFormat::Auto, "auto"},     {RecordFormat::At2, "at2"},
     {RecordFormat::Cosmos, "cosmos"}, {RecordFormat::CsmipV2, "csmip"},
@@ -30,7 +25,7 @@ std::string recordFormatName(RecordFormat f) {
 
 std::optional<RecordFormat> recordFormatFromName(const std::string& name) {
     for (const auto& [format, n] : kNames)
-        if (lower(name) == n) return format;
+        if (lowerCase(name) == n) return format;
     return std::nullopt;
 }
 
@@ -38,12 +33,12 @@ RecordFormat detectRecordFormat(const RecordText& text, const RecordReadOptions&
     if (options.format != RecordFormat::Auto) return options.format;
     const std::size_t first = text.skipBlank(0);
     if (first < text.size()) {
-        const std::string l = lower(text.line(first));
+        const std::string l = lowerCase(text.line(first));
         if (l.find("(format v") != std::string::npos) return RecordFormat::Cosmos;
         if (l.rfind("corrected accelerogram", 0) == 0) return RecordFormat::CsmipV2;
     }
     for (std::size_t i = first; i < std::min(text.size(), first + 10); ++i)
-        if (lower(text.line(i)).find("npts") != std::string::npos) return RecordFormat::At2;
+        if (lowerCase(text.line(i)).find("npts") != std::string::npos) return RecordFormat::At2;
     return options.dt ? RecordFormat::Values : RecordFormat::TimeAccel;
 }
 

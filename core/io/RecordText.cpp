@@ -82,6 +82,18 @@ std::vector<std::string_view> splitWhitespace(std::string_view line) {
     return out;
 }
 
+std::string lowerCase(std::string s) {
+    for (char& c : s)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+std::string trimmed(const std::string& s) {
+    const std::size_t a = s.find_first_not_of(" \t");
+    if (a == std::string::npos) return {};
+    return s.substr(a, s.find_last_not_of(" \t") - a + 1);
+}
+
 std::vector<double> readFreeValues(const RecordText& text, std::size_t first) {
     std::vector<double> values;
     for (std::size_t i = first; i < text.size(); ++i)
