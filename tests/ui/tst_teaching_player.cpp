@@ -31,8 +31,20 @@ TeachingParams paperCase(double a, double f, EnvelopePreset e = EnvelopePreset::
 }
 
 std::vector<SlabEvent> solverEvents(const TeachingParams& p) {
-    return runSlab1D(p.toCase(), p.amplitude, p.frequencyHz, RunOptions{.recordEvents = true})
-        .events;
+    if (p.model == TeachingModel::Slab1D)
+        return runSlab1D(p.toCase(), p.amplitude, p.frequencyHz, RunOptions{.recordEvents = true})
+            .events;
+    std::vector<SlabEvent> ev;
+    for (const PlanarEvent& e : runPlanar(p.toPlanarCase(), p.amplitude, p.frequencyHz).events)
+        ev.push_back({e.tau, e.kind, e.dx, e.ux, 0});
+    return ev;
+}
+
+TeachingParams planarCase(double a, double f, double fy) {
+    TeachingParams p = paperCase(a, f);
+    p.model = TeachingModel::Planar;
+    p.fyHz = fy;
+    return p;
 }
 
 DisplayState expectedAt(const std::vector<SlabEvent>& ev, double tau) {
@@ -56,6 +68,8 @@ private slots:
         QTest::newRow("SPEC4: A=0.95 f=1 stable, 10x")
             << paperCase(0.95, 1.0) << 10.0 << int(Outcome::Stable);
         QTest::newRow("Fig35: A=1.0 f=1.125, 2x") << paperCase(1.0, 1.125) << 2.0 << -1;
+        QTest::newRow("Fig. 39 planar A=1.0 f=1 f_y=1, 1x")
+            << planarCase(1.0, 1.0, 1.0) << 1.0 << -1;
         QTest::newRow("fast envelope A=1.1 f=0.5, 0.1x")
             << paperCase(1.1, 0.5, EnvelopePreset::Fast) << 0.1 << -1;
     }

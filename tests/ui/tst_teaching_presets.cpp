@@ -3,7 +3,8 @@
 // Figs. 28-30 gamma_c = tau_max / tau_c and Figs. 31-33 tau_rise / tau_c for the fast,
 // moderately and slowly rising envelopes over 0.7 <= A <= 1.15, 0.5 <= f <= 1.125 (ch. IV,
 // Results); Fig. 34 tau_c against A at f = 0.75 Hz, moderate; Fig. 35 A = 1.0, f = 1.125 Hz,
-// moderate. All at t* = 0.099 s (Table 4), mu = 0.6, bearing d/2.
+// moderate; Figs. 37-42 planar, moderate, A_y = 0.9 A_x, f_y as listed. All at t* = 0.099 s
+// (Table 4), mu = 0.6, bearing d/2.
 
 #include "core/slab/Slab1DCase.h"
 #include "ui/teaching/ParameterPanel.h"
@@ -45,6 +46,40 @@ private slots:
         QTest::newRow("Fig. 34 tau_c vs A at f=0.75")
             << "fig34" << mod << tmax << 1.0 << 0.75 << int(MapMode::Slice);
         QTest::newRow("Fig. 35 A=1.0 f=1.125") << "fig35" << mod << tmax << 1.0 << 1.125 << surf;
+    }
+
+    void planarPresets_data() {
+        QTest::addColumn<QString>("id");
+        QTest::addColumn<double>("fy");
+        // Ch. VI list of figures: f_y = 0.2, 0.5, 1.0, 2.0, 5.0, 10.0 Hz for Figs. 37-42.
+        QTest::newRow("Fig. 37 f_y=0.2") << "fig37" << 0.2;
+        QTest::newRow("Fig. 38 f_y=0.5") << "fig38" << 0.5;
+        QTest::newRow("Fig. 39 f_y=1.0") << "fig39" << 1.0;
+        QTest::newRow("Fig. 40 f_y=2.0") << "fig40" << 2.0;
+        QTest::newRow("Fig. 41 f_y=5.0") << "fig41" << 5.0;
+        QTest::newRow("Fig. 42 f_y=10.0") << "fig42" << 10.0;
+    }
+
+    void planarPresets() {
+        QFETCH(QString, id);
+        QFETCH(double, fy);
+        TeachingView view;
+        QVERIFY(view.applyPreset(id));
+        const TeachingParams p = view.params();
+        QCOMPARE(int(p.model), int(TeachingModel::Planar));
+        QCOMPARE(int(p.envelope), int(EnvelopePreset::Moderate));
+        QCOMPARE(int(p.scale), int(TauScale::TauMax));
+        QCOMPARE(p.fyHz, fy);
+        QCOMPARE(p.ayRatio, 0.9); // ch. VI: A_y = 0.9 A_x
+        QCOMPARE(p.theta, 20.0);  // ch. VI: Theta = 2 wall length / wall width
+        QCOMPARE(p.mu, 0.6);
+        QCOMPARE(view.mapRange(), kPlanarRange); // ch. VI: A_x 0.5..1.15, f_x 0.5..2.0
+        QCOMPARE(view.parameterPanel()->params(), p);
+        // The run shown is the planar solver's (independent call).
+        const PlanarResult direct = runPlanar(p.toPlanarCase(), p.amplitude, p.frequencyHz);
+        QCOMPARE(view.run().result().outcome, direct.slab.outcome);
+        QCOMPARE(view.run().events().size(), direct.events.size());
+        QCOMPARE(view.run().exitSide(), direct.exitSide);
     }
 
     void presetSetsPaperParameters() {

@@ -61,6 +61,21 @@ private slots:
         QCOMPARE(view.displayedState(), DisplayState::Collapse);
         shoot(view, QStringLiteral("teaching-collapse.png"));
     }
+    void planar() {
+        // Fig. 39's planar run (f_y = 1 Hz), in the middle of its last slip: side and top views.
+        TeachingView view;
+        view.resize(1400, 900);
+        view.show();
+        QVERIFY(view.applyPreset(QStringLiteral("fig39")));
+        const auto& ev = view.run().events();
+        QVERIFY(ev.size() > 2);
+        int k = static_cast<int>(ev.size()) - 2;
+        while (k > 0 && ev[static_cast<std::size_t>(k)].kind != EventKind::SlipOnset) --k;
+        const double t0 = ev[static_cast<std::size_t>(k)].tau;
+        const double t1 = ev[static_cast<std::size_t>(k + 1)].tau;
+        view.player()->seek(t0 + 0.6 * (t1 - t0));
+        shoot(view, QStringLiteral("teaching-planar.png"));
+    }
 };
 
 QTEST_MAIN(TstTeachingScreenshots)

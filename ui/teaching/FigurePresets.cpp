@@ -34,6 +34,24 @@ FigurePreset surface(int fig, EnvelopePreset e, TauScale s) {
     return p;
 }
 
+FigurePreset planar(int fig, double fyHz) {
+    FigurePreset p;
+    p.id = QStringLiteral("fig%1").arg(fig);
+    p.title = QStringLiteral("Fig. %1 — planar, f_y = %2 Hz").arg(fig).arg(fyHz, 0, 'g', 3);
+    p.caption =
+        QStringLiteral("Surface γc(A_x, f_x), γc = τ_max/τc, planar model, moderately rising "
+                       "envelope, A_y = 0.9 A_x, f_y = %1 Hz. Vertical: gravity only (the "
+                       "paper added the 1971 Pacoima Dam vertical, not publicly available).")
+            .arg(fyHz, 0, 'g', 3);
+    p.params = paperParams(EnvelopePreset::Moderate, TauScale::TauMax, 1.0, 1.0);
+    p.params.model = TeachingModel::Planar;
+    p.params.fyHz = fyHz;
+    p.params.ayRatio = 0.9; // ch. VI: the ratio of Pacoima Dam's horizontal peaks
+    p.params.theta = 20.0;  // ch. VI
+    p.range = kPlanarRange;
+    return p;
+}
+
 std::vector<FigurePreset> build() {
     std::vector<FigurePreset> v;
     v.push_back(surface(28, EnvelopePreset::Fast, TauScale::TauMax));
@@ -61,6 +79,9 @@ std::vector<FigurePreset> build() {
     f35.params = paperParams(EnvelopePreset::Moderate, TauScale::TauMax, 1.0, 1.125);
     f35.range = kPaperRange;
     v.push_back(f35);
+    const double fy[] = {0.2, 0.5, 1.0, 2.0, 5.0, 10.0};
+    for (int i = 0; i < 6; ++i)
+        v.push_back(planar(37 + i, fy[i]));
     return v;
 }
 

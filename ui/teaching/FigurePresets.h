@@ -33,6 +33,9 @@ struct FigurePreset {
 // The paper's computed range: 0.7 <= A <= 1.15, 0.5 <= f <= 1.125 (ch. IV, "Results").
 inline constexpr MapRange kPaperRange{0.7, 1.15, 0.5, 1.125};
 
+// Ch. VI: 0.5 <= A_x <= 1.15, 0.5 <= f_x <= 2.0.
+inline constexpr MapRange kPlanarRange{0.5, 1.15, 0.5, 2.0};
+
 const std::vector<FigurePreset>& figurePresets();
 const FigurePreset* findFigurePreset(const QString& id);
 

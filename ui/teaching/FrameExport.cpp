@@ -16,8 +16,9 @@ namespace kinstab::ui {
 void paintTeachingFrame(QPainter& p, const QRectF& area, const TeachingRun& run, double tau) {
     const QRectF top(area.left(), area.top(), area.width(), area.height() * 0.55);
     const QRectF bottom(area.left(), top.bottom(), area.width(), area.height() - top.height());
-    paintSlabScene(p, top,
-                   SlabScene{run.frameAt(tau), run.params(), run.tstar(), run.displayEnd()});
+    paintSlabScene(
+        p, top,
+        SlabScene{run.frameAt(tau), run.params(), run.tstar(), run.displayEnd(), run.exitSide()});
     paintTraces(p, bottom, run, tau);
 }
 

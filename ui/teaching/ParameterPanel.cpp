@@ -27,10 +27,15 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     scale_->addItem(tr("γc = τ_rise / τc"), int(TauScale::TauRise));
     scale_->addItem(tr("γc = τ_dur / τc"), int(TauScale::TauDur));
     scale_->addItem(tr("γc = 1 / τc"), int(TauScale::One));
-    grid->addWidget(new QLabel(tr("Envelope"), this), 0, 0);
-    grid->addWidget(envelope_, 0, 1, 1, 2);
-    grid->addWidget(new QLabel(tr("Scaling"), this), 1, 0);
-    grid->addWidget(scale_, 1, 1, 1, 2);
+    model_ = new QComboBox(this);
+    model_->addItem(tr("one degree of freedom (ch. IV)"), int(TeachingModel::Slab1D));
+    model_->addItem(tr("planar, two degrees (ch. VI)"), int(TeachingModel::Planar));
+    grid->addWidget(new QLabel(tr("Model"), this), 0, 0);
+    grid->addWidget(model_, 0, 1, 1, 2);
+    grid->addWidget(new QLabel(tr("Envelope"), this), 1, 0);
+    grid->addWidget(envelope_, 1, 1, 1, 2);
+    grid->addWidget(new QLabel(tr("Scaling"), this), 2, 0);
+    grid->addWidget(scale_, 2, 1, 1, 2);
     rows_[kA] = addRow(grid, kA, tr("A"), 0.0, 3.0, 0.005, 3, tr(" g"));
     rows_[kF] = addRow(grid, kF, tr("f"), 0.05, 5.0, 0.005, 3, tr(" Hz"));
     rows_[kMu] = addRow(grid, kMu, tr("μ"), 0.05, 1.5, 0.01, 2, QString());
@@ -40,13 +45,23 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     limit_->setSingleStep(0.05);
     limit_->setDecimals(2);
     limit_->setToolTip(tr("Bearing length / (d/2): the slab falls when |δ| exceeds it (paper: 1)"));
-    grid->addWidget(new QLabel(tr("bearing"), this), 6, 0);
-    grid->addWidget(limit_, 6, 1);
-    grid->addWidget(new QLabel(tr("× d/2"), this), 6, 2);
+    grid->addWidget(new QLabel(tr("bearing"), this), 7, 0);
+    grid->addWidget(limit_, 7, 1);
+    grid->addWidget(new QLabel(tr("× d/2"), this), 7, 2);
+    fy_ = addSpin(grid, 8, tr("f_y"), 0.05, 20.0, 0.05, 3, tr(" Hz"),
+                  tr("Planar: frequency along the walls"), &TeachingParams::fyHz);
+    ayRatio_ = addSpin(grid, 9, tr("A_y/A_x"), 0.0, 2.0, 0.05, 2, QString(),
+                       tr("Planar: amplitude along the walls over across (paper: 0.9)"),
+                       &TeachingParams::ayRatio);
+    theta_ = addSpin(
+        grid, 10, tr("Θ"), 1.0, 200.0, 1.0, 1, QString(),
+        tr("Planar: 2 wall length / wall width; collapse along the walls at |δy| > Θ (paper: 20)"),
+        &TeachingParams::theta);
     tstarLabel_ = new QLabel(this);
-    grid->addWidget(tstarLabel_, 7, 0, 1, 3);
+    grid->addWidget(tstarLabel_, 11, 0, 1, 3);
     grid->setColumnStretch(1, 1);
     setParams(TeachingParams{});
+    connect(model_, &QComboBox::currentIndexChanged, this, &ParameterPanel::changed);
     connect(envelope_, &QComboBox::currentIndexChanged, this, &ParameterPanel::changed);
     connect(scale_, &QComboBox::currentIndexChanged, this, &ParameterPanel::changed);
     connect(limit_, &QDoubleSpinBox::valueChanged, this, &ParameterPanel::changed);
@@ -55,7 +70,7 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
 ParameterPanel::Row ParameterPanel::addRow(QGridLayout* grid, int quantity, const QString& label,
                                            double lo, double hi, double step, int decimals,
                                            const QString& suffix) {
-    const int row = quantity + 2;
+    const int row = quantity + 3;
     Row r{new QSlider(Qt::Horizontal, this), new QDoubleSpinBox(this), step};
     r.slider->setRange(static_cast<int>(std::lround(lo / step)),
                        static_cast<int>(std::lround(hi / step)));
@@ -105,8 +120,32 @@ void ParameterPanel::setValue(int quantity, double v) {
     changed();
 }
 
+QDoubleSpinBox* ParameterPanel::addSpin(QGridLayout* grid, int row, const QString& label, double lo,
+                                        double hi, double step, int decimals, const QString& suffix,
+                                        const QString& tip, double TeachingParams::*field) {
+    auto* spin = new QDoubleSpinBox(this);
+    spin->setRange(lo, hi);
+    spin->setSingleStep(step);
+    spin->setDecimals(decimals);
+    spin->setSuffix(suffix);
+    spin->setToolTip(tip);
+    spin->setKeyboardTracking(false);
+    grid->addWidget(new QLabel(label, this), row, 0);
+    grid->addWidget(spin, row, 1);
+    connect(spin, &QDoubleSpinBox::valueChanged, this, [this, field](double v) {
+        if (quiet_) return;
+        values_.*field = v;
+        changed();
+    });
+    return spin;
+}
+
 void ParameterPanel::setParams(const TeachingParams& p) {
     quiet_ = true;
+    model_->setCurrentIndex(model_->findData(int(p.model)));
+    fy_->setValue(p.fyHz);
+    ayRatio_->setValue(p.ayRatio);
+    theta_->setValue(p.theta);
     envelope_->setCurrentIndex(envelope_->findData(int(p.envelope)));
     scale_->setCurrentIndex(scale_->findData(int(p.scale)));
     rows_[kA].spin->setValue(p.amplitude);
@@ -116,6 +155,7 @@ void ParameterPanel::setParams(const TeachingParams& p) {
     limit_->setValue(p.limit);
     values_ = p;
     quiet_ = false;
+    updatePlanarEnabled();
     updateTstarLabel();
 }
 
@@ -128,11 +168,19 @@ QDoubleSpinBox* ParameterPanel::spinBox(Quantity q) const {
 
 void ParameterPanel::changed() {
     if (quiet_) return;
+    values_.model = static_cast<TeachingModel>(model_->currentData().toInt());
+    updatePlanarEnabled();
     values_.envelope = static_cast<EnvelopePreset>(envelope_->currentData().toInt());
     values_.scale = static_cast<TauScale>(scale_->currentData().toInt());
     values_.limit = limit_->value();
     updateTstarLabel();
     emit paramsChanged(values_);
+}
+
+void ParameterPanel::updatePlanarEnabled() {
+    const bool planar = values_.model == TeachingModel::Planar;
+    for (QDoubleSpinBox* s : {fy_, ayRatio_, theta_})
+        s->setEnabled(planar);
 }
 
 void ParameterPanel::updateTstarLabel() {

@@ -38,14 +38,22 @@ private:
     };
     Row addRow(QGridLayout* grid, int quantity, const QString& label, double lo, double hi,
                double step, int decimals, const QString& suffix);
+    QDoubleSpinBox* addSpin(QGridLayout* grid, int row, const QString& label, double lo, double hi,
+                            double step, int decimals, const QString& suffix, const QString& tip,
+                            double TeachingParams::*field);
+    void updatePlanarEnabled();
     void setValue(int quantity, double v);
     void changed();
     void updateTstarLabel();
 
     Row rows_[4];
+    QComboBox* model_;
     QComboBox* envelope_;
     QComboBox* scale_;
     QDoubleSpinBox* limit_;
+    QDoubleSpinBox* fy_;
+    QDoubleSpinBox* ayRatio_;
+    QDoubleSpinBox* theta_;
     QLabel* tstarLabel_;
     TeachingParams values_;
     bool quiet_ = false;

@@ -1,6 +1,7 @@
 #include "ui/teaching/SlabPainter.h"
 
 #include "ui/teaching/StateStyle.h"
+#include "ui/teaching/TopViewPainter.h"
 #include "ui/teaching/TracePainter.h"
 
 #include <QPainter>
@@ -150,7 +151,7 @@ void paintSlab(QPainter& p, const Frame2D& f, const SlabScene& s) {
     // After collapse the end that left its wall falls under gravity and the slab tips over the
     // other wall's inner corner (a shear: exact for the small angles of a real, longer span).
     QTransform tip;
-    if (fr.fallDrop > 0.0) {
+    if (fr.fallDrop > 0.0 && s.exit != ExitSide::Along) {
         const bool leftFalls = fr.direction > 0;
         const double pivot = (leftFalls ? kSpan - 1.0 : 1.0) - xl;
         const double arm = leftFalls ? pivot : length - pivot;
@@ -216,7 +217,10 @@ void paintHeader(QPainter& p, const QRectF& area, const SlabScene& s, double fon
     p.setPen(stateColor(fr.state));
     const QRectF line1(area.left() + 10, area.top() + 4, area.width() - 20, fontPx * 2.0);
     QString state = stateLabel(fr.state, fr.direction).toUpper();
-    if (fr.state == DisplayState::Collapse) // delta > limit: the slab went right, off the left wall
+    if (fr.state == DisplayState::Collapse && s.exit == ExitSide::Along)
+        state += QStringLiteral(" — slid off along the walls");
+    else if (fr.state ==
+             DisplayState::Collapse) // delta > limit: the slab went right, off the left wall
         state += fr.direction > 0 ? QStringLiteral(" — off the left wall")
                                   : QStringLiteral(" — off the right wall");
     p.drawText(line1, Qt::AlignLeft | Qt::AlignVCenter, state);
@@ -252,9 +256,11 @@ void paintSlabScene(QPainter& p, const QRectF& area, const SlabScene& s) {
     const double headerH = headerPx * 3.8;
     const double worldW = kSpan + 2 * kMargin;
     const double worldH = kTopPad + kSlabT + kWallH + kBaseH + kRulerH + 0.35;
+    const bool planar = s.params.model == TeachingModel::Planar;
+    const QRectF side(area.left(), area.top(), area.width() * (planar ? 0.6 : 1.0), area.height());
     Frame2D f;
-    f.k = std::min(area.width() / worldW, (area.height() - headerH) / worldH);
-    f.x0 = area.left() + (area.width() - worldW * f.k) / 2 + kMargin * f.k;
+    f.k = std::min(side.width() / worldW, (area.height() - headerH) / worldH);
+    f.x0 = side.left() + (side.width() - worldW * f.k) / 2 + kMargin * f.k;
     f.y0 = area.top() + headerH + (kTopPad + kSlabT) * f.k;
     QFont font = p.font();
     font.setPixelSize(static_cast<int>(std::clamp(f.k * 0.2, 10.0, 15.0)));
@@ -265,6 +271,11 @@ void paintSlabScene(QPainter& p, const QRectF& area, const SlabScene& s) {
     paintWallWidth(p, f, s);
     paintSlab(p, f, s);
     paintBearings(p, f, s);
+    if (planar)
+        paintTopView(p,
+                     QRectF(side.right(), area.top() + headerH, area.width() - side.width(),
+                            area.height() - headerH),
+                     s);
     paintHeader(p, area, s, headerPx);
     p.restore();
 }

@@ -17,8 +17,11 @@ struct SlabScene {
     TeachingParams params;
     double tstar = 0.099;
     double displayEnd = 0;
+    ExitSide exit = ExitSide::None; // planar collapse: across or along the walls
 };
 
+// The header (state, time, displacements) and the side view; for the planar model the side view
+// takes the left part and the top view (TopViewPainter) the right.
 void paintSlabScene(QPainter& p, const QRectF& area, const SlabScene& scene);
 
 } // namespace kinstab::ui

@@ -27,17 +27,22 @@ MarkerMap computeMap(const TeachingParams& p, const MapRange& r, MapMode mode,
     m.context = p;
     m.range = r;
     m.mode = mode;
+    const bool planar = p.model == TeachingModel::Planar;
+    PlanarCase pc = p.toPlanarCase();
+    pc.solver.recordEvents = pc.solver.recordPath = false; // a sweep keeps tau_c only (SPEC §11)
     const Slab1DCase c = p.toCase();
     m.tauRef = c.tauRef();
     SweepGrid grid;
     if (mode == MapMode::Surface) {
-        grid.amplitudes = spread(r.aMin, r.aMax, SurfaceMarker::kCells);
-        grid.frequencies = spread(r.fMin, r.fMax, SurfaceMarker::kCells);
+        const int n = planar ? SurfaceMarker::kPlanarCells : SurfaceMarker::kCells;
+        grid.amplitudes = spread(r.aMin, r.aMax, n);
+        grid.frequencies = spread(r.fMin, r.fMax, n);
     } else {
         grid.amplitudes = spread(r.aMin, r.aMax, SurfaceMarker::kSlicePoints);
         grid.frequencies = {p.frequencyHz};
     }
-    m.sweep = runSweep(grid, slab1DPoint(c), control, 1); // one thread: the GUI keeps a core
+    m.sweep = runSweep(grid, planar ? planarPoint(pc) : slab1DPoint(c), control,
+                       1); // one thread: the GUI keeps a core
     m.gamma = collapseFactors(m.sweep, m.tauRef);
     return m;
 }
@@ -66,6 +71,8 @@ bool sameSweep(const SweepKey& a, const SweepKey& b) {
     return a.mode == b.mode && a.range == b.range && a.params.envelope == b.params.envelope &&
            a.params.scale == b.params.scale && a.params.mu == b.params.mu &&
            a.params.wallWidthM == b.params.wallWidthM && a.params.limit == b.params.limit &&
+           a.params.model == b.params.model && a.params.fyHz == b.params.fyHz &&
+           a.params.ayRatio == b.params.ayRatio && a.params.theta == b.params.theta &&
            (a.mode == MapMode::Surface || a.params.frequencyHz == b.params.frequencyHz);
 }
 

@@ -34,6 +34,7 @@ class SurfaceMarker : public QWidget {
     Q_OBJECT
 public:
     static constexpr int kCells = 24;       // 24 x 24 surface
+    static constexpr int kPlanarCells = 14; // planar runs cost more: the paper's 14 A_x values
     static constexpr int kSlicePoints = 46; // A every 0.01 over the paper's 0.7..1.15
 
     explicit SurfaceMarker(QWidget* parent = nullptr);

@@ -1,6 +1,7 @@
 #include "ui/teaching/TeachingRun.h"
 
 #include "core/slab/History.h"
+#include "ui/teaching/PlanarPath.h"
 
 #include <algorithm>
 #include <chrono>
@@ -16,6 +17,21 @@ Slab1DCase TeachingParams::toCase() const {
     c.slab.mu = mu;
     c.slab.limit = limit;
     c.scale = scale;
+    return c;
+}
+
+PlanarCase TeachingParams::toPlanarCase() const {
+    PlanarCase c;
+    c.envelope = Envelope::fromPreset(envelope);
+    c.tstar = tstar();
+    c.slab.mu = mu;
+    c.slab.limit = limit;
+    c.slab.theta = theta;
+    c.ayRatio = ayRatio;
+    c.fyHz = fyHz;
+    c.scale = scale;
+    c.solver.recordEvents = true;
+    c.solver.recordPath = true;
     return c;
 }
 
@@ -68,24 +84,55 @@ TeachingRun::TeachingRun(const TeachingParams& p) : params_(p) {
     std::string e = validateEnvelopedSine(p.amplitude, p.frequencyHz, 1.0);
     if (e.empty() && !(std::isfinite(p.wallWidthM) && p.wallWidthM > 0.0 && p.wallWidthM < 10.0))
         e = "wall width = " + std::to_string(p.wallWidthM) + " m: must be > 0 and below 10";
-    const Slab1DCase c = p.toCase();
-    if (e.empty()) e = validateCase(c);
+    if (e.empty())
+        e = p.model == TeachingModel::Planar ? validatePlanarCase(p.toPlanarCase())
+                                             : validateCase(p.toCase());
     if (!e.empty()) {
         error_ = e;
         result_.failure = e;
         return;
     }
-    tstar_ = c.tstar;
-    tauRef_ = c.tauRef();
-    accel_ = std::make_unique<EnvelopedSine>(c.envelope, p.amplitude, p.frequencyHz, c.tstar);
+    tstar_ = p.tstar();
     const auto t0 = std::chrono::steady_clock::now();
-    result_ = runSlab1D(c, p.amplitude, p.frequencyHz, RunOptions{.recordEvents = true});
+    p.model == TeachingModel::Planar ? runPlanar(p) : runSlab1D(p);
     runSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (result_.outcome == Outcome::Failed) error_ = result_.failure;
     displayEnd_ = std::max(result_.tauEnd, 1.2 * accel_->envelopePeakTau());
     if (result_.outcome == Outcome::Collapsed) displayEnd_ = result_.tauC + kFallTau;
     if (!std::isfinite(displayEnd_) || displayEnd_ <= 0.0) displayEnd_ = 1.0;
     sampleTrace();
+}
+
+void TeachingRun::runSlab1D(const TeachingParams& p) {
+    const Slab1DCase c = p.toCase();
+    tauRef_ = c.tauRef();
+    accel_ = std::make_unique<EnvelopedSine>(c.envelope, p.amplitude, p.frequencyHz, c.tstar);
+    result_ = kinstab::runSlab1D(c, p.amplitude, p.frequencyHz, RunOptions{.recordEvents = true});
+}
+
+// The planar solver's events and path, in the 1-DOF shapes the view shows: delta is dx (across
+// the walls), the slip direction that of the motion across the walls.
+void TeachingRun::runPlanar(const TeachingParams& p) {
+    const PlanarCase c = p.toPlanarCase();
+    tauRef_ = c.tauRef();
+    // The product normalization (PlanarCase's default): each component peaks at its amplitude.
+    accel_ = std::make_unique<EnvelopedSine>(c.envelope, p.amplitude, p.frequencyHz, c.tstar);
+    accelY_ = std::make_unique<EnvelopedSine>(c.envelope, p.ayRatio * p.amplitude, p.fyHz, c.tstar);
+    PlanarResult r = kinstab::runPlanar(c, p.amplitude, p.frequencyHz);
+    result_ = std::move(r.slab);
+    exitSide_ = r.exitSide;
+    path_ = std::move(r.path);
+    result_.events.clear();
+    for (const PlanarEvent& e : r.events) {
+        // A slip starts from rest against the base acceleration (u' = -a_h at u = 0), so its
+        // direction across the walls is that of -a_x; later events carry their own velocity.
+        const double ax = accel_->accel(e.tau);
+        const bool fromRest = e.kind == EventKind::SlipOnset || e.kind == EventKind::Reversal;
+        const int dir = e.kind == EventKind::Stick || e.kind == EventKind::Stable ? 0
+                        : fromRest ? (ax < 0) - (ax > 0)
+                                   : (e.ux > 0) - (e.ux < 0);
+        result_.events.push_back({e.tau, e.kind, e.dx, e.ux, dir});
+    }
 }
 
 double TeachingRun::gammaC() const {
@@ -108,8 +155,15 @@ TeachingFrame TeachingRun::frameAt(double tau) const {
     const bool collapsed = result_.outcome == Outcome::Collapsed;
     // After collapse the relative motion is frozen at tau_c; only the free end falls.
     const double tRel = collapsed ? std::min(f.tau, result_.tauC) : f.tau;
-    const HistorySample s = stateAt(*accel_, params_.mu, ev, tRel);
+    const HistorySample s =
+        planar() ? planarStateAt(path_, tRel) : stateAt(*accel_, params_.mu, ev, tRel);
     f.accel = accel_->accel(f.tau);
+    if (accelY_) {
+        const HistorySample y = planarStateAt(path_, tRel, true);
+        f.deltaY = y.delta;
+        f.accelY = accelY_->accel(f.tau);
+        f.baseDispY = accelY_->displacementChange(0.0, f.tau);
+    }
     f.envelope = accel_->amplitude() / accel_->sMax() * accel_->envelopeAt(f.tau);
     f.delta = s.delta;
     f.velocity = s.velocity;
@@ -143,7 +197,8 @@ void TeachingRun::sampleTrace() {
     trace_.reserve(times.size());
     for (double t : times) {
         const TeachingFrame f = frameAt(t);
-        trace_.push_back({t, f.accel, f.envelope, f.delta, f.state});
+        trace_.push_back(
+            {t, f.accel, std::hypot(f.accel, f.accelY), f.envelope, f.delta, f.deltaY, f.state});
     }
 }
 

@@ -3,6 +3,7 @@
 // any tau rebuilt from it (core/slab/History.h), plus the base motion for the drawing.
 
 #include "core/excitation/EnvelopedSine.h"
+#include "core/slab/PlanarCase.h"
 #include "core/slab/Slab1DCase.h"
 
 #include <memory>
@@ -17,6 +18,9 @@ constexpr double wallWidthFromTstar(double tstar) {
     return 2.0 * 9.80665 * tstar * tstar;
 }
 
+// The 1-DOF slab of ch. IV, or the planar 2-DOF slab of ch. VI (gravity only vertically).
+enum class TeachingModel { Slab1D, Planar };
+
 // What the user sets in the Teaching view. The wall width fixes t* = sqrt(d / 2g) (SPEC §2).
 struct TeachingParams {
     EnvelopePreset envelope = EnvelopePreset::Moderate;
@@ -26,8 +30,13 @@ struct TeachingParams {
     double mu = 0.6;                               // friction coefficient
     double wallWidthM = wallWidthFromTstar(0.099); // m: the paper's "8 inch" wall
     double limit = 1.0;                            // bearing / (d/2)
+    TeachingModel model = TeachingModel::Slab1D;
+    double fyHz = 1.0;    // planar: frequency along the walls
+    double ayRatio = 0.9; // planar: A_y / A_x (the paper's, from Pacoima Dam)
+    double theta = 20.0;  // planar: 2 wall length / wall width (the paper's)
 
     Slab1DCase toCase() const;
+    PlanarCase toPlanarCase() const;
     double tstar() const;
     bool operator==(const TeachingParams&) const = default;
 };
@@ -39,19 +48,22 @@ const char* displayStateName(DisplayState s);
 
 struct TeachingFrame {
     double tau = 0;
-    double accel = 0;    // base acceleration, g
-    double envelope = 0; // the bound A e(t* tau) / S_max, g
-    double delta = 0;    // relative displacement, d/2
-    double velocity = 0; // relative velocity
-    double baseDisp = 0; // absolute base displacement from rest, d/2 (double integral of a)
-    double fallDrop = 0; // after collapse: free-fall drop of the slab's free end, d/2
-    int direction = 0;   // slip direction (+1, -1, 0)
-    int eventIndex = -1; // last event at or before tau
+    double accel = 0;     // base acceleration, g
+    double envelope = 0;  // the bound A e(t* tau) / S_max, g
+    double delta = 0;     // relative displacement, d/2
+    double velocity = 0;  // relative velocity
+    double accelY = 0;    // planar: base acceleration along the walls, g
+    double deltaY = 0;    // planar: relative displacement along the walls, d/2
+    double baseDispY = 0; // planar: base displacement along the walls, d/2
+    double baseDisp = 0;  // absolute base displacement from rest, d/2 (double integral of a)
+    double fallDrop = 0;  // after collapse: free-fall drop of the slab's free end, d/2
+    int direction = 0;    // slip direction (+1, -1, 0)
+    int eventIndex = -1;  // last event at or before tau
     DisplayState state = DisplayState::AtRest;
 };
 
 struct TraceSample {
-    double tau, accel, envelope, delta;
+    double tau, accel, accelH, envelope, delta, deltaY; // accelH: |a_h| (planar), |a| (1-DOF)
     DisplayState state;
 };
 
@@ -63,6 +75,8 @@ public:
     const TeachingParams& params() const { return params_; }
     const SlabResult& result() const { return result_; }
     const std::vector<SlabEvent>& events() const { return result_.events; }
+    bool planar() const { return params_.model == TeachingModel::Planar; }
+    ExitSide exitSide() const { return exitSide_; } // planar collapse: across or along the walls
     const std::string& error() const { return error_; } // invalid input, or a failed run
     double tstar() const { return tstar_; }
     double tauRef() const { return tauRef_; }
@@ -77,10 +91,15 @@ public:
     std::vector<double> eventTimes() const;
 
 private:
+    void runSlab1D(const TeachingParams& p);
+    void runPlanar(const TeachingParams& p);
     void sampleTrace();
 
     TeachingParams params_;
-    std::unique_ptr<EnvelopedSine> accel_;
+    std::unique_ptr<EnvelopedSine> accel_;  // across the walls
+    std::unique_ptr<EnvelopedSine> accelY_; // planar: along the walls
+    std::vector<PlanarSample> path_;        // planar: the solver's path (steps and events)
+    ExitSide exitSide_ = ExitSide::None;
     SlabResult result_;
     std::string error_;
     double tstar_ = 0.099;

@@ -212,7 +212,8 @@ void TeachingView::rerun(const TeachingParams& p) {
 
 void TeachingView::showFrame(double tau) {
     const TeachingFrame f = run_->frameAt(tau);
-    animation_->setScene(SlabScene{f, run_->params(), run_->tstar(), run_->displayEnd()});
+    animation_->setScene(
+        SlabScene{f, run_->params(), run_->tstar(), run_->displayEnd(), run_->exitSide()});
     traces_->setCursor(tau);
     log_->setCurrent(f.eventIndex);
     {
@@ -237,15 +238,19 @@ void TeachingView::updateOutcome() {
     const SlabResult& s = r.result();
     const QString timing =
         tr("%1 events, run %2 ms").arg(s.events.size()).arg(r.runSeconds() * 1e3, 0, 'f', 2);
+    const QString where = !r.planar()                       ? QString()
+                          : r.exitSide() == ExitSide::Along ? tr(" along the walls")
+                                                            : tr(" across the walls");
     if (s.outcome == Outcome::Collapsed)
-        outcome_->setText(tr("<b style='color:%1'>Collapses</b> at τc = %2 (t = %3 s): γc = "
+        outcome_->setText(tr("<b style='color:%1'>Collapses</b>%7 at τc = %2 (t = %3 s): γc = "
                              "%4<br>%5 slip intervals; %6")
                               .arg(stateColor(DisplayState::Collapse).name())
                               .arg(s.tauC, 0, 'f', 2)
                               .arg(s.tauC * r.tstar(), 0, 'f', 2)
                               .arg(r.gammaC(), 0, 'f', 3)
                               .arg(s.slipIntervals)
-                              .arg(timing));
+                              .arg(timing)
+                              .arg(where));
     else
         outcome_->setText(tr("<b style='color:%1'>Stable</b>: max |δ| = %2, residual δ = %3<br>%4 "
                              "slip intervals; %5")

@@ -98,6 +98,15 @@ void paintAccel(QPainter& p, const Axis& a, const TeachingRun& run, double curso
     p.setPen(QPen(QColor(0x99, 0x66, 0x00), 1, Qt::DashLine));
     p.drawPath(env);
     p.drawPath(envLow);
+    if (run.planar()) { // the slip criterion is |a_h| > mu (gravity only: n = 1)
+        QPainterPath h;
+        for (std::size_t i = 0; i < s.size(); ++i)
+            i == 0 ? h.moveTo(a.at(s[i].tau, s[i].accelH)) : h.lineTo(a.at(s[i].tau, s[i].accelH));
+        p.setPen(QPen(QColor(0x2e, 0x8b, 0x57), 1, Qt::DotLine));
+        p.drawPath(h);
+        p.drawText(QRectF(a.r.left() + 6, a.r.top() + 2, 300, 16), Qt::AlignLeft | Qt::AlignVCenter,
+                   QStringLiteral("a_x solid; |a_h| dotted: slips when above μ"));
+    }
     paintSeries(
         p, a, s, cursor, [](const TraceSample& x) { return x.accel; },
         [](const TraceSample&) { return kAccel; });
@@ -110,6 +119,20 @@ void paintDelta(QPainter& p, const Axis& a, const TeachingRun& run, double curso
     p.drawLine(a.at(0, -L), a.at(a.t1, -L));
     p.drawText(QRectF(a.r.right() - 200, a.y(L) - 17, 194, 16), Qt::AlignRight | Qt::AlignVCenter,
                QStringLiteral("bearing limit |δ| = %1: falls beyond").arg(L, 0, 'g', 3));
+    if (run.planar()) { // along the walls, scaled so that its limit theta is at the same line
+        const double k = L / run.params().theta;
+        p.setPen(QPen(QColor(0x8e, 0x44, 0xad), 1.2, Qt::DashLine));
+        QPainterPath y;
+        const auto& s = run.trace();
+        for (std::size_t i = 0; i < s.size(); ++i)
+            i == 0 ? y.moveTo(a.at(s[i].tau, k * s[i].deltaY))
+                   : y.lineTo(a.at(s[i].tau, k * s[i].deltaY));
+        p.drawPath(y);
+        p.drawText(QRectF(a.r.left() + 6, a.r.top() + 2, 360, 16), Qt::AlignLeft | Qt::AlignVCenter,
+                   QStringLiteral("δx solid; δy·%1/Θ dashed (Θ = %2)")
+                       .arg(L, 0, 'g', 3)
+                       .arg(run.params().theta, 0, 'g', 3));
+    }
     paintSeries(
         p, a, run.trace(), cursor, [](const TraceSample& x) { return x.delta; },
         [](const TraceSample& x) { return stateColor(x.state); });
@@ -157,7 +180,9 @@ void paintTraces(QPainter& p, const QRectF& area, const TeachingRun& run, double
     font.setPixelSize(11);
     p.setFont(font);
     const TraceLayout l = traceLayout(area, run);
-    const double aMax = std::max({run.params().amplitude, run.params().mu}) * 1.15;
+    const double peak =
+        run.params().amplitude * (run.planar() ? std::hypot(1.0, run.params().ayRatio) : 1.0);
+    const double aMax = std::max(peak, run.params().mu) * 1.15;
     double dMax = run.params().limit * 1.25;
     for (const auto& s : run.trace())
         dMax = std::max(dMax, std::abs(s.delta) * 1.1);
