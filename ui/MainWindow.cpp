@@ -1,15 +1,349 @@
 #include "ui/MainWindow.h"
 
+#include "core/io/ResultJson.h"
+#include "ui/ChartExport.h"
+#include "ui/CriticalChart.h"
+#include "ui/ExcitationPanel.h"
+#include "ui/GridPanel.h"
+#include "ui/HistoryChart.h"
+#include "ui/SlabPanel.h"
+#include "ui/SliceChart.h"
+#include "ui/SurfaceView.h"
+
+#include <QAction>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
 #include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPainter>
+#include <QProgressBar>
+#include <QSaveFile>
+#include <QScrollArea>
+#include <QSettings>
+#include <QStatusBar>
+#include <QToolBar>
+
+#include <cmath>
 
 namespace kinstab::ui {
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+namespace {
+QWidget* scrollable(QWidget* w) {
+    auto* s = new QScrollArea;
+    s->setWidget(w);
+    s->setWidgetResizable(true);
+    s->setFrameShape(QFrame::NoFrame);
+    return s;
+}
+QString gammaTitle(TauScale s) {
+    switch (s) {
+    case TauScale::TauRise:
+        return QStringLiteral("γc = τ_rise/τc");
+    case TauScale::TauMax:
+        return QStringLiteral("γc = τ_max/τc");
+    case TauScale::TauDur:
+        return QStringLiteral("γc = τ_dur/τc");
+    case TauScale::One:
+        return QStringLiteral("γc = 1/τc");
+    }
+    return QStringLiteral("γc");
+}
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), m_slabPanel(new SlabPanel), m_excitation(new ExcitationPanel),
+      m_gridPanel(new GridPanel), m_surface(new SurfaceView), m_slice(new SliceChart),
+      m_history(new HistoryChart), m_critical(new CriticalChart), m_runner(new SweepRunner(this)),
+      m_progress(new QProgressBar), m_status(new QLabel) {
     setWindowTitle(tr("kinstab — kinetic stability of friction-held slabs"));
-    auto* label = new QLabel(tr("kinstab"), this);
-    label->setAlignment(Qt::AlignCenter);
-    setCentralWidget(label);
+    setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks |
+                   QMainWindow::AllowNestedDocks);
+    setCentralWidget(m_surface);
+    buildActions();
+    buildDocks();
+    m_progress->setMaximumWidth(260);
+    m_progress->setTextVisible(true);
+    m_progress->hide();
+    m_status->setTextFormat(Qt::PlainText);
+    statusBar()->addWidget(m_status, 1);
+    statusBar()->addPermanentWidget(m_progress);
+
+    for (InputPanel* p : std::initializer_list<InputPanel*>{m_slabPanel, m_excitation, m_gridPanel})
+        connect(p, &InputPanel::changed, this, &MainWindow::updateRunState);
+    connect(m_slabPanel, &InputPanel::changed, this, [this] {
+        if (m_slabPanel->isValid()) m_excitation->setTstar(currentCase().tstar);
+    });
+    connect(m_runner, &SweepRunner::progress, this, &MainWindow::showProgress);
+    connect(m_runner, &SweepRunner::partialResult, this, &MainWindow::showPartial);
+    connect(m_runner, &SweepRunner::finished, this, &MainWindow::showFinished);
+    connect(m_surface, &SurfaceView::pointSelected, this, &MainWindow::pickPoint);
     resize(1280, 800);
+    restoreSettings();
+    updateRunState();
+}
+
+MainWindow::~MainWindow() {
+    // The runner (a child) cancels and waits in its destructor; do it before the views go.
+    m_runner->cancel();
+}
+
+void MainWindow::buildActions() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* exportSurface =
+        file->addAction(tr("Export &surface (CSV/JSON)…"), this, &MainWindow::exportSurface);
+    exportSurface->setShortcut(Qt::CTRL | Qt::Key_E);
+    QMenu* charts = file->addMenu(tr("Export &chart (PNG/SVG)"));
+    charts->addAction(tr("γc and τc against A…"), this,
+                      [this] { exportChart(m_slice, QStringLiteral("slice")); });
+    charts->addAction(tr("History δ(τ)…"), this,
+                      [this] { exportChart(m_history, QStringLiteral("history")); });
+    charts->addAction(tr("A_crit(f)…"), this,
+                      [this] { exportChart(m_critical, QStringLiteral("acrit")); });
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* sweep = menuBar()->addMenu(tr("&Sweep"));
+    m_run = sweep->addAction(tr("&Run"), this, &MainWindow::runSweep);
+    m_run->setShortcuts({QKeySequence(Qt::CTRL | Qt::Key_R), QKeySequence(Qt::Key_F5)});
+    m_run->setToolTip(tr("Compute γc over the grid (Ctrl+R / F5)"));
+    m_cancel = sweep->addAction(tr("&Cancel"), this, &MainWindow::cancelSweep);
+    m_cancel->setShortcut(Qt::Key_Escape);
+    m_cancel->setToolTip(tr("Stop the sweep; points already computed are kept (Esc)"));
+    m_cancel->setEnabled(false);
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+
+    QToolBar* bar = addToolBar(tr("Sweep"));
+    bar->setObjectName(QStringLiteral("sweepToolBar"));
+    bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    bar->addAction(m_run);
+    bar->addAction(m_cancel);
+}
+
+QDockWidget* MainWindow::addPanelDock(const QString& title, QWidget* w, Qt::DockWidgetArea area) {
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(
+        title.simplified().remove(QLatin1Char('&')).replace(QLatin1Char(' '), QLatin1Char('_')) +
+        "Dock");
+    dock->setWidget(w);
+    addDockWidget(area, dock);
+    m_viewMenu->addAction(dock->toggleViewAction());
+    return dock;
+}
+
+void MainWindow::buildDocks() {
+    const std::pair<QString, QWidget*> inputs[] = {{tr("Slab and walls"), m_slabPanel},
+                                                   {tr("Excitation"), m_excitation},
+                                                   {tr("Grid"), m_gridPanel}};
+    for (const auto& [title, w] : inputs) {
+        QDockWidget* d = addPanelDock(title, scrollable(w), Qt::LeftDockWidgetArea);
+        if (!m_inputDocks.empty()) tabifyDockWidget(m_inputDocks.front(), d);
+        m_inputDocks.push_back(d);
+    }
+    m_inputDocks.front()->raise();
+    QDockWidget* slice = addPanelDock(tr("γc, τc against A"), m_slice, Qt::BottomDockWidgetArea);
+    QDockWidget* history = addPanelDock(tr("History"), m_history, Qt::BottomDockWidgetArea);
+    QDockWidget* critical = addPanelDock(tr("A_crit(f)"), m_critical, Qt::BottomDockWidgetArea);
+    splitDockWidget(slice, history, Qt::Horizontal);
+    splitDockWidget(history, critical, Qt::Horizontal);
+    resizeDocks({slice}, {280}, Qt::Vertical);
+    resizeDocks({m_inputDocks.front()}, {340}, Qt::Horizontal);
+}
+
+Slab1DCase MainWindow::currentCase() const {
+    Slab1DCase c;
+    m_slabPanel->apply(c);
+    c.envelope = m_excitation->envelope();
+    c.scale = m_excitation->scale();
+    return c;
+}
+
+bool MainWindow::inputsValid() const {
+    return m_slabPanel->isValid() && m_excitation->isValid() && m_gridPanel->isValid();
+}
+
+void MainWindow::updateRunState() {
+    const bool running = m_runner->isRunning();
+    m_run->setEnabled(!running && inputsValid());
+    m_cancel->setEnabled(running);
+    if (running) return;
+    QStringList problems =
+        m_slabPanel->problems() + m_excitation->problems() + m_gridPanel->problems();
+    if (!problems.isEmpty()) {
+        m_status->setText(tr("Fix before running — %1").arg(problems.join(QStringLiteral("; "))));
+        m_run->setToolTip(problems.join(QLatin1Char('\n')));
+    } else {
+        m_run->setToolTip(tr("Compute γc over the grid (Ctrl+R / F5)"));
+        if (m_status->text().startsWith(tr("Fix before running"))) m_status->clear();
+    }
+}
+
+void MainWindow::runSweep() {
+    if (!inputsValid() || m_runner->isRunning()) return;
+    SweepJob job;
+    job.slabCase = currentCase();
+    job.grid = m_gridPanel->grid();
+    const std::string e = validateCase(job.slabCase) + validateGrid(job.grid);
+    if (!e.empty()) {
+        m_status->setText(QString::fromStdString(e));
+        return;
+    }
+    m_sweepCase = job.slabCase;
+    m_overlays.aCrit.clear();
+    m_runner->start(job);
+    m_progress->setRange(0, 1000);
+    m_progress->setValue(0);
+    m_progress->show();
+    m_status->setText(tr("Running %1 points…").arg(job.grid.size()));
+    updateRunState();
+}
+
+void MainWindow::cancelSweep() {
+    m_runner->cancel();
+}
+
+void MainWindow::showProgress(qint64 done, qint64 total, double secondsLeft) {
+    m_progress->setValue(total > 0 ? static_cast<int>(1000 * done / total) : 0);
+    m_progress->setFormat(
+        secondsLeft >= 0
+            ? tr("%1 / %2 — %3 s left").arg(done).arg(total).arg(secondsLeft, 0, 'f', 1)
+            : tr("%1 / %2").arg(done).arg(total));
+}
+
+void MainWindow::showPartial(const SweepResult& r) {
+    m_sweep = r;
+    m_gamma = gammaGrid(r, m_sweepCase.tauRef());
+    m_gamma.gammaTitle = gammaTitle(m_sweepCase.scale);
+    m_surface->setData(m_gamma);
+    updateSlice();
+}
+
+void MainWindow::showFinished(const SweepOutput& out) {
+    showPartial(out.sweep);
+    m_overlays.aCrit.clear();
+    for (std::size_t j = 0; j < out.aCrit.size(); ++j)
+        if (out.aCrit[j])
+            m_overlays.aCrit.emplace_back(out.sweep.grid.frequencies[j], *out.aCrit[j]);
+    refreshOverlays();
+    m_progress->hide();
+    m_status->setText(out.cancelled ? tr("Cancelled: %1 of %2 points computed and shown (%3 s)")
+                                          .arg(out.sweep.completed)
+                                          .arg(out.sweep.grid.size())
+                                          .arg(out.sweep.wallTimeSeconds, 0, 'f', 2)
+                                    : tr("Done: %1 points in %2 s")
+                                          .arg(out.sweep.grid.size())
+                                          .arg(out.sweep.wallTimeSeconds, 0, 'f', 2));
+    updateRunState();
+    emit sweepFinished();
+}
+
+void MainWindow::refreshOverlays() {
+    m_surface->setOverlays(m_overlays);
+    if (!m_gamma.empty())
+        m_critical->setData(m_overlays, m_gamma.frequencies.front(), m_gamma.frequencies.back());
+}
+
+void MainWindow::pickPoint(int ai, int fi) {
+    if (m_gamma.empty() || ai < 0 || fi < 0) return;
+    m_selA = ai;
+    m_selF = fi;
+    updateSlice();
+    const double a = m_gamma.amplitudes[static_cast<std::size_t>(ai)];
+    const double f = m_gamma.frequencies[static_cast<std::size_t>(fi)];
+    m_picked = runPoint(m_sweepCase, a, f);
+    m_history->setRun(*m_picked);
+}
+
+void MainWindow::updateSlice() {
+    if (m_selF < 0 || m_gamma.empty() ||
+        static_cast<std::size_t>(m_selF) >= m_gamma.frequencies.size())
+        return;
+    const auto fi = static_cast<std::size_t>(m_selF);
+    std::vector<double> g, t;
+    for (std::size_t i = 0; i < m_gamma.amplitudes.size(); ++i) {
+        g.push_back(m_gamma.at(i, fi));
+        const std::size_t k = i * m_gamma.frequencies.size() + fi;
+        t.push_back(m_sweep.done[k] && m_sweep.points[k].outcome == Outcome::Collapsed
+                        ? m_sweep.points[k].tauC
+                        : std::nan(""));
+    }
+    m_slice->setSlice(m_gamma.frequencies[fi], m_gamma.amplitudes, g, t, m_gamma.gammaTitle);
+}
+
+void MainWindow::exportSurface() {
+    if (m_gamma.empty()) {
+        m_status->setText(tr("Nothing to export: run a sweep first"));
+        return;
+    }
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export surface"), QStringLiteral("surface.csv"),
+                                     tr("CSV (*.csv);;JSON (*.json)"));
+    if (path.isEmpty()) return;
+    std::string text;
+    if (path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive)) {
+        nlohmann::json j = sweepJson(m_sweep, m_sweepCase.tauRef());
+        j["model"] = "slab1d";
+        j["solver"] = solverName(m_sweepCase.solver);
+        j["envelope"] = {{"name", m_sweepCase.envelope.name()},
+                         {"alpha", m_sweepCase.envelope.alpha},
+                         {"beta", m_sweepCase.envelope.beta},
+                         {"scale", tauScaleName(m_sweepCase.scale)}};
+        j["mu"] = m_sweepCase.slab.mu;
+        j["tstar"] = m_sweepCase.tstar;
+        j["limit"] = m_sweepCase.slab.limit;
+        text = j.dump(1) + "\n";
+    } else {
+        text = sweepCsv(m_sweep, m_sweepCase.tauRef());
+    }
+    QSaveFile f(path); // atomic: a failed write leaves the old file alone
+    if (!f.open(QIODevice::WriteOnly) ||
+        f.write(text.data(), static_cast<qint64>(text.size())) < 0 || !f.commit())
+        QMessageBox::warning(this, tr("Export surface"), tr("%1: %2").arg(path, f.errorString()));
+    else
+        m_status->setText(tr("Surface written to %1").arg(path));
+}
+
+void MainWindow::exportChart(QChartView* view, const QString& name) {
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export chart"), name + QStringLiteral(".svg"),
+                                     tr("SVG vector (*.svg);;PNG image (*.png)"));
+    if (path.isEmpty()) return;
+    const QString error = ui::exportChart(view, path);
+    if (!error.isEmpty())
+        QMessageBox::warning(this, tr("Export chart"), error);
+    else
+        m_status->setText(tr("Chart written to %1").arg(path));
+}
+
+QImage MainWindow::screenshot() {
+    QImage img = grab().toImage();
+    if (m_surface->is3D()) {
+        QWidget* c = m_surface->graphWidget();
+        const QRect target(c->mapTo(this, QPoint(0, 0)), c->size());
+        const QImage graph = m_surface->renderImage(c->size() * img.devicePixelRatio());
+        QPainter p(&img);
+        p.drawImage(target, graph);
+    }
+    return img;
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+    m_runner->cancel();
+    saveSettings();
+    e->accept();
+}
+
+void MainWindow::saveSettings() {
+    QSettings s;
+    s.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    s.setValue(QStringLiteral("window/state"), saveState());
+}
+
+void MainWindow::restoreSettings() {
+    QSettings s;
+    restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(s.value(QStringLiteral("window/state")).toByteArray());
 }
 
 } // namespace kinstab::ui

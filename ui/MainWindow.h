@@ -1,14 +1,106 @@
 #pragma once
-// The main window. Panels, surface and charts arrive with the GUI issue.
+// The main window: input panels and the verdict in docks on the left, the γc surface in the
+// middle, the linked charts in docks below. Run/Cancel drive a SweepRunner.
+
+#include "core/slab/Slab1DCase.h"
+#include "ui/PointRun.h"
+#include "ui/SurfaceData.h"
+#include "ui/SweepRunner.h"
 
 #include <QMainWindow>
 
+#include <optional>
+
+class QAction;
+class QChartView;
+class QDockWidget;
+class QLabel;
+class QProgressBar;
+
 namespace kinstab::ui {
+
+class CriticalChart;
+class ExcitationPanel;
+class GridPanel;
+class HistoryChart;
+class SlabPanel;
+class SliceChart;
+class SurfaceView;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
     explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    // The 1-DOF case the panels describe (valid panels only).
+    Slab1DCase currentCase() const;
+    bool inputsValid() const;
+    // The window as an image, with the 3D view rendered in (grab() leaves a GL window blank).
+    QImage screenshot();
+    // Adds a dock (friction, records, precision, teaching...) tabified with its peers.
+    QDockWidget* addPanelDock(const QString& title, QWidget* w, Qt::DockWidgetArea area);
+
+    // For tests and scripting.
+    QAction* runAction() const { return m_run; }
+    QAction* cancelAction() const { return m_cancel; }
+    SweepRunner* runner() const { return m_runner; }
+    SurfaceView* surfaceView() const { return m_surface; }
+    HistoryChart* historyChart() const { return m_history; }
+    SliceChart* sliceChart() const { return m_slice; }
+    SlabPanel* slabPanel() const { return m_slabPanel; }
+    ExcitationPanel* excitationPanel() const { return m_excitation; }
+    GridPanel* gridPanel() const { return m_gridPanel; }
+    const SweepResult& lastSweep() const { return m_sweep; }
+    const std::optional<PointRun>& pickedRun() const { return m_picked; }
+
+public slots:
+    void runSweep();
+    void cancelSweep();
+
+signals:
+    void sweepFinished();
+
+protected:
+    void closeEvent(QCloseEvent* e) override;
+
+private:
+    void buildActions();
+    void buildDocks();
+    void updateRunState();
+    void showPartial(const SweepResult& r);
+    void showFinished(const SweepOutput& out);
+    void showProgress(qint64 done, qint64 total, double secondsLeft);
+    void pickPoint(int ai, int fi);
+    void updateSlice();
+    void refreshOverlays();
+    void exportSurface();
+    void exportChart(QChartView* view, const QString& name);
+    void saveSettings();
+    void restoreSettings();
+
+    SlabPanel* m_slabPanel;
+    ExcitationPanel* m_excitation;
+    GridPanel* m_gridPanel;
+    SurfaceView* m_surface;
+    SliceChart* m_slice;
+    HistoryChart* m_history;
+    CriticalChart* m_critical;
+    SweepRunner* m_runner;
+    QAction* m_run = nullptr;
+    QAction* m_cancel = nullptr;
+    QMenu* m_viewMenu = nullptr;
+    QProgressBar* m_progress;
+    QLabel* m_status;
+    std::vector<QDockWidget*> m_inputDocks;
+
+    // What the surface shows, and the case it was computed with.
+    Slab1DCase m_sweepCase;
+    SweepResult m_sweep;
+    GammaGrid m_gamma;
+    SurfaceOverlays m_overlays;
+    std::optional<PointRun> m_picked;
+    int m_selA = -1, m_selF = -1;
 };
 
 } // namespace kinstab::ui

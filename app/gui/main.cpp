@@ -1,8 +1,10 @@
 // kinstab: the desktop application.
 
+#include "ui/AutoScreenshot.h"
 #include "ui/MainWindow.h"
 
 #include <QApplication>
+#include <QCommandLineParser>
 
 int main(int argc, char** argv) {
     qputenv("QSG_RHI_BACKEND", "opengl"); // required by Qt Data Visualization on Qt 6
@@ -10,7 +12,19 @@ int main(int argc, char** argv) {
     QApplication::setApplicationName("kinstab");
     QApplication::setOrganizationName("kinstab");
     QApplication::setApplicationVersion(KINSTAB_VERSION);
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription("Kinetic stability of friction-held slabs in earthquakes");
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption shot("screenshot", "Run the sweep, save the window to FILE and quit.",
+                                  "FILE");
+    parser.addOption(shot);
+    parser.addPositionalArgument("project", "Project file (.json) to open.", "[project]");
+    parser.process(app);
+
     kinstab::ui::MainWindow window;
     window.show();
+    if (parser.isSet(shot)) kinstab::ui::screenshotAfterSweep(window, parser.value(shot));
     return QApplication::exec();
 }

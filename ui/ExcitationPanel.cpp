@@ -1,0 +1,126 @@
+#include "ui/ExcitationPanel.h"
+
+#include "ui/EnvelopeChart.h"
+#include "ui/NumberField.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QLabel>
+
+#include <cmath>
+
+namespace kinstab::ui {
+
+namespace {
+constexpr int customIndex = 3;
+const EnvelopePreset presets[] = {EnvelopePreset::Fast, EnvelopePreset::Moderate,
+                                  EnvelopePreset::Slow};
+} // namespace
+
+ExcitationPanel::ExcitationPanel(QWidget* parent)
+    : InputPanel(parent), m_preset(new QComboBox(this)), m_scale(new QComboBox(this)),
+      m_times(new QLabel(this)), m_chart(new EnvelopeChart(this)) {
+    m_preset->addItems({tr("Fast rising (Table 4)"), tr("Moderately rising (Table 4)"),
+                        tr("Slowly rising (Table 4)"), tr("Custom α, β")});
+    m_preset->setToolTip(tr("Shape of the floor-acceleration envelope. The paper's three presets "
+                            "(Table 4); a moderately rising envelope suits a soft-soil site."));
+    form()->addRow(tr("&Envelope:"), m_preset);
+    m_alpha = addField("alpha", tr("α:"), tr("1/s"),
+                       tr("Decay rate of the envelope e(t) = exp(−αt) − exp(−βt): smaller α "
+                          "means longer strong shaking."));
+    m_beta = addField("beta", tr("β:"), tr("1/s"),
+                      tr("Rise rate of the envelope: larger β means a faster build-up. Must "
+                         "exceed α."));
+    m_alpha->setCheck(rangeCheck(0, 1e3));
+    m_beta->setCheck([this](double b) {
+        if (!(b > 0) || b > 1e3) return tr("must be > 0 and ≤ 1000 (got %1)").arg(b);
+        const auto a = m_alpha->value();
+        if (a && b <= *a) return tr("must exceed α = %1 (got %2)").arg(*a).arg(b);
+        return QString();
+    });
+    connect(m_alpha, &NumberField::edited, m_beta, &NumberField::revalidate);
+    m_scale->addItems({tr("τ_max (default)"), tr("τ_rise"), tr("τ_dur"), tr("1 (γc = 1/τc)")});
+    m_scale->setToolTip(tr("Reference time τ_ref in the collapse factor γc = τ_ref / τc. With "
+                           "τ_max the surfaces of the three envelopes look most alike."));
+    form()->addRow(tr("γc &scale:"), m_scale);
+    m_times->setWordWrap(true);
+    form()->addRow(m_times);
+    form()->addRow(m_chart);
+
+    connect(m_preset, &QComboBox::currentIndexChanged, this, [this] {
+        updatePreset();
+        emit changed();
+    });
+    connect(m_scale, &QComboBox::currentIndexChanged, this, &InputPanel::changed);
+    connect(this, &InputPanel::changed, this, &ExcitationPanel::updateTimes);
+    setEnvelope(Envelope::fromPreset(EnvelopePreset::Moderate));
+}
+
+void ExcitationPanel::updatePreset() {
+    const int i = m_preset->currentIndex();
+    const bool custom = i == customIndex;
+    if (!custom) {
+        const Envelope e = Envelope::fromPreset(presets[i]);
+        m_alpha->setValue(e.alpha);
+        m_beta->setValue(e.beta);
+    }
+    m_alpha->setEnabled(custom);
+    m_beta->setEnabled(custom);
+    updateTimes();
+}
+
+Envelope ExcitationPanel::envelope() const {
+    const int i = m_preset->currentIndex();
+    if (i != customIndex) return Envelope::fromPreset(presets[i]);
+    Envelope e;
+    e.alpha = m_alpha->value().value_or(e.alpha);
+    e.beta = m_beta->value().value_or(e.beta);
+    e.preset.reset();
+    return e;
+}
+
+void ExcitationPanel::setEnvelope(const Envelope& e) {
+    m_alpha->setValue(e.alpha);
+    m_beta->setValue(e.beta);
+    m_preset->setCurrentIndex(e.preset ? static_cast<int>(*e.preset) : customIndex);
+    updatePreset();
+}
+
+TauScale ExcitationPanel::scale() const {
+    const TauScale s[] = {TauScale::TauMax, TauScale::TauRise, TauScale::TauDur, TauScale::One};
+    return s[m_scale->currentIndex()];
+}
+
+void ExcitationPanel::setScale(TauScale s) {
+    const int index[] = {1, 0, 2, 3}; // by enum order TauRise, TauMax, TauDur, One
+    m_scale->setCurrentIndex(index[static_cast<int>(s)]);
+}
+
+void ExcitationPanel::setTstar(double tstar) {
+    m_tstar = tstar;
+    updateTimes();
+}
+
+void ExcitationPanel::updateTimes() {
+    if (!isValid()) {
+        m_times->clear();
+        return;
+    }
+    const Envelope e = envelope();
+    const CharacteristicTimes c = e.computedTimes(m_tstar);
+    QString text = tr("Computed: τ_rise %1, τ_max %2, τ_dur %3")
+                       .arg(c.tauRise, 0, 'f', 2)
+                       .arg(c.tauMax, 0, 'f', 2)
+                       .arg(c.tauDur, 0, 'f', 2);
+    if (e.preset) {
+        const CharacteristicTimes t = table4Times(*e.preset);
+        text += tr("<br>Table 4 (used for γc): τ_rise %1, τ_max %2, τ_dur %3")
+                    .arg(t.tauRise, 0, 'f', 2)
+                    .arg(t.tauMax, 0, 'f', 2)
+                    .arg(t.tauDur, 0, 'f', 2);
+    }
+    m_times->setText(text);
+    m_chart->setEnvelope(e, m_tstar);
+}
+
+} // namespace kinstab::ui

@@ -1,0 +1,95 @@
+#include "ui/NumberField.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace kinstab::ui {
+
+NumberField::NumberField(const QString& unit, QWidget* parent)
+    : QWidget(parent), m_edit(new QLineEdit(this)), m_unit(new QLabel(unit, this)),
+      m_errorLabel(new QLabel(this)) {
+    auto* column = new QVBoxLayout(this);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->setSpacing(1);
+    auto* row = new QHBoxLayout;
+    row->setSpacing(4);
+    row->addWidget(m_edit, 1);
+    row->addWidget(m_unit);
+    column->addLayout(row);
+    m_errorLabel->setStyleSheet("color: #c0392b;");
+    m_errorLabel->setWordWrap(true);
+    m_errorLabel->hide();
+    column->addWidget(m_errorLabel);
+    m_edit->setMinimumWidth(60);
+    connect(m_edit, &QLineEdit::textChanged, this, [this] {
+        revalidate();
+        emit edited();
+    });
+}
+
+void NumberField::setCheck(Check check) {
+    m_check = std::move(check);
+    revalidate();
+}
+
+void NumberField::setValue(double v) {
+    m_edit->setText(QString::number(v, 'g', 10));
+}
+
+void NumberField::setUnit(const QString& unit) {
+    m_unit->setText(unit);
+}
+
+std::optional<double> NumberField::value() const {
+    bool ok = false;
+    const double v = m_edit->text().trimmed().toDouble(&ok);
+    if (!ok || !std::isfinite(v) || !m_error.isEmpty()) return std::nullopt;
+    return v;
+}
+
+void NumberField::setFieldToolTip(const QString& tip) {
+    m_edit->setToolTip(tip);
+}
+
+void NumberField::revalidate() {
+    const QString text = m_edit->text().trimmed();
+    bool ok = false;
+    const double v = text.toDouble(&ok);
+    QString error;
+    if (text.isEmpty())
+        error = tr("required");
+    else if (!ok || !std::isfinite(v))
+        error = tr("\"%1\" is not a number").arg(text);
+    else if (m_check)
+        error = m_check(v);
+    const bool changed = error != m_error;
+    m_error = error;
+    m_errorLabel->setText(error);
+    m_errorLabel->setVisible(!error.isEmpty());
+    m_edit->setStyleSheet(error.isEmpty() ? QString()
+                                          : QStringLiteral("border: 1px solid #c0392b;"));
+    if (changed) emit validityChanged();
+}
+
+NumberField::Check positiveCheck() {
+    return
+        [](double v) { return v > 0 ? QString() : NumberField::tr("must be > 0 (got %1)").arg(v); };
+}
+
+NumberField::Check rangeCheck(double lo, double hi, bool loInclusive) {
+    return [=](double v) {
+        const bool okLo = loInclusive ? v >= lo : v > lo;
+        if (okLo && v <= hi) return QString();
+        return NumberField::tr("must be %1 %2 and ≤ %3 (got %4)")
+            .arg(loInclusive ? "≥" : ">")
+            .arg(lo)
+            .arg(hi)
+            .arg(v);
+    };
+}
+
+} // namespace kinstab::ui

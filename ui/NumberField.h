@@ -1,0 +1,50 @@
+#pragma once
+// A number input with its check: the reason it is invalid is shown beside the field, so the
+// engineer sees what to fix without pressing Run first.
+
+#include <QWidget>
+
+#include <functional>
+#include <optional>
+
+class QLabel;
+class QLineEdit;
+
+namespace kinstab::ui {
+
+class NumberField : public QWidget {
+    Q_OBJECT
+public:
+    // Returns an empty string when the value is acceptable, else the reason (shown in red).
+    using Check = std::function<QString(double)>;
+
+    explicit NumberField(const QString& unit = {}, QWidget* parent = nullptr);
+
+    void setCheck(Check check);
+    void setValue(double v);
+    void setUnit(const QString& unit);
+    std::optional<double> value() const; // nullopt when the text is not an acceptable number
+    bool isValid() const { return m_error.isEmpty(); }
+    QString error() const { return m_error; }
+    QLineEdit* lineEdit() const { return m_edit; }
+    void setFieldToolTip(const QString& tip);
+    // Re-run the check (e.g. when a field it depends on changed).
+    void revalidate();
+
+signals:
+    void edited();          // the text changed (valid or not)
+    void validityChanged(); // isValid() may have changed
+
+private:
+    QLineEdit* m_edit;
+    QLabel* m_unit;
+    QLabel* m_errorLabel;
+    Check m_check;
+    QString m_error;
+};
+
+// Common checks, with the reason phrased for the engineer.
+NumberField::Check positiveCheck();
+NumberField::Check rangeCheck(double lo, double hi, bool loInclusive = true);
+
+} // namespace kinstab::ui

@@ -1,0 +1,27 @@
+#pragma once
+// One picked point of the surface, run again on demand with its events recorded and its
+// history sampled (a sweep keeps only tau_c and the outcome, SPEC §11).
+
+#include "core/slab/History.h"
+#include "core/slab/Slab1DCase.h"
+
+#include <vector>
+
+namespace kinstab::ui {
+
+struct EnvelopeSample {
+    double tau = 0;
+    double bound = 0; // A e(t* tau) / S_max, g: the envelope the acceleration stays inside
+};
+
+struct PointRun {
+    double amplitude = 0, frequency = 0, mu = 0, limit = 1, tauRef = 1;
+    SlabResult result;
+    History history;
+    std::vector<EnvelopeSample> envelope;
+};
+
+// Samples about 40 points per period, at most ~40000 in all, and at every event.
+PointRun runPoint(const Slab1DCase& c, double amplitude, double frequencyHz);
+
+} // namespace kinstab::ui

@@ -1,0 +1,108 @@
+#include "ui/SlabPanel.h"
+
+#include "ui/NumberField.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QLabel>
+
+namespace kinstab::ui {
+
+namespace {
+constexpr double inch = 0.0254;
+}
+
+SlabPanel::SlabPanel(QWidget* parent)
+    : InputPanel(parent), m_mode(new QComboBox(this)), m_derived(new QLabel(this)),
+      m_solver(new QComboBox(this)) {
+    m_mode->addItem(tr("Wall width d"));
+    m_mode->addItem(tr("Characteristic time t*"));
+    m_mode->setToolTip(
+        tr("Enter the supporting wall's width d (t* = √(d / 2g) follows), or t* itself."));
+    form()->addRow(tr("Input:"), m_mode);
+    m_width = addField("wallWidth", tr("Wall &width d:"), tr("in"),
+                       tr("Actual width of the wall the slab bears on (an 8-inch block wall is "
+                          "7⅝ in). Sets the time scale t* = √(d / 2g) and the length scale d/2."));
+    m_width->setCheck(rangeCheck(0, 1e4, false));
+    m_tstar = addField("tstar", tr("t*:"), tr("s"),
+                       tr("Characteristic time t* = √(d / 2g): the time a block takes to fall "
+                          "half its width under gravity. The paper uses 0.099 s."));
+    m_tstar->setCheck(rangeCheck(0, 100, false));
+    form()->addRow(QString(), m_derived);
+    m_limit = addField("limit", tr("&Bearing / (d/2):"), QString(),
+                       tr("Bearing length over half the wall width. The slab falls when its "
+                          "slip relative to the wall exceeds the bearing length; the paper "
+                          "takes bearing = d/2, i.e. 1."));
+    m_limit->setCheck(rangeCheck(0, 1e6, false));
+    m_mu = addField("mu", tr("Friction &μ:"), QString(),
+                    tr("Coulomb friction coefficient between slab and wall after the mortar "
+                       "joint has cracked. Masonry triplet tests give 0.55–0.66; the paper "
+                       "uses 0.6. The slab cannot slip while |a| < μ g."));
+    m_mu->setCheck(rangeCheck(0, 10, false));
+    m_solver->addItem(tr("Exact (event-driven)"));
+    m_solver->addItem(tr("Paper RK4 (H = T/16)"));
+    m_solver->setToolTip(tr("Exact: closed-form motion between stick/slip events (default).\n"
+                            "Paper RK4: the 1980 report's fixed-step integrator, for comparison."));
+    form()->addRow(tr("Solver:"), m_solver);
+
+    connect(m_mode, &QComboBox::currentIndexChanged, this, [this] {
+        updateMode();
+        emit changed();
+    });
+    connect(m_solver, &QComboBox::currentIndexChanged, this, &InputPanel::changed);
+    connect(m_width, &NumberField::edited, this, &SlabPanel::updateDerived);
+    load(Slab1DCase{}, 7.625 * inch);
+}
+
+void SlabPanel::updateMode() {
+    const bool byWidth = m_mode->currentIndex() == 0;
+    m_width->setEnabled(byWidth);
+    m_tstar->setEnabled(!byWidth);
+    updateDerived();
+}
+
+void SlabPanel::updateDerived() {
+    const auto d = wallWidthMetres();
+    if (d) m_tstar->setValue(tstarFromWallWidth(*d));
+    m_derived->setText(d ? tr("t* = √(d / 2g) = %1 s").arg(tstarFromWallWidth(*d), 0, 'f', 4)
+                         : QString());
+}
+
+std::optional<double> SlabPanel::wallWidthMetres() const {
+    if (m_mode->currentIndex() != 0) return std::nullopt;
+    const auto v = m_width->value();
+    if (!v) return std::nullopt;
+    return m_metric ? *v / 1000.0 : *v * inch;
+}
+
+void SlabPanel::setMetric(bool metric) {
+    if (metric == m_metric) return;
+    const auto d = wallWidthMetres();
+    m_metric = metric;
+    m_width->setUnit(metric ? tr("mm") : tr("in"));
+    if (d) m_width->setValue(metric ? *d * 1000.0 : *d / inch);
+}
+
+void SlabPanel::apply(Slab1DCase& c) const {
+    const auto d = wallWidthMetres();
+    c.tstar = d ? tstarFromWallWidth(*d) : m_tstar->value().value_or(c.tstar);
+    c.slab.limit = m_limit->value().value_or(c.slab.limit);
+    c.slab.mu = m_mu->value().value_or(c.slab.mu);
+    c.solver = m_solver->currentIndex() == 0 ? SolverKind::Exact : SolverKind::Paper;
+}
+
+void SlabPanel::load(const Slab1DCase& c, std::optional<double> wallWidthM) {
+    m_mode->setCurrentIndex(wallWidthM ? 0 : 1);
+    if (wallWidthM) m_width->setValue(m_metric ? *wallWidthM * 1000.0 : *wallWidthM / inch);
+    m_tstar->setValue(c.tstar);
+    m_limit->setValue(c.slab.limit);
+    m_mu->setValue(c.slab.mu);
+    m_solver->setCurrentIndex(c.solver == SolverKind::Exact ? 0 : 1);
+    updateMode();
+}
+
+void SlabPanel::useMu(double mu) {
+    m_mu->setValue(mu);
+}
+
+} // namespace kinstab::ui

@@ -1,0 +1,68 @@
+#pragma once
+// Runs a sweep (and the A_crit(f) curve) off the GUI thread: QtConcurrent::run with a QPromise,
+// adapted to core's SweepControl. Partial results are polled a few times a second (never per
+// point), and a cancel keeps everything already computed.
+
+#include "core/slab/Slab1DCase.h"
+#include "core/sweep/Sweep.h"
+
+#include <QElapsedTimer>
+#include <QFutureWatcher>
+#include <QObject>
+#include <QTimer>
+
+#include <memory>
+#include <optional>
+
+namespace kinstab::ui {
+
+struct SweepJob {
+    Slab1DCase slabCase;
+    SweepGrid grid;
+    std::optional<double> buildingFrequency; // A_crit is also found there (the design check)
+    bool criticalCurve = true;               // A_crit at every grid frequency
+    int threads = 0;                         // 0: all cores
+};
+
+struct SweepOutput {
+    SweepResult sweep;
+    double tauRef = 1;
+    std::vector<std::optional<double>> aCrit; // per grid frequency; empty when not computed
+    std::optional<double> aCritBuilding;
+    bool buildingSearched = false;
+    bool cancelled = false;
+};
+
+class SweepRunner : public QObject {
+    Q_OBJECT
+public:
+    explicit SweepRunner(QObject* parent = nullptr);
+    ~SweepRunner() override; // cancels and waits: the task must not outlive its owner
+
+    void start(const SweepJob& job);
+    void cancel();
+    bool isRunning() const;
+    void waitForFinished() { m_watcher.waitForFinished(); }
+    // Everything computed so far (unfinished points have done = 0).
+    SweepResult snapshot() const;
+
+    static constexpr int updateIntervalMs = 250; // surface refresh while running
+
+    struct Live; // state shared with the worker threads
+
+signals:
+    void progress(qint64 done, qint64 total, double secondsLeft);
+    void partialResult(const kinstab::SweepResult& r);
+    void finished(const kinstab::ui::SweepOutput& out);
+
+private:
+    void poll();
+    void onFinished();
+
+    std::shared_ptr<Live> m_live;
+    QFutureWatcher<SweepOutput> m_watcher;
+    QTimer m_timer;
+    QElapsedTimer m_clock;
+};
+
+} // namespace kinstab::ui
