@@ -5,6 +5,9 @@
 #include <QFormLayout>
 #include <QLabel>
 
+#include <algorithm>
+#include <cmath>
+
 namespace kinstab::ui {
 
 GridPanel::GridPanel(QWidget* parent) : InputPanel(parent), m_count(new QLabel(this)) {
@@ -82,6 +85,25 @@ void GridPanel::setRanges(const GridRanges& r) {
     m_fFrom->setValue(r.fFrom);
     m_fTo->setValue(r.fTo);
     m_fStep->setValue(r.fStep);
+}
+
+bool GridPanel::setGrid(const SweepGrid& g) {
+    if (g.amplitudes.empty() || g.frequencies.empty()) return true;
+    GridRanges r = ranges();
+    bool even = true;
+    auto fit = [&even](const std::vector<double>& v, double& from, double& to, double& step) {
+        from = v.front();
+        to = v.back();
+        if (v.size() > 1) step = (to - from) / static_cast<double>(v.size() - 1);
+        for (std::size_t i = 0; i < v.size(); ++i)
+            if (std::abs(v[i] - (from + static_cast<double>(i) * step)) >
+                1e-9 * std::max(1.0, std::abs(to)))
+                even = false;
+    };
+    fit(g.amplitudes, r.aFrom, r.aTo, r.aStep);
+    fit(g.frequencies, r.fFrom, r.fTo, r.fStep);
+    setRanges(r);
+    return even;
 }
 
 SweepGrid GridPanel::grid() const {

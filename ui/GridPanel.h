@@ -23,6 +23,8 @@ public:
     GridRanges ranges() const; // valid panel only
     void setRanges(const GridRanges& r);
     SweepGrid grid() const;
+    // Shows a grid of values as from/to/step; false when it was not evenly spaced.
+    bool setGrid(const SweepGrid& g);
 
 private:
     void updateCount();

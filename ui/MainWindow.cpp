@@ -1,19 +1,25 @@
 #include "ui/MainWindow.h"
 
+#include "core/codes/CodeSet.h"
 #include "core/io/ResultJson.h"
+#include "ui/BuildingPanel.h"
 #include "ui/ChartExport.h"
+#include "ui/CodesPanel.h"
 #include "ui/CriticalChart.h"
 #include "ui/ExcitationPanel.h"
 #include "ui/GridPanel.h"
 #include "ui/HistoryChart.h"
+#include "ui/RecentFiles.h"
 #include "ui/SlabPanel.h"
 #include "ui/SliceChart.h"
 #include "ui/SurfaceView.h"
+#include "ui/VerdictPanel.h"
 
 #include <QAction>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -26,6 +32,8 @@
 #include <QToolBar>
 
 #include <cmath>
+
+#include <nlohmann/json.hpp>
 
 namespace kinstab::ui {
 
@@ -53,9 +61,10 @@ QString gammaTitle(TauScale s) {
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), m_slabPanel(new SlabPanel), m_excitation(new ExcitationPanel),
-      m_gridPanel(new GridPanel), m_surface(new SurfaceView), m_slice(new SliceChart),
-      m_history(new HistoryChart), m_critical(new CriticalChart), m_runner(new SweepRunner(this)),
+    : QMainWindow(parent), m_building(new BuildingPanel), m_codesPanel(new CodesPanel),
+      m_slabPanel(new SlabPanel), m_excitation(new ExcitationPanel), m_gridPanel(new GridPanel),
+      m_surface(new SurfaceView), m_slice(new SliceChart), m_history(new HistoryChart),
+      m_critical(new CriticalChart), m_verdict(new VerdictPanel), m_runner(new SweepRunner(this)),
       m_progress(new QProgressBar), m_status(new QLabel) {
     setWindowTitle(tr("kinstab — kinetic stability of friction-held slabs"));
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks |
@@ -70,8 +79,12 @@ MainWindow::MainWindow(QWidget* parent)
     statusBar()->addWidget(m_status, 1);
     statusBar()->addPermanentWidget(m_progress);
 
-    for (InputPanel* p : std::initializer_list<InputPanel*>{m_slabPanel, m_excitation, m_gridPanel})
+    for (InputPanel* p : std::initializer_list<InputPanel*>{m_building, m_codesPanel, m_slabPanel,
+                                                            m_excitation, m_gridPanel})
         connect(p, &InputPanel::changed, this, &MainWindow::updateRunState);
+    for (InputPanel* p : std::initializer_list<InputPanel*>{m_building, m_codesPanel})
+        connect(p, &InputPanel::changed, this, &MainWindow::updateCodes);
+    connect(m_building, &BuildingPanel::unitsChanged, m_slabPanel, &SlabPanel::setMetric);
     connect(m_slabPanel, &InputPanel::changed, this, [this] {
         if (m_slabPanel->isValid()) m_excitation->setTstar(currentCase().tstar);
     });
@@ -82,6 +95,7 @@ MainWindow::MainWindow(QWidget* parent)
     resize(1280, 800);
     restoreSettings();
     updateRunState();
+    updateTitle();
 }
 
 MainWindow::~MainWindow() {
@@ -89,8 +103,18 @@ MainWindow::~MainWindow() {
     m_runner->cancel();
 }
 
-void MainWindow::buildActions() {
+void MainWindow::buildFileMenu() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* a = file->addAction(tr("&New"), QKeySequence::New, this, &MainWindow::newProject);
+    a->setToolTip(tr("Start from the default building and slab"));
+    file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openDialog);
+    m_recent = new RecentFiles(tr("Open &recent"), this);
+    connect(m_recent, &RecentFiles::openRequested, this,
+            [this](const QString& p) { openProject(p); });
+    file->addMenu(m_recent);
+    file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
+    file->addAction(tr("Save &as…"), QKeySequence::SaveAs, this, &MainWindow::saveAsDialog);
+    file->addSeparator();
     QAction* exportSurface =
         file->addAction(tr("Export &surface (CSV/JSON)…"), this, &MainWindow::exportSurface);
     exportSurface->setShortcut(Qt::CTRL | Qt::Key_E);
@@ -103,6 +127,10 @@ void MainWindow::buildActions() {
                       [this] { exportChart(m_critical, QStringLiteral("acrit")); });
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+}
+
+void MainWindow::buildActions() {
+    buildFileMenu();
 
     QMenu* sweep = menuBar()->addMenu(tr("&Sweep"));
     m_run = sweep->addAction(tr("&Run"), this, &MainWindow::runSweep);
@@ -133,7 +161,9 @@ QDockWidget* MainWindow::addPanelDock(const QString& title, QWidget* w, Qt::Dock
 }
 
 void MainWindow::buildDocks() {
-    const std::pair<QString, QWidget*> inputs[] = {{tr("Slab and walls"), m_slabPanel},
+    const std::pair<QString, QWidget*> inputs[] = {{tr("Building"), m_building},
+                                                   {tr("Codes"), m_codesPanel},
+                                                   {tr("Slab and walls"), m_slabPanel},
                                                    {tr("Excitation"), m_excitation},
                                                    {tr("Grid"), m_gridPanel}};
     for (const auto& [title, w] : inputs) {
@@ -142,6 +172,9 @@ void MainWindow::buildDocks() {
         m_inputDocks.push_back(d);
     }
     m_inputDocks.front()->raise();
+    QDockWidget* verdict = addPanelDock(tr("Verdict"), m_verdict, Qt::LeftDockWidgetArea);
+    splitDockWidget(m_inputDocks.front(), verdict, Qt::Vertical);
+    resizeDocks({verdict}, {190}, Qt::Vertical);
     QDockWidget* slice = addPanelDock(tr("γc, τc against A"), m_slice, Qt::BottomDockWidgetArea);
     QDockWidget* history = addPanelDock(tr("History"), m_history, Qt::BottomDockWidgetArea);
     QDockWidget* critical = addPanelDock(tr("A_crit(f)"), m_critical, Qt::BottomDockWidgetArea);
@@ -152,7 +185,7 @@ void MainWindow::buildDocks() {
 }
 
 Slab1DCase MainWindow::currentCase() const {
-    Slab1DCase c;
+    Slab1DCase c = m_project.slab; // duration and paper steps are not on a panel
     m_slabPanel->apply(c);
     c.envelope = m_excitation->envelope();
     c.scale = m_excitation->scale();
@@ -160,7 +193,8 @@ Slab1DCase MainWindow::currentCase() const {
 }
 
 bool MainWindow::inputsValid() const {
-    return m_slabPanel->isValid() && m_excitation->isValid() && m_gridPanel->isValid();
+    return m_building->isValid() && m_codesPanel->isValid() && m_slabPanel->isValid() &&
+           m_excitation->isValid() && m_gridPanel->isValid();
 }
 
 void MainWindow::updateRunState() {
@@ -168,8 +202,9 @@ void MainWindow::updateRunState() {
     m_run->setEnabled(!running && inputsValid());
     m_cancel->setEnabled(running);
     if (running) return;
-    QStringList problems =
-        m_slabPanel->problems() + m_excitation->problems() + m_gridPanel->problems();
+    QStringList problems = m_building->problems() + m_codesPanel->problems() +
+                           m_slabPanel->problems() + m_excitation->problems() +
+                           m_gridPanel->problems();
     if (!problems.isEmpty()) {
         m_status->setText(tr("Fix before running — %1").arg(problems.join(QStringLiteral("; "))));
         m_run->setToolTip(problems.join(QLatin1Char('\n')));
@@ -184,6 +219,8 @@ void MainWindow::runSweep() {
     SweepJob job;
     job.slabCase = currentCase();
     job.grid = m_gridPanel->grid();
+    job.codes = m_codeResults;
+    job.search = m_project.critical;
     const std::string e = validateCase(job.slabCase) + validateGrid(job.grid);
     if (!e.empty()) {
         m_status->setText(QString::fromStdString(e));
@@ -226,6 +263,11 @@ void MainWindow::showFinished(const SweepOutput& out) {
         if (out.aCrit[j])
             m_overlays.aCrit.emplace_back(out.sweep.grid.frequencies[j], *out.aCrit[j]);
     refreshOverlays();
+    m_check = out.check;
+    if (out.check)
+        m_verdict->setCheck(*out.check);
+    else if (!out.checkError.empty())
+        m_verdict->setError(QString::fromStdString(out.checkError));
     m_progress->hide();
     m_status->setText(out.cancelled ? tr("Cancelled: %1 of %2 points computed and shown (%3 s)")
                                           .arg(out.sweep.completed)
@@ -332,18 +374,6 @@ void MainWindow::closeEvent(QCloseEvent* e) {
     m_runner->cancel();
     saveSettings();
     e->accept();
-}
-
-void MainWindow::saveSettings() {
-    QSettings s;
-    s.setValue(QStringLiteral("window/geometry"), saveGeometry());
-    s.setValue(QStringLiteral("window/state"), saveState());
-}
-
-void MainWindow::restoreSettings() {
-    QSettings s;
-    restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray());
-    restoreState(s.value(QStringLiteral("window/state")).toByteArray());
 }
 
 } // namespace kinstab::ui

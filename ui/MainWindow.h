@@ -2,6 +2,7 @@
 // The main window: input panels and the verdict in docks on the left, the γc surface in the
 // middle, the linked charts in docks below. Run/Cancel drive a SweepRunner.
 
+#include "core/io/Project.h"
 #include "core/slab/Slab1DCase.h"
 #include "ui/PointRun.h"
 #include "ui/SurfaceData.h"
@@ -19,7 +20,11 @@ class QProgressBar;
 
 namespace kinstab::ui {
 
+class BuildingPanel;
+class CodesPanel;
 class CriticalChart;
+class RecentFiles;
+class VerdictPanel;
 class ExcitationPanel;
 class GridPanel;
 class HistoryChart;
@@ -35,6 +40,13 @@ public:
 
     // The 1-DOF case the panels describe (valid panels only).
     Slab1DCase currentCase() const;
+    // Everything the panels describe, with what they do not show kept from the open project.
+    Project project() const;
+    void showProject(const Project& p);
+    // Opens a project file; false (with a message box unless quiet) when it cannot be read.
+    bool openProject(const QString& path, bool quiet = false);
+    // Writes the project atomically (QSaveFile); empty on success, else the reason.
+    QString saveProjectAs(const QString& path);
     bool inputsValid() const;
     // The window as an image, with the 3D view rendered in (grab() leaves a GL window blank).
     QImage screenshot();
@@ -51,12 +63,21 @@ public:
     SlabPanel* slabPanel() const { return m_slabPanel; }
     ExcitationPanel* excitationPanel() const { return m_excitation; }
     GridPanel* gridPanel() const { return m_gridPanel; }
+    BuildingPanel* buildingPanel() const { return m_building; }
+    CodesPanel* codesPanel() const { return m_codesPanel; }
+    VerdictPanel* verdictPanel() const { return m_verdict; }
+    const QString& projectPath() const { return m_path; }
     const SweepResult& lastSweep() const { return m_sweep; }
     const std::optional<PointRun>& pickedRun() const { return m_picked; }
+    const std::optional<DesignCheckResult>& lastCheck() const { return m_check; }
 
 public slots:
     void runSweep();
     void cancelSweep();
+    void newProject();
+    void openDialog();
+    bool save();
+    bool saveAsDialog();
 
 signals:
     void sweepFinished();
@@ -66,6 +87,9 @@ protected:
 
 private:
     void buildActions();
+    void buildFileMenu();
+    void updateCodes();
+    void updateTitle();
     void buildDocks();
     void updateRunState();
     void showPartial(const SweepResult& r);
@@ -79,6 +103,8 @@ private:
     void saveSettings();
     void restoreSettings();
 
+    BuildingPanel* m_building;
+    CodesPanel* m_codesPanel;
     SlabPanel* m_slabPanel;
     ExcitationPanel* m_excitation;
     GridPanel* m_gridPanel;
@@ -86,6 +112,8 @@ private:
     SliceChart* m_slice;
     HistoryChart* m_history;
     CriticalChart* m_critical;
+    VerdictPanel* m_verdict;
+    RecentFiles* m_recent = nullptr;
     SweepRunner* m_runner;
     QAction* m_run = nullptr;
     QAction* m_cancel = nullptr;
@@ -94,12 +122,17 @@ private:
     QLabel* m_status;
     std::vector<QDockWidget*> m_inputDocks;
 
+    Project m_project; // the open project: inputs no panel shows are kept from it
+    QString m_path;
+    std::vector<CodeResult> m_codeResults;
+
     // What the surface shows, and the case it was computed with.
     Slab1DCase m_sweepCase;
     SweepResult m_sweep;
     GammaGrid m_gamma;
     SurfaceOverlays m_overlays;
     std::optional<PointRun> m_picked;
+    std::optional<DesignCheckResult> m_check;
     int m_selA = -1, m_selF = -1;
 };
 

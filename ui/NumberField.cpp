@@ -36,6 +36,23 @@ void NumberField::setCheck(Check check) {
     revalidate();
 }
 
+void NumberField::setOptional(const QString& placeholder) {
+    m_optional = true;
+    m_edit->setPlaceholderText(placeholder);
+    revalidate();
+}
+
+void NumberField::setOptionalValue(std::optional<double> v) {
+    if (v)
+        setValue(*v);
+    else
+        m_edit->clear();
+}
+
+bool NumberField::isEmpty() const {
+    return m_edit->text().trimmed().isEmpty();
+}
+
 void NumberField::setValue(double v) {
     m_edit->setText(QString::number(v, 'g', 10));
 }
@@ -61,7 +78,7 @@ void NumberField::revalidate() {
     const double v = text.toDouble(&ok);
     QString error;
     if (text.isEmpty())
-        error = tr("required");
+        error = m_optional ? QString() : tr("required");
     else if (!ok || !std::isfinite(v))
         error = tr("\"%1\" is not a number").arg(text);
     else if (m_check)

@@ -21,6 +21,11 @@ public:
     explicit NumberField(const QString& unit = {}, QWidget* parent = nullptr);
 
     void setCheck(Check check);
+    // An optional field may be left empty (value() is then nullopt and the field is valid);
+    // the placeholder says what empty means ("from the occupancy").
+    void setOptional(const QString& placeholder);
+    void setOptionalValue(std::optional<double> v);
+    bool isEmpty() const;
     void setValue(double v);
     void setUnit(const QString& unit);
     std::optional<double> value() const; // nullopt when the text is not an acceptable number
@@ -41,6 +46,7 @@ private:
     QLabel* m_errorLabel;
     Check m_check;
     QString m_error;
+    bool m_optional = false;
 };
 
 // Common checks, with the reason phrased for the engineer.

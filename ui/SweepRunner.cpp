@@ -90,13 +90,19 @@ SweepOutput runJob(const SweepJob& job, SweepRunner::Live& live) {
             ++live.completed;
         });
     }
-    if (job.buildingFrequency && !live.control.isCancelled()) {
-        out.aCritBuilding = criticalAmplitude(point, *job.buildingFrequency, mu).amplitude;
-        out.buildingSearched = !live.control.isCancelled();
+    if (!job.codes.empty() && !live.control.isCancelled()) {
+        try {
+            out.check = designCheck(job.codes, job.slabCase, job.search, point);
+        } catch (const std::exception& e) {
+            out.checkError = e.what();
+        }
         ++live.completed;
     }
     out.cancelled = live.control.isCancelled();
-    if (out.cancelled) out.aCrit.clear();
+    if (out.cancelled) {
+        out.aCrit.clear();
+        out.check.reset();
+    }
     return out;
 }
 
@@ -134,7 +140,7 @@ void SweepRunner::start(const SweepJob& job) {
     if (isRunning()) return;
     auto live = std::make_shared<Live>();
     live->total = job.grid.size() + (job.criticalCurve ? job.grid.frequencies.size() : 0) +
-                  (job.buildingFrequency ? 1 : 0);
+                  (job.codes.empty() ? 0 : 1);
     live->partial.grid = job.grid;
     live->partial.points.assign(job.grid.size(), PointResult{Outcome::Failed, std::nan("")});
     live->partial.done.assign(job.grid.size(), 0);

@@ -3,6 +3,7 @@
 // adapted to core's SweepControl. Partial results are polled a few times a second (never per
 // point), and a cancel keeps everything already computed.
 
+#include "core/codes/DesignCheck.h"
 #include "core/slab/Slab1DCase.h"
 #include "core/sweep/Sweep.h"
 
@@ -19,17 +20,18 @@ namespace kinstab::ui {
 struct SweepJob {
     Slab1DCase slabCase;
     SweepGrid grid;
-    std::optional<double> buildingFrequency; // A_crit is also found there (the design check)
-    bool criticalCurve = true;               // A_crit at every grid frequency
-    int threads = 0;                         // 0: all cores
+    std::vector<CodeResult> codes; // the design check runs on these (none: no check)
+    CriticalSearch search;         // of the design check
+    bool criticalCurve = true;     // A_crit at every grid frequency
+    int threads = 0;               // 0: all cores
 };
 
 struct SweepOutput {
     SweepResult sweep;
     double tauRef = 1;
     std::vector<std::optional<double>> aCrit; // per grid frequency; empty when not computed
-    std::optional<double> aCritBuilding;
-    bool buildingSearched = false;
+    std::optional<DesignCheckResult> check;   // absent when cancelled, no codes, or failed
+    std::string checkError;
     bool cancelled = false;
 };
 

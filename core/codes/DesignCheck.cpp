@@ -56,10 +56,14 @@ CodeVerdict judge(const CodeResult& r, std::optional<double> aCrit, double searc
 
 DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1DCase& slab,
                               const CriticalSearch& search) {
+    return designCheck(codes, slab, search, slab1DPoint(slab));
+}
+
+DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1DCase& slab,
+                              const CriticalSearch& search, const PointFunction& point) {
     if (const std::string e = validateCase(slab); !e.empty()) throw InputError(e);
     if (const std::string e = validateCriticalSearch(search); !e.empty()) throw InputError(e);
     DesignCheckResult out;
-    const PointFunction point = slab1DPoint(slab);
     std::map<double, std::optional<double>> cache; // A_crit by frequency
     for (const CodeResult& r : codes) {
         if (!(r.periodSeconds > 0) || !std::isfinite(r.periodSeconds))

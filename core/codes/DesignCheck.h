@@ -38,6 +38,10 @@ struct DesignCheckResult {
 // A_crit(f) is searched once per distinct frequency. Throws InputError on a bad case or search.
 DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1DCase& slab,
                               const CriticalSearch& search = {});
+// The same with the slab runs supplied by the caller: the GUI passes one that returns at once
+// after a cancel, so a running check stops within one run.
+DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1DCase& slab,
+                              const CriticalSearch& search, const PointFunction& point);
 
 std::string validateCriticalSearch(const CriticalSearch& s); // empty when fine
 

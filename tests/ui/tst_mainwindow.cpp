@@ -2,25 +2,35 @@
 // Run, a cancelled sweep keeps its points, a finished sweep shows exactly what runSweep (and
 // kinstab-cli surface) computes, and picking a point shows that point's history.
 
+#include "core/io/Project.h"
 #include "core/sweep/Sweep.h"
+#include "ui/BuildingPanel.h"
+#include "ui/CodesPanel.h"
+#include "ui/ExcitationPanel.h"
 #include "ui/GridPanel.h"
 #include "ui/HistoryChart.h"
 #include "ui/MainWindow.h"
 #include "ui/NumberField.h"
 #include "ui/SlabPanel.h"
 #include "ui/SurfaceView.h"
+#include "ui/VerdictPanel.h"
 
 #include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
 #include <QElapsedTimer>
 #include <QFileInfo>
+#include <QGroupBox>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
 #include <QLineEdit>
 #include <QProcess>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <cmath>
@@ -57,13 +67,88 @@ private:
     }
 
 private slots:
-    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear(); // a first start
+    }
     void init() {
         w = std::make_unique<MainWindow>();
         w->show();
         QVERIFY(QTest::qWaitForWindowExposed(w.get()));
     }
     void cleanup() { w.reset(); }
+
+    // First start: the paper's 16-story example (Furgerson 1980 ch. V) is open.
+    void firstStartShowsPaperExample() {
+        const Project p = w->project();
+        QCOMPARE(p.building.stories, 16);
+        QCOMPARE(p.building.height, 177.0);
+        QCOMPARE(p.building.planDimension, 78.62);
+        QVERIFY(p.codes.ubc1976.has_value());
+        QVERIFY(p.codes.atc306.has_value());
+        QCOMPARE(w->verdictPanel()->rowCount(), 4); // UBC 1976, ATC 3-06, ASCE 7-22, EC8
+    }
+
+    // The paper's verdict (ch. V): A_crit(1 Hz) = 0.95 against F16/w = 0.140 (UBC 1976) and
+    // 0.275 (ATC 3-06): overstress governs. SPEC §4: A = 0.95 is stable, A = 1.00 collapses.
+    void paperExampleVerdict() {
+        smallGrid();
+        w->runAction()->trigger();
+        QVERIFY(waitFinished(120000));
+        QCOMPARE(w->verdictPanel()->rowCount(), 4);
+        for (int row = 0; row < 2; ++row)
+            QCOMPARE(w->verdictPanel()->verdictText(row), QStringLiteral("overstress governs"));
+        const auto& codes = w->surfaceView()->overlays().codes;
+        QCOMPARE(codes.size(), std::size_t(4));
+        QVERIFY(w->lastCheck().has_value());
+        const CodeVerdict& ubc = w->lastCheck()->codes.front();
+        QVERIFY(ubc.aCrit.has_value());
+        QVERIFY(*ubc.aCrit > 0.95 && *ubc.aCrit <= 1.0);
+        QCOMPARE(ubc.frequencyHz, 1.0);
+    }
+
+    void saveThenOpenReproducesEveryInput() {
+        // Change inputs on every panel, away from the example's values.
+        setText("stories", "12");
+        w->buildingPanel()->findChild<QComboBox*>()->setCurrentIndex(
+            1); // metres (wall width in mm)
+        setText("height", "120.5");
+        setText("planDimension", "60");
+        setText("period", "0.8");
+        setText("mu", "0.55");
+        w->slabPanel()->findChild<QComboBox*>()->setCurrentIndex(0); // by wall width
+        setText("wallWidth", "250");
+        setText("limit", "1.25");
+        setText("ubc76K", "1.0");
+        setText("atcAa", "0.3");
+        for (QGroupBox* g : w->codesPanel()->findChildren<QGroupBox*>())
+            if (g->title().startsWith("UBC 1997")) g->setChecked(true);
+        setText("ubc97R", "5.5");
+        w->excitationPanel()->setEnvelope(Envelope{0.2, 0.9, std::nullopt});
+        w->excitationPanel()->setScale(TauScale::TauRise);
+        w->gridPanel()->setRanges(GridRanges{0.5, 1.3, 0.1, 0.4, 2.0, 0.2});
+        QVERIFY(w->inputsValid());
+        const nlohmann::json before = projectToJson(w->project());
+
+        QTemporaryDir dir;
+        const QString path = dir.filePath("p.json");
+        QCOMPARE(w->saveProjectAs(path), QString());
+        w->newProject();
+        QVERIFY(projectToJson(w->project()) != before);
+        QVERIFY(w->openProject(path, true));
+        QCOMPARE(QString::fromStdString(projectToJson(w->project()).dump(1)),
+                 QString::fromStdString(before.dump(1)));
+        QCOMPARE(w->projectPath(), path);
+        // A broken file is refused with the window unchanged.
+        QFile broken(dir.filePath("broken.json"));
+        QVERIFY(broken.open(QIODevice::WriteOnly));
+        broken.write(
+            "{\"format\": \"kinstab-project\", \"version\": 1, \"building\": {\"height\": -3");
+        broken.close();
+        QVERIFY(!w->openProject(broken.fileName(), true));
+        QCOMPARE(QString::fromStdString(projectToJson(w->project()).dump(1)),
+                 QString::fromStdString(before.dump(1)));
+    }
 
     void invalidValueDisablesRun_data() {
         QTest::addColumn<QString>("name");
@@ -75,9 +160,9 @@ private slots:
         QTest::newRow("mu not a number") << "mu"
                                          << "abc"
                                          << "is not a number";
-        QTest::newRow("zero wall width") << "wallWidth"
-                                         << "0"
-                                         << "must be >";
+        QTest::newRow("zero t*") << "tstar"
+                                 << "0"
+                                 << "must be >";
         QTest::newRow("empty bearing") << "limit"
                                        << ""
                                        << "required";
@@ -90,6 +175,15 @@ private slots:
         QTest::newRow("f from zero") << "fFrom"
                                      << "0"
                                      << "must be >";
+        QTest::newRow("negative height") << "height"
+                                         << "-3"
+                                         << "must be >";
+        QTest::newRow("fractional stories") << "stories"
+                                            << "2.5"
+                                            << "whole number";
+        QTest::newRow("UBC K out of range") << "ubc76K"
+                                            << "7"
+                                            << "must be";
     }
     void invalidValueDisablesRun() {
         QFETCH(QString, name);
@@ -138,10 +232,15 @@ private slots:
         smallGrid();
         w->runAction()->trigger();
         QVERIFY(waitFinished(60000));
+        // The same case as the window's (the paper's example: moderate envelope, tau_max scale).
+        const Slab1DCase c = w->currentCase();
+        QCOMPARE(c.envelope.name(), std::string("moderate"));
         QProcess cli;
         cli.start(QStringLiteral(KINSTAB_CLI),
                   {"surface", "--amplitudes", "0.9:1.1:0.05", "--frequencies", "0.5:1.25:0.25",
-                   "--wall-width-in", "7.625"});
+                   "--tstar", QString::number(c.tstar, 'g', 17), "--mu",
+                   QString::number(c.slab.mu, 'g', 17), "--limit",
+                   QString::number(c.slab.limit, 'g', 17)});
         QVERIFY(cli.waitForFinished(60000));
         QCOMPARE(cli.exitCode(), 0);
         const QJsonObject j = QJsonDocument::fromJson(cli.readAllStandardOutput()).object();

@@ -1,0 +1,183 @@
+#include "ui/BuildingPanel.h"
+
+#include "core/codes/Atc306.h"
+#include "core/codes/Eurocode8.h"
+#include "core/codes/Ubc1976.h"
+#include "core/codes/Ubc1997.h"
+#include "ui/NumberField.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QLineEdit>
+
+#include <cmath>
+#include <iterator>
+
+namespace kinstab::ui {
+
+namespace {
+const std::pair<StructuralSystem, const char*> systems[] = {
+    {StructuralSystem::DualFrameWall,
+     QT_TRANSLATE_NOOP("BuildingPanel", "Dual: moment frame + shear walls")},
+    {StructuralSystem::SteelMomentFrame, QT_TRANSLATE_NOOP("BuildingPanel", "Steel moment frame")},
+    {StructuralSystem::ConcreteMomentFrame,
+     QT_TRANSLATE_NOOP("BuildingPanel", "Concrete moment frame")},
+    {StructuralSystem::SteelBracedEccentric,
+     QT_TRANSLATE_NOOP("BuildingPanel", "Steel eccentrically braced frame")},
+    {StructuralSystem::ShearWall,
+     QT_TRANSLATE_NOOP("BuildingPanel", "Shear walls (concrete or masonry)")},
+    {StructuralSystem::BracedFrame,
+     QT_TRANSLATE_NOOP("BuildingPanel", "Concentrically braced frame")},
+    {StructuralSystem::Other, QT_TRANSLATE_NOOP("BuildingPanel", "Other")},
+};
+const std::pair<Occupancy, const char*> occupancies[] = {
+    {Occupancy::Standard, QT_TRANSLATE_NOOP("BuildingPanel", "Standard (offices, dwellings)")},
+    {Occupancy::Assembly, QT_TRANSLATE_NOOP("BuildingPanel", "Assembly (> 300 in one room)")},
+    {Occupancy::Hazardous, QT_TRANSLATE_NOOP("BuildingPanel", "Hazardous contents")},
+    {Occupancy::Essential,
+     QT_TRANSLATE_NOOP("BuildingPanel", "Essential (hospital, fire station)")},
+};
+} // namespace
+
+BuildingPanel::BuildingPanel(QWidget* parent)
+    : InputPanel(parent), m_name(new QLineEdit(this)), m_units(new QComboBox(this)),
+      m_estimate(new QCheckBox(tr("Estimate by each code's formula"), this)),
+      m_estimates(new QLabel(this)), m_system(new QComboBox(this)),
+      m_occupancy(new QComboBox(this)) {
+    m_name->setToolTip(tr("A name for the building, printed on exports and reports."));
+    form()->addRow(tr("&Name:"), m_name);
+    m_units->addItems({tr("feet"), tr("metres")});
+    m_units->setToolTip(
+        tr("Length unit of the height and plan dimension (the wall width follows: in or mm)."));
+    form()->addRow(tr("&Units:"), m_units);
+    m_stories =
+        addField("stories", tr("&Stories:"), QString(),
+                 tr("Number of stories above the base, N. The top floor's force ratio is what "
+                    "the slab on the top floor feels."));
+    m_stories->setCheck([](double v) {
+        return v >= 1 && v <= 300 && v == std::floor(v)
+                   ? QString()
+                   : tr("a whole number from 1 to 300 (got %1)").arg(v);
+    });
+    m_height = addField("height", tr("&Height h_n:"), tr("ft"),
+                        tr("Height of the roof above the base, h_n. Enters the period formulas "
+                           "(T = 0.05 h_n/√D) and the vertical force distribution."));
+    m_height->setCheck(rangeCheck(0, 3000, false));
+    m_dimension = addField("planDimension", tr("&Plan dimension D:"), tr("ft"),
+                           tr("Plan dimension of the building parallel to the earthquake force, D "
+                              "(UBC) or L (ATC 3-06). Enters T = 0.05 h_n/√D."));
+    m_dimension->setCheck(rangeCheck(0, 10000, false));
+    m_estimate->setToolTip(tr("Leave the period to each code's own formula instead of entering a "
+                              "computed or measured fundamental period."));
+    form()->addRow(QString(), m_estimate);
+    m_period = addField("period", tr("&Period T:"), tr("s"),
+                        tr("Fundamental period of the building. The floor motion's frequency is "
+                           "taken as f = 1/T; the paper's building has T = 1.0 s."));
+    m_period->setCheck(rangeCheck(0, 20, false));
+    m_estimates->setWordWrap(true);
+    form()->addRow(QString(), m_estimates);
+    for (const auto& entry : systems)
+        m_system->addItem(tr(entry.second));
+    m_system->setToolTip(tr("Lateral-force-resisting system: sets each code's period formula and "
+                            "its force reduction (K, R, q) defaults."));
+    form()->addRow(tr("S&ystem:"), m_system);
+    for (const auto& entry : occupancies)
+        m_occupancy->addItem(tr(entry.second));
+    m_occupancy->setToolTip(tr("Use of the building: each code's importance factor follows from it "
+                               "unless a code's own input overrides it."));
+    form()->addRow(tr("&Occupancy:"), m_occupancy);
+
+    connect(m_units, &QComboBox::currentIndexChanged, this, &BuildingPanel::switchUnits);
+    connect(m_estimate, &QCheckBox::toggled, this, [this] {
+        m_period->setEnabled(!m_estimate->isChecked());
+        updateEstimate();
+        emit changed();
+    });
+    for (QComboBox* c : {m_system, m_occupancy})
+        connect(c, &QComboBox::currentIndexChanged, this, &InputPanel::changed);
+    connect(m_name, &QLineEdit::textChanged, this, &InputPanel::changed);
+    connect(this, &InputPanel::changed, this, &BuildingPanel::updateEstimate);
+    setBuilding(Building{});
+}
+
+bool BuildingPanel::metric() const {
+    return m_unit == LengthUnit::Metres;
+}
+
+void BuildingPanel::switchUnits() {
+    const LengthUnit to = m_units->currentIndex() == 1 ? LengthUnit::Metres : LengthUnit::Feet;
+    if (to == m_unit) return;
+    const double factor = metresPerUnit(m_unit) / metresPerUnit(to);
+    for (NumberField* f : {m_height, m_dimension})
+        if (const auto v = f->value()) f->setValue(*v * factor);
+    m_unit = to;
+    const QString u = metric() ? tr("m") : tr("ft");
+    m_height->setUnit(u);
+    m_dimension->setUnit(u);
+    emit unitsChanged(metric());
+    emit changed();
+}
+
+Building BuildingPanel::building() const {
+    Building b = m_kept;
+    b.name = m_name->text().toStdString();
+    b.unit = m_unit;
+    b.stories = static_cast<int>(m_stories->value().value_or(b.stories));
+    b.height = m_height->value().value_or(b.height);
+    b.planDimension = m_dimension->value().value_or(b.planDimension);
+    b.period = m_estimate->isChecked() ? std::nullopt : m_period->value();
+    b.system = systems[m_system->currentIndex()].first;
+    b.occupancy = occupancies[m_occupancy->currentIndex()].first;
+    // Story data from a file only fit the building they came with.
+    if (static_cast<int>(b.storyWeights.size()) != b.stories) b.storyWeights.clear();
+    if (static_cast<int>(b.storyHeights.size()) != b.stories || b.height != m_kept.height)
+        b.storyHeights.clear();
+    return b;
+}
+
+void BuildingPanel::setBuilding(const Building& b) {
+    m_kept = b;
+    m_name->setText(QString::fromStdString(b.name));
+    m_unit = b.unit;
+    m_units->blockSignals(true);
+    m_units->setCurrentIndex(b.unit == LengthUnit::Metres ? 1 : 0);
+    m_units->blockSignals(false);
+    const QString u = metric() ? tr("m") : tr("ft");
+    m_height->setUnit(u);
+    m_dimension->setUnit(u);
+    m_stories->setValue(b.stories);
+    m_height->setValue(b.height);
+    m_dimension->setValue(b.planDimension);
+    m_estimate->setChecked(!b.period);
+    if (b.period) m_period->setValue(*b.period);
+    m_period->setEnabled(b.period.has_value());
+    for (int i = 0; i < static_cast<int>(std::size(systems)); ++i)
+        if (systems[i].first == b.system) m_system->setCurrentIndex(i);
+    for (int i = 0; i < static_cast<int>(std::size(occupancies)); ++i)
+        if (occupancies[i].first == b.occupancy) m_occupancy->setCurrentIndex(i);
+    emit unitsChanged(metric());
+    updateEstimate();
+}
+
+void BuildingPanel::updateEstimate() {
+    if (!isValid()) {
+        m_estimates->clear();
+        return;
+    }
+    Building b = building();
+    b.period.reset();
+    try {
+        m_estimates->setText(
+            tr("Formula periods: UBC 1976 %1 s, ATC 3-06 %2 s, UBC 1997 %3 s, EC8 %4 s")
+                .arg(ubc1976FormulaPeriod(b), 0, 'f', 3)
+                .arg(atc306FormulaPeriod(b), 0, 'f', 3)
+                .arg(ubc1997FormulaPeriod(b), 0, 'f', 3)
+                .arg(eurocode8FormulaPeriod(b), 0, 'f', 3));
+    } catch (const std::exception& e) {
+        m_estimates->setText(QString::fromStdString(e.what()));
+    }
+}
+
+} // namespace kinstab::ui

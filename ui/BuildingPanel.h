@@ -1,0 +1,48 @@
+#pragma once
+// Building: what every code needs (units, stories, height, plan dimension, period entered or
+// estimated by each code's formula, lateral system, occupancy). Story weights and heights that
+// a project file gives are kept as they are (uniform when empty).
+
+#include "core/codes/Building.h"
+#include "ui/InputPanel.h"
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QLineEdit;
+
+namespace kinstab::ui {
+
+class NumberField;
+
+class BuildingPanel : public InputPanel {
+    Q_OBJECT
+public:
+    explicit BuildingPanel(QWidget* parent = nullptr);
+
+    Building building() const; // valid panel only
+    void setBuilding(const Building& b);
+    bool metric() const;
+
+signals:
+    void unitsChanged(bool metric);
+
+private:
+    void switchUnits();
+    void updateEstimate();
+
+    Building m_kept; // story weights and heights from the file
+    LengthUnit m_unit = LengthUnit::Feet;
+    QLineEdit* m_name;
+    QComboBox* m_units;
+    NumberField* m_stories;
+    NumberField* m_height;
+    NumberField* m_dimension;
+    QCheckBox* m_estimate;
+    NumberField* m_period;
+    QLabel* m_estimates;
+    QComboBox* m_system;
+    QComboBox* m_occupancy;
+};
+
+} // namespace kinstab::ui

@@ -1,0 +1,194 @@
+// MainWindow, continued: the project (New/Open/Save/Save As, recent files), the code ratios
+// that follow the building, and what QSettings keeps between sessions.
+
+#include "core/codes/CodeSet.h"
+#include "ui/BuildingPanel.h"
+#include "ui/CodesPanel.h"
+#include "ui/ExcitationPanel.h"
+#include "ui/GridPanel.h"
+#include "ui/MainWindow.h"
+#include "ui/RecentFiles.h"
+#include "ui/SlabPanel.h"
+#include "ui/SurfaceView.h"
+#include "ui/VerdictPanel.h"
+
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMessageBox>
+#include <QSaveFile>
+#include <QSettings>
+#include <QStatusBar>
+
+namespace kinstab::ui {
+
+namespace {
+constexpr double inch = 0.0254;
+const QString lastProjectKey = QStringLiteral("project/lastInputs");
+const QString examplePath = QStringLiteral(":/examples/paper-16-story.json");
+
+QColor codeColour(const std::string& code) {
+    if (code == "ubc1976") return QColor(200, 30, 160);
+    if (code == "atc306") return QColor(240, 130, 0);
+    if (code == "ubc1997") return QColor(120, 70, 200);
+    if (code == "asce7_22") return QColor(0, 150, 70);
+    return QColor(0, 120, 200);
+}
+} // namespace
+
+Project MainWindow::project() const {
+    Project p = m_project;
+    p.building = m_building->building();
+    p.codes = m_codesPanel->codes();
+    p.slab = currentCase();
+    const auto d = m_slabPanel->wallWidthMetres();
+    p.wallWidthIn = d ? std::optional<double>(*d / inch) : std::nullopt;
+    p.grid = m_gridPanel->grid();
+    return p;
+}
+
+void MainWindow::showProject(const Project& p) {
+    m_project = p;
+    m_building->setBuilding(p.building);
+    m_codesPanel->setCodes(p.codes);
+    m_slabPanel->load(p.slab,
+                      p.wallWidthIn ? std::optional<double>(*p.wallWidthIn * inch) : std::nullopt);
+    m_excitation->setEnvelope(p.slab.envelope);
+    m_excitation->setScale(p.slab.scale);
+    m_excitation->setTstar(p.slab.tstar);
+    if (!m_gridPanel->setGrid(p.grid))
+        statusBar()->showMessage(
+            tr("The project's grid was not evenly spaced: shown as from/to/step"), 8000);
+    updateCodes();
+    updateRunState();
+    updateTitle();
+}
+
+void MainWindow::updateCodes() {
+    m_codeResults.clear();
+    m_overlays.codes.clear();
+    m_overlays.buildingFrequency.reset();
+    if (m_building->isValid() && m_codesPanel->isValid()) {
+        const Building b = m_building->building();
+        try {
+            m_codeResults = runCodes(b, m_codesPanel->codes());
+            m_verdict->setCodeResults(m_codeResults);
+        } catch (const std::exception& e) {
+            m_verdict->setError(QString::fromStdString(e.what()));
+        }
+        for (const CodeResult& r : m_codeResults)
+            m_overlays.codes.push_back(
+                {QString::fromStdString(r.title), r.topRatio, codeColour(r.code)});
+        // The building's frequency: the entered period, else the first code's estimate.
+        if (b.period)
+            m_overlays.buildingFrequency = 1.0 / *b.period;
+        else if (!m_codeResults.empty())
+            m_overlays.buildingFrequency = 1.0 / m_codeResults.front().periodSeconds;
+    }
+    refreshOverlays();
+}
+
+void MainWindow::updateTitle() {
+    const QString name = m_path.isEmpty() ? tr("untitled") : QFileInfo(m_path).fileName();
+    setWindowTitle(tr("%1 — kinstab").arg(name));
+}
+
+void MainWindow::newProject() {
+    Project p;
+    p.codes.ubc1976 = Ubc1976Inputs{};
+    p.codes.atc306 = Atc306Inputs{};
+    p.wallWidthIn = 7.625;
+    p.grid = GridPanel().grid();
+    m_path.clear();
+    showProject(p);
+}
+
+bool MainWindow::openProject(const QString& path, bool quiet) {
+    QFile f(path);
+    try {
+        if (!f.open(QIODevice::ReadOnly)) throw ProjectError(f.errorString().toStdString());
+        const QByteArray text = f.readAll();
+        const Project p = parseProject(text.toStdString());
+        m_path = path.startsWith(QLatin1Char(':')) ? QString() : path;
+        showProject(p);
+        if (!m_path.isEmpty()) m_recent->add(m_path);
+        statusBar()->showMessage(tr("Opened %1").arg(path), 5000);
+        return true;
+    } catch (const std::exception& e) {
+        if (!quiet)
+            QMessageBox::warning(this, tr("Open project"),
+                                 tr("%1:\n%2").arg(path, QString::fromStdString(e.what())));
+        return false;
+    }
+}
+
+void MainWindow::openDialog() {
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open project"), QFileInfo(m_path).path(),
+                                     tr("kinstab projects (*.json);;All files (*)"));
+    if (!path.isEmpty()) openProject(path);
+}
+
+QString MainWindow::saveProjectAs(const QString& path) {
+    if (!inputsValid()) return tr("fix the marked inputs first");
+    const Project p = project();
+    if (const std::string e = validateProject(p); !e.empty()) return QString::fromStdString(e);
+    const std::string text = projectToJson(p).dump(2) + "\n";
+    QSaveFile f(path); // atomic: the old file stays until the new one is complete
+    if (!f.open(QIODevice::WriteOnly) ||
+        f.write(text.data(), static_cast<qint64>(text.size())) < 0 || !f.commit())
+        return f.errorString();
+    m_project = p;
+    m_path = path;
+    m_recent->add(path);
+    updateTitle();
+    return {};
+}
+
+bool MainWindow::save() {
+    if (m_path.isEmpty()) return saveAsDialog();
+    const QString e = saveProjectAs(m_path);
+    if (!e.isEmpty())
+        QMessageBox::warning(this, tr("Save project"), tr("%1: %2").arg(m_path, e));
+    else
+        statusBar()->showMessage(tr("Saved %1").arg(m_path), 5000);
+    return e.isEmpty();
+}
+
+bool MainWindow::saveAsDialog() {
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Save project"), m_path.isEmpty() ? QStringLiteral("project.json") : m_path,
+        tr("kinstab projects (*.json)"));
+    if (path.isEmpty()) return false;
+    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
+    m_path = path;
+    return save();
+}
+
+void MainWindow::saveSettings() {
+    QSettings s;
+    s.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    s.setValue(QStringLiteral("window/state"), saveState());
+    s.setValue(QStringLiteral("project/path"), m_path);
+    if (inputsValid())
+        s.setValue(lastProjectKey, QString::fromStdString(projectToJson(project()).dump()));
+}
+
+void MainWindow::restoreSettings() {
+    QSettings s;
+    restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(s.value(QStringLiteral("window/state")).toByteArray());
+    // Last session's inputs; on the first start, the paper's example.
+    const QString last = s.value(lastProjectKey).toString();
+    try {
+        if (last.isEmpty()) throw ProjectError("first start");
+        showProject(parseProject(last.toStdString()));
+        m_path = s.value(QStringLiteral("project/path")).toString();
+        updateTitle();
+    } catch (const std::exception&) {
+        if (!openProject(examplePath, true)) newProject();
+    }
+}
+
+} // namespace kinstab::ui
