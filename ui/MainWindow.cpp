@@ -14,6 +14,7 @@
 #include "ui/SliceChart.h"
 #include "ui/SurfaceView.h"
 #include "ui/VerdictPanel.h"
+#include "ui/teaching/TeachingView.h"
 
 #include <QAction>
 #include <QCloseEvent>
@@ -29,6 +30,7 @@
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QToolBar>
 
 #include <cmath>
@@ -69,7 +71,13 @@ MainWindow::MainWindow(QWidget* parent)
     setWindowTitle(tr("kinstab — kinetic stability of friction-held slabs"));
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks |
                    QMainWindow::AllowNestedDocks);
-    setCentralWidget(m_surface);
+    // The γc surface and the teaching view share the centre as tabs.
+    m_centre = new QTabWidget;
+    m_centre->setDocumentMode(true);
+    m_centre->addTab(m_surface, tr("γc surface"));
+    m_teaching = new TeachingView;
+    m_centre->addTab(m_teaching, tr("Teaching"));
+    setCentralWidget(m_centre);
     buildActions();
     buildDocks();
     m_progress->setMaximumWidth(260);
@@ -295,6 +303,7 @@ void MainWindow::pickPoint(int ai, int fi) {
     const double f = m_gamma.frequencies[static_cast<std::size_t>(fi)];
     m_picked = runPoint(m_sweepCase, a, f);
     m_history->setRun(*m_picked);
+    m_teaching->showPoint(a, f); // the teaching tab follows the pick
 }
 
 void MainWindow::updateSlice() {

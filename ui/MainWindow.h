@@ -17,6 +17,7 @@ class QChartView;
 class QDockWidget;
 class QLabel;
 class QProgressBar;
+class QTabWidget;
 
 namespace kinstab::ui {
 
@@ -31,6 +32,7 @@ class HistoryChart;
 class SlabPanel;
 class SliceChart;
 class SurfaceView;
+class TeachingView;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -66,6 +68,7 @@ public:
     BuildingPanel* buildingPanel() const { return m_building; }
     CodesPanel* codesPanel() const { return m_codesPanel; }
     VerdictPanel* verdictPanel() const { return m_verdict; }
+    TeachingView* teachingView() const { return m_teaching; }
     const QString& projectPath() const { return m_path; }
     const SweepResult& lastSweep() const { return m_sweep; }
     const std::optional<PointRun>& pickedRun() const { return m_picked; }
@@ -113,6 +116,8 @@ private:
     HistoryChart* m_history;
     CriticalChart* m_critical;
     VerdictPanel* m_verdict;
+    QTabWidget* m_centre = nullptr;
+    TeachingView* m_teaching = nullptr;
     RecentFiles* m_recent = nullptr;
     SweepRunner* m_runner;
     QAction* m_run = nullptr;

@@ -25,6 +25,9 @@ int main(int argc, char** argv) {
 
     kinstab::ui::MainWindow window;
     window.show();
+    if (const QStringList files = parser.positionalArguments(); !files.isEmpty()) {
+        if (!window.openProject(files.front(), parser.isSet(shot))) return 2;
+    }
     if (parser.isSet(shot)) kinstab::ui::screenshotAfterSweep(window, parser.value(shot));
     return QApplication::exec();
 }
