@@ -1,6 +1,7 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/ModelFlags.h"
+#include "app/cli/PlanarFlags.h"
 #include "core/io/ResultJson.h"
 #include "core/sweep/CriticalAmplitude.h"
 
@@ -12,7 +13,6 @@ int runCritical(const ArgList& argv) {
     std::set<std::string> flags = modelFlagNames();
     flags.insert({"frequencies", "max-amplitude", "scan-step", "tolerance"});
     const Args args(argv, flags);
-    const Slab1DCase c = slab1DCaseFromFlags(args);
     const std::vector<double> freqs = args.list("frequencies");
     const std::string e = validateGrid(SweepGrid{{1.0}, freqs});
     if (!e.empty()) throw UsageError("--" + e);
@@ -30,6 +30,8 @@ int runCritical(const ArgList& argv) {
         throw UsageError("--tolerance " + args.text("tolerance") +
                          ": must be > 0 and at most --scan-step");
 
+    if (isPlanar(args)) return runCriticalPlanar(args, freqs, search);
+    const Slab1DCase c = slab1DCaseFromFlags(args);
     const PointFunction point = slab1DPoint(c);
     nlohmann::json crit = nlohmann::json::array();
     for (double f : freqs) {

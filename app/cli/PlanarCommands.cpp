@@ -5,6 +5,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/PlanarFlags.h"
 #include "core/io/ResultJson.h"
+#include "core/sweep/CriticalAmplitude.h"
 
 #include <chrono>
 #include <iostream>
@@ -80,7 +81,42 @@ int runSurfacePlanar(const Args& args, const SweepGrid& grid, int threads,
     }
     nlohmann::json j = sweepJson(r, c.tauRef());
     j.update(planarCaseJson(c));
+    // Which side each collapse leaves by (null where the slab did not collapse).
+    nlohmann::json sides = nlohmann::json::array();
+    for (std::size_t i = 0; i < grid.amplitudes.size(); ++i) {
+        nlohmann::json row = nlohmann::json::array();
+        for (std::size_t k = 0; k < grid.frequencies.size(); ++k) {
+            const std::size_t idx = i * grid.frequencies.size() + k;
+            const PointResult& p = r.points[idx];
+            row.push_back(r.done[idx] && p.outcome == Outcome::Collapsed
+                              ? nlohmann::json(exitSideName(p.exitSide))
+                              : nlohmann::json());
+        }
+        sides.push_back(row);
+    }
+    j["exit_side"] = sides;
     writeOutput(args.text("o"), j.dump() + "\n");
+    return 0;
+}
+
+// A_crit(f_x) of the planar model. The scan starts where anything can slip at all:
+// A_x sqrt(1 + ratio^2) = mu min n, below mu itself (both components push).
+int runCriticalPlanar(const Args& args, const std::vector<double>& frequencies,
+                      const CriticalSearch& search) {
+    const PlanarCase c = planarCaseFromFlags(args);
+    const PointFunction point = planarPoint(c);
+    nlohmann::json crit = nlohmann::json::array();
+    for (double f : frequencies) {
+        const CriticalResult r = criticalAmplitude(point, f, planarNoSlipAmplitude(c), search);
+        crit.push_back(r.amplitude ? nlohmann::json(*r.amplitude) : nlohmann::json());
+    }
+    nlohmann::json j = planarCaseJson(c);
+    j.update({{"frequencies", frequencies},
+              {"a_crit", crit},
+              {"max_amplitude", search.to},
+              {"scan_step", search.scanStep},
+              {"tolerance", search.tolerance}});
+    std::cout << j.dump(2) << "\n";
     return 0;
 }
 

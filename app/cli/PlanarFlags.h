@@ -21,7 +21,8 @@ nlohmann::json planarCaseJson(const PlanarCase& c);
 
 namespace kinstab {
 struct SweepGrid;
-}
+struct CriticalSearch;
+} // namespace kinstab
 
 namespace kinstab::cli {
 
@@ -29,5 +30,7 @@ namespace kinstab::cli {
 int runSimulatePlanar(const Args& args, double amplitude, double frequency, double historyStep);
 int runSurfacePlanar(const Args& args, const SweepGrid& grid, int threads,
                      const std::string& format);
+int runCriticalPlanar(const Args& args, const std::vector<double>& frequencies,
+                      const CriticalSearch& search);
 
 } // namespace kinstab::cli

@@ -63,7 +63,7 @@ PlanarResult runPlanar(const PlanarCase& c, double ax, double fxHz) {
 PointFunction planarPoint(const PlanarCase& c) {
     return [c](double amplitude, double frequency) {
         const PlanarResult r = runPlanar(c, amplitude, frequency);
-        return PointResult{r.slab.outcome, r.slab.tauC};
+        return PointResult{r.slab.outcome, r.slab.tauC, r.exitSide};
     };
 }
 

@@ -11,18 +11,6 @@
 
 namespace kinstab {
 
-std::string exitSideName(ExitSide s) {
-    switch (s) {
-    case ExitSide::Across:
-        return "across";
-    case ExitSide::Along:
-        return "along";
-    case ExitSide::None:
-        return "none";
-    }
-    return "none";
-}
-
 namespace {
 
 using Vec4 = OdeVec<4>; // (dx, dy, ux, uy) in tau

@@ -20,9 +20,6 @@
 
 namespace kinstab {
 
-enum class ExitSide { None, Across, Along };
-std::string exitSideName(ExitSide s); // "across" | "along" | "none"
-
 struct PlanarEvent {
     double tau = 0;
     EventKind kind = EventKind::SlipOnset;

@@ -19,6 +19,18 @@ std::string outcomeName(Outcome o) {
     return "failed";
 }
 
+std::string exitSideName(ExitSide s) {
+    switch (s) {
+    case ExitSide::Across:
+        return "across";
+    case ExitSide::Along:
+        return "along";
+    case ExitSide::None:
+        return "none";
+    }
+    return "none";
+}
+
 std::string eventKindName(EventKind k) {
     switch (k) {
     case EventKind::SlipOnset:

@@ -11,6 +11,11 @@ namespace kinstab {
 enum class Outcome { Collapsed, Stable, LiftOff, Failed };
 std::string outcomeName(Outcome o);
 
+// Which way a planar slab leaves its walls (SPEC §5): across (|dx| > limit) or along
+// (|dy| > theta). The 1-DOF slab can only leave across.
+enum class ExitSide { None, Across, Along };
+std::string exitSideName(ExitSide s); // "across" | "along" | "none"
+
 enum class EventKind {
     SlipOnset, // |a| rose through mu while sticking
     Stick,     // relative velocity reached zero with |a| <= mu

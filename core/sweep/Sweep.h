@@ -14,7 +14,8 @@ namespace kinstab {
 
 struct PointResult {
     Outcome outcome = Outcome::Failed;
-    double tauC = 0; // NaN unless collapsed (or lifted off)
+    double tauC = 0;                    // NaN unless collapsed (or lifted off)
+    ExitSide exitSide = ExitSide::None; // planar collapses: across or along the walls
 };
 
 // Results in row-major order: index = i * frequencies + j for amplitudes[i], frequencies[j].

@@ -80,6 +80,10 @@ void TestCliPlanar::surfaceWithVerticalRecord() {
     QCOMPARE(outcome.size(), 2);
     // 1.1 g at 1 Hz collapses even the 1-DOF slab (A_crit 0.98): the planar one must too.
     QCOMPARE(outcome[1].toArray()[0].toString(), QString("collapsed"));
+    const QJsonArray sides = j["exit_side"].toArray();
+    QVERIFY(sides[1].toArray()[0].toString() == "across" ||
+            sides[1].toArray()[0].toString() == "along");
+    QVERIFY(sides[0].toArray()[0].isNull()); // 0.6 g at 1 Hz with f_y 0.5 Hz: no collapse
 }
 
 void TestCliPlanar::badInputExitsTwo_data() {

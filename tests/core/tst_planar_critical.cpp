@@ -21,7 +21,7 @@ private slots:
 
 void TestPlanarCritical::lowerThanOneDofAndRisingWithFy() {
     CriticalSearch search;
-    search.scanStep = 0.01;
+    search.scanStep = 0.02;
     search.tolerance = 1e-3;
     search.to = 3.0;
     const double fx = 1.0;
@@ -31,7 +31,7 @@ void TestPlanarCritical::lowerThanOneDofAndRisingWithFy() {
     // The paper's critical ratio at 1 Hz is 0.95 (ch. V, eq. 22): the 1-DOF search must land there.
     QVERIFY(*a1.amplitude > 0.95 && *a1.amplitude <= 1.0);
     double previous = 0.0;
-    for (double fy : {0.5, 1.0, 2.0, 5.0}) {
+    for (double fy : {0.5, 2.0, 5.0}) {
         PlanarCase c;
         c.fyHz = fy;
         const CriticalResult ap =
