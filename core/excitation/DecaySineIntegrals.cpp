@@ -67,13 +67,17 @@ const DecaySineIntegrals::Point& DecaySineIntegrals::origin(double t0) const {
 // phi_k(w) = sum_n w^n / (n + k)!. The p - q difference is
 // exp(z_q t0) h^k [expm1(d t0) phi_k(w_p) + (w_p - w_q) sum_{n>=1} D_n / (n + k)!],
 // D_n = (w_p^n - w_q^n) / (w_p - w_q) = w_p D_{n-1} + w_q^{n-1}: no cancellation anywhere.
-DecaySineIntegrals::Complex DecaySineIntegrals::shortSpan(const Point& o, double h, int k) const {
+// The end value follows the same way from exp(w) = 1 + w phi_1(w):
+// exp(z_p t1) - exp(z_q t1) = exp(z_q t0) [expm1(d t0) exp(w_p) + (w_p - w_q) sum D_n / n!].
+DecaySineIntegrals::Complex DecaySineIntegrals::shortSpan(const Point& o, double h, int k,
+                                                          Complex* end) const {
     // Plain real arithmetic: std::complex's operator* may go through __muldc3 (NaN rules).
     const double pr = zp_.real() * h, pi = zp_.imag() * h; // w_p
     const double qr = zq_.real() * h, qi = zq_.imag() * h; // w_q
     const double r = zqAbs_ * h;                           // |w_p| <= |w_q| = r <= 1/4
     double coef = (k == 1) ? 1.0 : 0.5;                    // 1/(n + k)!
     double phiR = coef, phiI = 0.0, divR = 0.0, divI = 0.0;
+    double expDivR = 0.0, expDivI = 0.0, fact = 1.0; // sum D_n / n!, with 1/n! in fact
     double rPow = 1.0;
     double wpR = 1.0, wpI = 0.0, wqR = 1.0, wqI = 0.0, dR = 0.0, dI = 0.0;
     for (int n = 1; n < kSeriesTerms; ++n) {
@@ -92,6 +96,9 @@ DecaySineIntegrals::Complex DecaySineIntegrals::shortSpan(const Point& o, double
         phiI += wpI * coef;
         divR += dR * coef;
         divI += dI * coef;
+        fact /= n;
+        expDivR += dR * fact;
+        expDivI += dI * fact;
         // |w_p^n| <= r^n and |D_n| <= n r^(n-1): stop once the terms fall below the rounding
         // of the sums (phi ~ 1/k!, the divided sum ~ 1/(k+1)!).
         rPow *= r;
@@ -100,13 +107,26 @@ DecaySineIntegrals::Complex DecaySineIntegrals::shortSpan(const Point& o, double
     const double hk = (k == 1) ? h : h * h;
     const double e = o.near ? o.em1 : std::expm1(d_ * o.t), dh = d_ * h;
     const double bR = e * phiR + dh * divR, bI = e * phiI + dh * divI;
+    if (end) {
+        // exp(w_p) = 1 + w_p phi_1(w_p); valid for k = 1 only (phi is phi_1 then).
+        const double epR = 1.0 + pr * phiR - pi * phiI, epI = pr * phiI + pi * phiR;
+        const double cR = e * epR + dh * expDivR, cI = e * epI + dh * expDivI;
+        *end = Complex(o.eq.real() * cR - o.eq.imag() * cI, o.eq.real() * cI + o.eq.imag() * cR);
+    }
     return Complex(o.eq.real() * bR - o.eq.imag() * bI, o.eq.real() * bI + o.eq.imag() * bR) * hk;
 }
 
-double DecaySineIntegrals::first(double t0, double h) const {
+double DecaySineIntegrals::first(double t0, double h, double* valueAtEnd) const {
     const Point& o = origin(t0);
-    if (zqAbs_ * h <= kShortSpan) return shortSpan(o, h, 1).imag();
-    return (pointAt(t0 + h).p1 - o.p1).imag();
+    if (zqAbs_ * h <= kShortSpan) {
+        Complex end;
+        const double v = shortSpan(o, h, 1, valueAtEnd ? &end : nullptr).imag();
+        if (valueAtEnd) *valueAtEnd = end.imag();
+        return v;
+    }
+    const Point p = pointAt(t0 + h);
+    if (valueAtEnd) *valueAtEnd = (p.near ? p.eq * p.em1 : p.ep - p.eq).imag();
+    return (p.p1 - o.p1).imag();
 }
 
 double DecaySineIntegrals::second(double t0, double h) const {

@@ -17,8 +17,8 @@ class DecaySineIntegrals {
 public:
     DecaySineIntegrals(double p, double q, double omega);
 
-    // int_{t0}^{t0+h} g(s) ds
-    double first(double t0, double h) const;
+    // int_{t0}^{t0+h} g(s) ds; with valueAtEnd, also g(t0 + h) from the same exponentials.
+    double first(double t0, double h, double* valueAtEnd = nullptr) const;
     // int_{t0}^{t0+h} (t0 + h - s) g(s) ds  (the second integral of g from t0)
     double second(double t0, double h) const;
 
@@ -33,8 +33,9 @@ private:
     };
     Point pointAt(double t) const;
     const Point& origin(double t0) const;
-    // Increment over a short span from o.t: k = 1 gives first(), k = 2 second().
-    Complex shortSpan(const Point& o, double h, int k) const;
+    // Increment over a short span from o.t: k = 1 gives first(), k = 2 second(); for k = 1
+    // and end != nullptr also exp(z_p (t0+h)) - exp(z_q (t0+h)).
+    Complex shortSpan(const Point& o, double h, int k, Complex* end = nullptr) const;
 
     double p_, q_, d_, omega_;
     double zqAbs_; // |z_q|: spans with |z_q| h <= 1/2 are short

@@ -61,6 +61,13 @@ double EnvelopedSine::velocityChange(double t0, double t1) const {
     return scale_ * integrals_.first(t0, t1 - t0);
 }
 
+double EnvelopedSine::velocityChangeAndAccel(double t0, double t1, double& accelAtT1) const {
+    double shape = 0.0;
+    const double dv = scale_ * integrals_.first(t0, t1 - t0, &shape);
+    accelAtT1 = scale_ * shape;
+    return dv;
+}
+
 double EnvelopedSine::displacementChange(double t0, double t1) const {
     return scale_ * integrals_.second(t0, t1 - t0);
 }

@@ -21,6 +21,7 @@ public:
     double accel(double tau) const override;
     double accelSlope(double tau) const override;
     double velocityChange(double t0, double t1) const override;
+    double velocityChangeAndAccel(double t0, double t1, double& accelAtT1) const override;
     double displacementChange(double t0, double t1) const override;
     double segmentEnd(double segmentStart) const override;
     Crossings crossings(double level, double segmentStart, double segmentEnd) const override;

@@ -21,6 +21,12 @@ public:
     virtual double accelSlope(double tau) const = 0;
     // Integral of a over [t0, t1].
     virtual double velocityChange(double t0, double t1) const = 0;
+    // velocityChange(t0, t1) and accel(t1) at once: the event search needs both at every
+    // iteration, and a closed form can share its exponentials between them.
+    virtual double velocityChangeAndAccel(double t0, double t1, double& accelAtT1) const {
+        accelAtT1 = accel(t1);
+        return velocityChange(t0, t1);
+    }
     // Integral over [t0, t1] of (integral of a over [t0, s]) ds.
     virtual double displacementChange(double t0, double t1) const = 0;
     // Time line cut into segments; each segment is small enough that a(tau) crosses any level

@@ -22,9 +22,12 @@ private:
     enum class Step { Continue, Done };
 
     // Slip state relative to (t_, x_, v_) with slip sign s_.
-    double velocityAt(double tau) {
+    // With accelAtTau, also a(tau), from the same closed-form evaluation.
+    double velocityAt(double tau, double* accelAtTau = nullptr) {
         ++r_.work.accelEvaluations;
-        return v_ - s_ * p_.mu * (tau - t_) - a_.velocityChange(t_, tau);
+        const double dv = accelAtTau ? a_.velocityChangeAndAccel(t_, tau, *accelAtTau)
+                                     : a_.velocityChange(t_, tau);
+        return v_ - s_ * p_.mu * (tau - t_) - dv;
     }
     double displacementAt(double tau) {
         ++r_.work.accelEvaluations;
@@ -187,8 +190,9 @@ ExactRun::Step ExactRun::slipThrough(double hi, bool excess) {
                              : (s_ * v_ <= 0.0) ? t_
                                                 : rootOf(
                                                       [&](double tau, double& f, double& df) {
-                                                          f = s_ * velocityAt(tau);
-                                                          df = s_ * (-s_ * p_.mu - a_.accel(tau));
+                                                          double a = 0.0;
+                                                          f = s_ * velocityAt(tau, &a);
+                                                          df = s_ * (-s_ * p_.mu - a);
                                                       },
                                                       t_, hi, s_ * v_, s_ * vHi);
         const double xEnd = displacementAt(tStop);

@@ -55,7 +55,7 @@ private:
 struct Integrals {
     double first = 0, second = 0;
 };
-inline Integrals integrateAccel(const Excitation1D& a, double T, int pieces) {
+template <class A> Integrals integrate(A&& accel, double T, int pieces) {
     static constexpr std::array<double, 5> x = {0.1488743389816312, 0.4333953941292472,
                                                 0.6794095682990244, 0.8650633666889845,
                                                 0.9739065285171717};
@@ -68,12 +68,15 @@ inline Integrals integrateAccel(const Excitation1D& a, double T, int pieces) {
         const double m = 0.5 * (lo + hi), r = 0.5 * (hi - lo);
         for (std::size_t i = 0; i < x.size(); ++i)
             for (double s : {m - r * x[i], m + r * x[i]}) {
-                const double as = a.accel(s);
+                const double as = accel(s);
                 out.first += r * w[i] * as;
                 out.second += r * w[i] * (T - s) * as;
             }
     }
     return out;
+}
+inline Integrals integrateAccel(const Excitation1D& a, double T, int pieces) {
+    return integrate([&](double s) { return a.accel(s); }, T, pieces);
 }
 
 } // namespace kinstab::testing
