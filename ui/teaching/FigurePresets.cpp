@@ -60,25 +60,19 @@ std::vector<FigurePreset> build() {
     v.push_back(surface(31, EnvelopePreset::Fast, TauScale::TauRise));
     v.push_back(surface(32, EnvelopePreset::Moderate, TauScale::TauRise));
     v.push_back(surface(33, EnvelopePreset::Slow, TauScale::TauRise));
-    FigurePreset f34;
-    f34.id = QStringLiteral("fig34");
-    f34.title = QStringLiteral("Fig. 34 — τc against A at f = 0.75 Hz");
-    f34.caption =
-        QStringLiteral("Nondimensional collapse time τc vs. amplitude A given fixed frequency "
-                       "f = 0.75 Hz and moderately rising acceleration envelope.");
-    f34.params = paperParams(EnvelopePreset::Moderate, TauScale::TauMax, 1.0, 0.75);
-    f34.mode = MapMode::Slice;
-    f34.range = kPaperRange;
-    v.push_back(f34);
-    FigurePreset f35;
-    f35.id = QStringLiteral("fig35");
-    f35.title = QStringLiteral("Fig. 35 — δ(τ) with envelope, A = 1.0, f = 1.125 Hz");
-    f35.caption =
-        QStringLiteral("Nondimensional relative displacement δ(τ) vs. τ with the acceleration "
-                       "envelope, A = 1.0, f = 1.125 Hz, moderately rising envelope.");
-    f35.params = paperParams(EnvelopePreset::Moderate, TauScale::TauMax, 1.0, 1.125);
-    f35.range = kPaperRange;
-    v.push_back(f35);
+    v.push_back(
+        {QStringLiteral("fig34"), QStringLiteral("Fig. 34 — τc against A at f = 0.75 Hz"),
+         QStringLiteral("Nondimensional collapse time τc vs. amplitude A given fixed frequency "
+                        "f = 0.75 Hz and moderately rising acceleration envelope."),
+         paperParams(EnvelopePreset::Moderate, TauScale::TauMax, 1.0, 0.75), MapMode::Slice,
+         kPaperRange});
+    v.push_back(
+        {QStringLiteral("fig35"),
+         QStringLiteral("Fig. 35 — δ(τ) with envelope, A = 1.0, f = 1.125 Hz"),
+         QStringLiteral("Nondimensional relative displacement δ(τ) vs. τ with the acceleration "
+                        "envelope, A = 1.0, f = 1.125 Hz, moderately rising envelope."),
+         paperParams(EnvelopePreset::Moderate, TauScale::TauMax, 1.0, 1.125), MapMode::Surface,
+         kPaperRange});
     const double fy[] = {0.2, 0.5, 1.0, 2.0, 5.0, 10.0};
     for (int i = 0; i < 6; ++i)
         v.push_back(planar(37 + i, fy[i]));

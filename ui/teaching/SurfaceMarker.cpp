@@ -115,6 +115,99 @@ QRectF SurfaceMarker::plotRect() const {
     return QRectF(rect()).adjusted(44, 22, -10, -30);
 }
 
+namespace {
+
+// The plot area and its value ranges: x is f (surface) or A (slice), y is A or tau_c.
+struct Plot {
+    QRectF r;
+    double xLo, xHi, yLo, yHi;
+    double x(double v) const { return r.left() + r.width() * (v - xLo) / (xHi - xLo); }
+    double y(double v) const { return r.bottom() - r.height() * (v - yLo) / (yHi - yLo); }
+};
+
+void paintSurfaceCells(QPainter& p, const Plot& pl, const MarkerMap& map) {
+    p.save();
+    p.setClipRect(pl.r);
+    const auto& g = map.sweep.grid;
+    const double gMax = *std::max_element(map.gamma.begin(), map.gamma.end());
+    const double cw = pl.r.width() / static_cast<double>(g.frequencies.size() - 1);
+    const double ch = pl.r.height() / static_cast<double>(g.amplitudes.size() - 1);
+    for (std::size_t i = 0; i < g.amplitudes.size(); ++i)
+        for (std::size_t j = 0; j < g.frequencies.size(); ++j) {
+            const QPointF c(pl.x(g.frequencies[j]), pl.y(g.amplitudes[i]));
+            p.fillRect(QRectF(c.x() - cw / 2, c.y() - ch / 2, cw + 0.5, ch + 0.5),
+                       gammaColor(map.gamma[i * g.frequencies.size() + j], gMax));
+        }
+    p.restore();
+    p.setPen(QColor(0x55, 0x55, 0x55));
+    p.drawText(QRectF(pl.r.left(), pl.r.bottom() + 14, pl.r.width(), 14), Qt::AlignRight,
+               QStringLiteral("pale: stable; darkest: γc = %1").arg(gMax, 0, 'f', 2));
+}
+
+// Fig. 34: tau_c against A; a stable amplitude is a dot along the top.
+void paintSlice(QPainter& p, const Plot& pl, const MarkerMap& map) {
+    p.setPen(QPen(stateColor(DisplayState::Collapse), 1.5));
+    QPointF last;
+    bool have = false;
+    for (std::size_t i = 0; i < map.sweep.points.size(); ++i) {
+        const auto& pt = map.sweep.points[i];
+        const double x = pl.x(map.sweep.grid.amplitudes[i]);
+        if (pt.outcome != Outcome::Collapsed) {
+            p.drawText(QRectF(x - 4, pl.r.top(), 8, 12), Qt::AlignCenter, QStringLiteral("·"));
+            have = false;
+            continue;
+        }
+        const QPointF q(x, pl.y(pt.tauC));
+        if (have) p.drawLine(last, q);
+        p.drawEllipse(q, 2, 2);
+        last = q;
+        have = true;
+    }
+    p.setPen(QColor(0x55, 0x55, 0x55));
+    p.drawText(QRectF(pl.r.left() + 4, pl.r.top() + 12, pl.r.width(), 14), Qt::AlignLeft,
+               QStringLiteral("τc (stable: dots on top)"));
+}
+
+void paintAxes(QPainter& p, const Plot& pl, bool surface) {
+    p.setPen(QColor(0x44, 0x44, 0x44));
+    p.setBrush(Qt::NoBrush);
+    p.drawRect(pl.r);
+    const double xs = niceTickStep(pl.xHi - pl.xLo, 4), ys = niceTickStep(pl.yHi - pl.yLo, 4);
+    for (double v = std::ceil(pl.xLo / xs) * xs; v <= pl.xHi + 1e-9; v += xs)
+        p.drawText(QRectF(pl.x(v) - 20, pl.r.bottom() + 1, 40, 14), Qt::AlignCenter,
+                   QString::number(v, 'g', 3));
+    for (double v = std::ceil(pl.yLo / ys) * ys; v <= pl.yHi + 1e-9; v += ys)
+        p.drawText(QRectF(0, pl.y(v) - 7, pl.r.left() - 4, 14), Qt::AlignRight | Qt::AlignVCenter,
+                   QString::number(v, 'g', 3));
+    p.drawText(QRectF(pl.r.left(), pl.r.bottom() + 14, pl.r.width(), 14), Qt::AlignLeft,
+               surface ? QStringLiteral("f [Hz]") : QStringLiteral("A [g]"));
+    p.save();
+    p.translate(10, pl.r.center().y());
+    p.rotate(-90);
+    p.drawText(QRectF(-40, -8, 80, 14), Qt::AlignCenter,
+               surface ? QStringLiteral("A [g]") : QStringLiteral("τc"));
+    p.restore();
+}
+
+// Cross-hairs at (f, A) on the surface; a dashed line at A on the slice.
+void paintMarker(QPainter& p, const Plot& pl, const TeachingParams& cur, bool surface) {
+    const double cx = pl.x(surface ? cur.frequencyHz : cur.amplitude);
+    const double cy = surface ? pl.y(cur.amplitude) : pl.r.center().y();
+    const QPointF c(std::clamp(cx, pl.r.left(), pl.r.right()),
+                    std::clamp(cy, pl.r.top(), pl.r.bottom()));
+    if (!surface) {
+        p.setPen(QPen(QColor(0x10, 0x10, 0x10), 1.5, Qt::DashLine));
+        p.drawLine(QPointF(c.x(), pl.r.top()), QPointF(c.x(), pl.r.bottom()));
+        return;
+    }
+    p.setPen(QPen(QColor(0x10, 0x10, 0x10), 2));
+    p.drawEllipse(c, 6, 6);
+    for (const QPointF d : {QPointF(1, 0), QPointF(-1, 0), QPointF(0, 1), QPointF(0, -1)})
+        p.drawLine(c + 6 * d, c + 10 * d);
+}
+
+} // namespace
+
 void SurfaceMarker::paintEvent(QPaintEvent*) {
     QPainter p(this);
     p.fillRect(rect(), Qt::white);
@@ -122,110 +215,32 @@ void SurfaceMarker::paintEvent(QPaintEvent*) {
     QFont font = p.font();
     font.setPixelSize(11);
     p.setFont(font);
-    const QRectF r = plotRect();
     const bool surface = current_.mode == MapMode::Surface;
-    const QString ref = tauScaleName(current_.params.scale) == "tau_rise" ? QStringLiteral("τ_rise")
-                                                                          : QStringLiteral("τ_max");
+    const QString ref = current_.params.scale == TauScale::TauRise ? QStringLiteral("τ_rise")
+                                                                   : QStringLiteral("τ_max");
     p.setPen(QColor(0x22, 0x22, 0x22));
     p.drawText(QRectF(4, 2, width() - 8, 18), Qt::AlignLeft | Qt::AlignVCenter,
                surface ? QStringLiteral("Where am I?  γc = %1/τc over A and f").arg(ref)
                        : QStringLiteral("τc against A at f = %1 Hz")
                              .arg(current_.params.frequencyHz, 0, 'g', 4));
-    const auto xOf = [&](double v, double lo, double hi) {
-        return r.left() + r.width() * (v - lo) / (hi - lo);
-    };
-    const auto yOf = [&](double v, double lo, double hi) {
-        return r.bottom() - r.height() * (v - lo) / (hi - lo);
-    };
     const MapRange& R = current_.range;
-    if (hasMap_ && surface && map_.mode == MapMode::Surface) {
-        p.save();
-        p.setClipRect(r);
-        const auto& g = map_.sweep.grid;
-        const double gMax = *std::max_element(map_.gamma.begin(), map_.gamma.end());
-        const double cw = r.width() / (g.frequencies.size() - 1),
-                     ch = r.height() / (g.amplitudes.size() - 1);
-        for (std::size_t i = 0; i < g.amplitudes.size(); ++i)
-            for (std::size_t j = 0; j < g.frequencies.size(); ++j) {
-                const QPointF c(xOf(g.frequencies[j], R.fMin, R.fMax),
-                                yOf(g.amplitudes[i], R.aMin, R.aMax));
-                p.fillRect(QRectF(c.x() - cw / 2, c.y() - ch / 2, cw + 0.5, ch + 0.5),
-                           gammaColor(map_.gamma[i * g.frequencies.size() + j], gMax));
-            }
-        p.restore();
-        p.setPen(QColor(0x55, 0x55, 0x55));
-        p.drawText(QRectF(r.left(), r.bottom() + 14, r.width(), 14), Qt::AlignRight,
-                   QStringLiteral("pale: stable; darkest: γc = %1").arg(gMax, 0, 'f', 2));
-    } else if (hasMap_ && !surface && map_.mode == MapMode::Slice) {
-        double tMax = 0;
+    const bool ready = hasMap_ && map_.mode == current_.mode;
+    double tMax = 1.0; // slice: the largest collapse time, with room above
+    if (ready && !surface)
         for (const auto& pt : map_.sweep.points)
-            if (pt.outcome == Outcome::Collapsed) tMax = std::max(tMax, pt.tauC);
-        tMax = tMax > 0 ? tMax * 1.1 : 1.0;
-        p.setPen(QPen(stateColor(DisplayState::Collapse), 1.5));
-        QPointF last;
-        bool have = false;
-        for (std::size_t i = 0; i < map_.sweep.points.size(); ++i) {
-            const auto& pt = map_.sweep.points[i];
-            const double x = xOf(map_.sweep.grid.amplitudes[i], R.aMin, R.aMax);
-            if (pt.outcome != Outcome::Collapsed) {
-                p.drawText(QRectF(x - 4, r.top(), 8, 12), Qt::AlignCenter, QStringLiteral("·"));
-                have = false;
-                continue;
-            }
-            const QPointF q(x, yOf(pt.tauC, 0, tMax));
-            if (have) p.drawLine(last, q);
-            p.drawEllipse(q, 2, 2);
-            last = q;
-            have = true;
-        }
-        p.setPen(QColor(0x55, 0x55, 0x55));
-        for (double v = 0; v <= tMax; v += niceTickStep(tMax, 4))
-            p.drawText(QRectF(0, yOf(v, 0, tMax) - 7, r.left() - 4, 14),
-                       Qt::AlignRight | Qt::AlignVCenter, QString::number(v, 'g', 3));
-        p.drawText(QRectF(r.left() + 4, r.top() + 12, r.width(), 14), Qt::AlignLeft,
-                   QStringLiteral("τc (stable: dots on top)"));
-    } else {
+            if (pt.outcome == Outcome::Collapsed) tMax = std::max(tMax, 1.1 * pt.tauC);
+    const Plot pl = surface ? Plot{plotRect(), R.fMin, R.fMax, R.aMin, R.aMax}
+                            : Plot{plotRect(), R.aMin, R.aMax, 0.0, tMax};
+    if (ready && surface)
+        paintSurfaceCells(p, pl, map_);
+    else if (ready)
+        paintSlice(p, pl, map_);
+    else {
         p.setPen(QColor(0x77, 0x77, 0x77));
-        p.drawText(r, Qt::AlignCenter, tr("computing…"));
+        p.drawText(pl.r, Qt::AlignCenter, tr("computing…"));
     }
-    p.setPen(QColor(0x44, 0x44, 0x44));
-    p.setBrush(Qt::NoBrush);
-    p.drawRect(r);
-    // Axes: f across and A up for the surface; A across for the slice.
-    const double xLo = surface ? R.fMin : R.aMin, xHi = surface ? R.fMax : R.aMax;
-    for (double v = std::ceil(xLo / niceTickStep(xHi - xLo, 4)) * niceTickStep(xHi - xLo, 4);
-         v <= xHi + 1e-9; v += niceTickStep(xHi - xLo, 4))
-        p.drawText(QRectF(xOf(v, xLo, xHi) - 20, r.bottom() + 1, 40, 14), Qt::AlignCenter,
-                   QString::number(v, 'g', 3));
-    p.drawText(QRectF(r.left(), r.bottom() + 14, r.width(), 14), Qt::AlignLeft,
-               surface ? QStringLiteral("f [Hz]") : QStringLiteral("A [g]"));
-    if (surface) {
-        const double step = niceTickStep(R.aMax - R.aMin, 4);
-        for (double v = std::ceil(R.aMin / step) * step; v <= R.aMax + 1e-9; v += step)
-            p.drawText(QRectF(0, yOf(v, R.aMin, R.aMax) - 7, r.left() - 4, 14),
-                       Qt::AlignRight | Qt::AlignVCenter, QString::number(v, 'g', 3));
-        p.save();
-        p.translate(10, r.center().y());
-        p.rotate(-90);
-        p.drawText(QRectF(-40, -8, 80, 14), Qt::AlignCenter, QStringLiteral("A [g]"));
-        p.restore();
-    }
-    // The current run.
-    const double cx = surface ? xOf(current_.params.frequencyHz, R.fMin, R.fMax)
-                              : xOf(current_.params.amplitude, R.aMin, R.aMax);
-    const double cy = surface ? yOf(current_.params.amplitude, R.aMin, R.aMax) : r.center().y();
-    const QPointF c(std::clamp(cx, r.left(), r.right()), std::clamp(cy, r.top(), r.bottom()));
-    p.setPen(QPen(QColor(0x10, 0x10, 0x10), 2));
-    if (surface) {
-        p.drawEllipse(c, 6, 6);
-        p.drawLine(c + QPointF(-10, 0), c + QPointF(-6, 0));
-        p.drawLine(c + QPointF(6, 0), c + QPointF(10, 0));
-        p.drawLine(c + QPointF(0, -10), c + QPointF(0, -6));
-        p.drawLine(c + QPointF(0, 6), c + QPointF(0, 10));
-    } else {
-        p.setPen(QPen(QColor(0x10, 0x10, 0x10), 1.5, Qt::DashLine));
-        p.drawLine(QPointF(c.x(), r.top()), QPointF(c.x(), r.bottom()));
-    }
+    paintAxes(p, pl, surface);
+    paintMarker(p, pl, current_.params, surface);
 }
 
 void SurfaceMarker::mousePressEvent(QMouseEvent* e) {
