@@ -37,15 +37,7 @@ std::string validateAsce7(const Asce7Inputs& in) {
 
 // Table 1.5-1 (mapping of occupancy, CODES.md §5.6).
 int asceRiskCategory(Occupancy o) {
-    switch (o) {
-    case Occupancy::Essential:
-        return 4;
-    case Occupancy::Assembly:
-    case Occupancy::Hazardous:
-        return 3;
-    default:
-        return 2;
-    }
+    return occupancyClass(o);
 }
 
 // Table 1.5-2: I, II → 1.00; III → 1.25; IV → 1.50.
@@ -99,11 +91,8 @@ void addPeriod(CodeResult& r, const Building& b, double sd1) {
 } // namespace
 
 CodeResult asce7_22(const Building& b, const Asce7Inputs& in) {
-    requireValidBuilding(b);
-    if (const std::string e = validateAsce7(in); !e.empty()) throw InputError(e);
-    CodeResult r;
-    r.code = "asce7_22";
-    r.title = "ASCE/SEI 7-22 §12.8 (equivalent lateral force)";
+    CodeResult r = beginCodeResult(b, validateAsce7(in), "asce7_22",
+                                   "ASCE/SEI 7-22 §12.8 (equivalent lateral force)");
     addPeriod(r, b, in.sd1);
     const double t = r.periodSeconds;
     const int rc = in.riskCategory.value_or(asceRiskCategory(b.occupancy));

@@ -75,11 +75,7 @@ void addPeriod(CodeResult& r, const Building& b) {
 } // namespace
 
 CodeResult atc306(const Building& b, const Atc306Inputs& in) {
-    requireValidBuilding(b);
-    if (const std::string e = validateAtc306(in); !e.empty()) throw InputError(e);
-    CodeResult r;
-    r.code = "atc306";
-    r.title = "ATC 3-06 (1978) §4.2";
+    CodeResult r = beginCodeResult(b, validateAtc306(in), "atc306", "ATC 3-06 (1978) §4.2");
     addPeriod(r, b);
     const double t = r.periodSeconds;
     const double aa = in.mapArea ? atcMapAreaCoefficient(*in.mapArea) : in.aa;

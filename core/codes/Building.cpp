@@ -97,6 +97,18 @@ std::vector<double> levelHeights(const Building& b) {
     return h;
 }
 
+int occupancyClass(Occupancy o) {
+    switch (o) {
+    case Occupancy::Essential:
+        return 4;
+    case Occupancy::Assembly:
+    case Occupancy::Hazardous:
+        return 3;
+    default:
+        return 2;
+    }
+}
+
 std::string unitName(LengthUnit u) {
     return u == LengthUnit::Feet ? "ft" : "m";
 }

@@ -64,6 +64,10 @@ double planDimensionMetres(const Building& b);
 std::vector<double> levelWeights(const Building& b);
 std::vector<double> levelHeights(const Building& b);
 
+// The four-class scale shared by ASCE 7 risk categories (Table 1.5-1) and EN 1998-1 importance
+// classes (Table 4.3): ordinary II, assembly or hazardous contents III, essential IV.
+int occupancyClass(Occupancy o);
+
 std::string unitName(LengthUnit u); // "ft" | "m"
 std::optional<LengthUnit> unitFromName(const std::string& s);
 std::string systemName(StructuralSystem s); // e.g. "dual_frame_wall"

@@ -22,6 +22,27 @@ std::vector<double> distributedRatios(const std::vector<double>& weights,
     return r;
 }
 
+CodeResult beginCodeResult(const Building& b, const std::string& inputError,
+                           const std::string& code, const std::string& title) {
+    requireValidBuilding(b);
+    if (!inputError.empty()) throw InputError(inputError);
+    CodeResult r;
+    r.code = code;
+    r.title = title;
+    return r;
+}
+
+TopForceDistribution distributeWithTopForce(const Building& b, double v, double ft) {
+    const std::vector<double> w = levelWeights(b);
+    TopForceDistribution d{distributedRatios(w, levelHeights(b), 1.0, v - ft), 0.0};
+    d.topWithoutFt = d.ratios.back();
+    double total = 0;
+    for (double x : w)
+        total += x;
+    d.ratios.back() += ft * total / w.back(); // F_t / w_n = (F_t / W)(W / w_n)
+    return d;
+}
+
 double distributionExponent(double t) {
     return std::clamp(1.0 + (t - 0.5) / 2.0, 1.0, 2.0);
 }

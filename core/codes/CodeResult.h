@@ -2,6 +2,8 @@
 // What every code module returns (SPEC §9): base shear coefficient, story forces, the top-floor
 // ratio F_top / w_top and the trail of every coefficient used, with its clause.
 
+#include "core/codes/Building.h"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +36,20 @@ struct CodeResult {
 // share = (V − F_t) / W; weights in any unit, heights above the base.
 std::vector<double> distributedRatios(const std::vector<double>& weights,
                                       const std::vector<double>& heights, double k, double share);
+
+// Opens a code's result after checking the building and the code's inputs (inputError: the
+// code's validate message, empty when fine): throws InputError before anything is computed.
+CodeResult beginCodeResult(const Building& b, const std::string& inputError,
+                           const std::string& code, const std::string& title);
+
+// UBC 1976 eqs. 12-6/12-7 and UBC 1997 eqs. 30-14/30-15: V − F_t spread linearly with height,
+// F_t added at level n. Ratios F_x / w_x, bottom first; topWithoutFt leaves F_t off (the
+// paper's 0.140).
+struct TopForceDistribution {
+    std::vector<double> ratios;
+    double topWithoutFt = 0;
+};
+TopForceDistribution distributeWithTopForce(const Building& b, double v, double ft);
 
 // k of ATC 3-06 §4.3 and ASCE 7 §12.8.3: 1 up to 0.5 s, 2 from 2.5 s, linear in between.
 double distributionExponent(double periodSeconds);

@@ -74,15 +74,7 @@ double ec8ImportanceFactor(int c) {
 // Table 4.3: ordinary buildings II; assembly and consequential contents III; civil-protection
 // facilities IV.
 int ec8ImportanceClass(Occupancy o) {
-    switch (o) {
-    case Occupancy::Essential:
-        return 4;
-    case Occupancy::Assembly:
-    case Occupancy::Hazardous:
-        return 3;
-    default:
-        return 2;
-    }
+    return occupancyClass(o);
 }
 
 // §4.3.3.2.2(3) eq. 4.6: T_1 = C_t H^(3/4), H in m; C_t 0.085 steel moment frames, 0.075
@@ -135,11 +127,8 @@ void checkApplicability(CodeResult& r, const Eurocode8Inputs& in, const Ec8Spect
 } // namespace
 
 CodeResult eurocode8(const Building& b, const Eurocode8Inputs& in) {
-    requireValidBuilding(b);
-    if (const std::string e = validateEurocode8(in); !e.empty()) throw InputError(e);
-    CodeResult r;
-    r.code = "ec8";
-    r.title = "EN 1998-1:2004 §4.3.3.2 (lateral force method)";
+    CodeResult r = beginCodeResult(b, validateEurocode8(in), "ec8",
+                                   "EN 1998-1:2004 §4.3.3.2 (lateral force method)");
     addPeriod(r, b);
     const double t = r.periodSeconds;
     const Ec8SpectrumParameters p = ec8Spectrum(in.ground, in.spectrumType);

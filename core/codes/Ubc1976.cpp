@@ -81,11 +81,7 @@ void addPeriod(CodeResult& r, const Building& b) {
 } // namespace
 
 CodeResult ubc1976(const Building& b, const Ubc1976Inputs& in) {
-    requireValidBuilding(b);
-    if (const std::string e = validateUbc1976(in); !e.empty()) throw InputError(e);
-    CodeResult r;
-    r.code = "ubc1976";
-    r.title = "UBC 1976 §2312";
+    CodeResult r = beginCodeResult(b, validateUbc1976(in), "ubc1976", "UBC 1976 §2312");
     addPeriod(r, b);
     const double t = r.periodSeconds;
     const double z = ubc1976ZoneFactor(in.zone);
@@ -115,13 +111,9 @@ CodeResult ubc1976(const Building& b, const Ubc1976Inputs& in) {
     const double ft = t <= 0.7 ? 0.0 : std::min(0.07 * t, 0.25) * v;
     r.trail.push_back(
         {"top force", "F_t/W", ft, "§2312(e) eq. 12-6, F_t = 0.07TV <= 0.25V, 0 for T <= 0.7 s"});
-    const std::vector<double> w = levelWeights(b);
-    r.storyForces = distributedRatios(w, levelHeights(b), 1.0, v - ft);
-    r.topRatioWithoutFt = r.storyForces.back();
-    double total = 0;
-    for (double x : w)
-        total += x;
-    r.storyForces.back() += ft * total / w.back(); // F_t acts at level n
+    const TopForceDistribution d = distributeWithTopForce(b, v, ft);
+    r.storyForces = d.ratios;
+    r.topRatioWithoutFt = d.topWithoutFt;
     r.baseShearCoefficient = v;
     r.topRatio = r.storyForces.back();
     r.trail.push_back({"top ratio without F_t (the paper's figure)", "F_n/w_n",

@@ -117,11 +117,8 @@ void addPeriod(CodeResult& r, const Building& b, Ubc97Zone zone) {
 } // namespace
 
 CodeResult ubc1997(const Building& b, const Ubc1997Inputs& in) {
-    requireValidBuilding(b);
-    if (const std::string e = validateUbc1997(in); !e.empty()) throw InputError(e);
-    CodeResult r;
-    r.code = "ubc1997";
-    r.title = "UBC 1997 §1630.2 (strength level)";
+    CodeResult r =
+        beginCodeResult(b, validateUbc1997(in), "ubc1997", "UBC 1997 §1630.2 (strength level)");
     addPeriod(r, b, in.zone);
     const double t = r.periodSeconds;
     const double z = ubc97ZoneFactor(in.zone);
@@ -153,13 +150,9 @@ CodeResult ubc1997(const Building& b, const Ubc1997Inputs& in) {
 
     const double ft = t <= 0.7 ? 0.0 : std::min(0.07 * t, 0.25) * v; // eq. 30-14
     r.trail.push_back({"top force", "F_t/W", ft, "§1630.5 eq. 30-14"});
-    const std::vector<double> w = levelWeights(b);
-    r.storyForces = distributedRatios(w, levelHeights(b), 1.0, v - ft);
-    r.topRatioWithoutFt = r.storyForces.back();
-    double total = 0;
-    for (double x : w)
-        total += x;
-    r.storyForces.back() += ft * total / w.back();
+    const TopForceDistribution d = distributeWithTopForce(b, v, ft);
+    r.storyForces = d.ratios;
+    r.topRatioWithoutFt = d.topWithoutFt;
     r.baseShearCoefficient = v;
     r.topRatio = r.storyForces.back();
     r.trail.push_back({"top ratio with F_t", "(F_n+F_t)/w_n", r.topRatio, "§1630.5 eq. 30-15"});
