@@ -33,6 +33,7 @@ void screenshotAfterSweep(MainWindow& window, const QString& path) {
             QApplication::exit(ok ? 0 : 1);
         });
     });
+    window.resize(1280, 800); // the documented size, whatever the settings say
     QTimer::singleShot(500, &window, &MainWindow::runSweep);
 }
 

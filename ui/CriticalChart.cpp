@@ -22,11 +22,14 @@ CriticalChart::CriticalChart(QWidget* parent)
     c->addAxis(m_y, Qt::AlignLeft);
     m_curve->attachAxis(m_x);
     m_curve->attachAxis(m_y);
-    c->legend()->setAlignment(Qt::AlignTop);
+    c->legend()->setAlignment(Qt::AlignBottom);
+    QFont small = c->legend()->font();
+    small.setPointSizeF(small.pointSizeF() * 0.85);
+    c->legend()->setFont(small);
     c->setTitle(tr("Critical amplitude A_crit(f) and the code ratios"));
     setChart(c);
     setRenderHint(QPainter::Antialiasing);
-    setMinimumSize(260, 200);
+    setMinimumSize(240, 160);
 }
 
 void CriticalChart::setData(const SurfaceOverlays& o, double fMin, double fMax) {
@@ -57,13 +60,13 @@ void CriticalChart::setData(const SurfaceOverlays& o, double fMin, double fMax) 
         m_lines.push_back(s);
     };
     for (const CodeRatio& c : o.codes) {
-        add(tr("%1: %2 g").arg(c.name).arg(c.ratio, 0, 'f', 3), c.color, Qt::DashLine,
+        add(tr("%1 %2").arg(c.name).arg(c.ratio, 0, 'f', 2), c.color, Qt::DashLine,
             {{fMin, c.ratio}, {fMax, c.ratio}});
         yMax = std::max(yMax, c.ratio);
     }
     if (yMax <= 0) yMax = 1;
     if (o.buildingFrequency)
-        add(tr("building f = %1 Hz").arg(*o.buildingFrequency, 0, 'f', 3), Qt::black, Qt::DotLine,
+        add(tr("1/T = %1 Hz").arg(*o.buildingFrequency, 0, 'f', 2), Qt::black, Qt::DotLine,
             {{*o.buildingFrequency, 0}, {*o.buildingFrequency, 1.1 * yMax}});
     m_x->setRange(fMin, fMax > fMin ? fMax : fMin + 1);
     m_y->setRange(0, 1.1 * yMax);

@@ -60,7 +60,7 @@ HistoryChart::HistoryChart(QWidget* parent)
     c->setTitle(tr("History of a picked point — click the surface"));
     setChart(c);
     setRenderHint(QPainter::Antialiasing);
-    setMinimumSize(260, 200);
+    setMinimumSize(240, 160);
 }
 
 int HistoryChart::sampleCount() const {

@@ -76,7 +76,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_centre->setDocumentMode(true);
     m_centre->addTab(m_surface, tr("γc surface"));
     m_teaching = new TeachingView;
-    m_centre->addTab(m_teaching, tr("Teaching"));
+    m_centre->addTab(scrollable(m_teaching), tr("Teaching")); // its minimum size must not grow the window
     setCentralWidget(m_centre);
     buildActions();
     buildDocks();
@@ -174,22 +174,22 @@ void MainWindow::buildDocks() {
                                                    {tr("Slab and walls"), m_slabPanel},
                                                    {tr("Excitation"), m_excitation},
                                                    {tr("Grid"), m_gridPanel}};
-    for (const auto& [title, w] : inputs) {
-        QDockWidget* d = addPanelDock(title, scrollable(w), Qt::LeftDockWidgetArea);
-        if (!m_inputDocks.empty()) tabifyDockWidget(m_inputDocks.front(), d);
-        m_inputDocks.push_back(d);
-    }
-    m_inputDocks.front()->raise();
+    // Verdict under the inputs first, then the other inputs tabbed with the first.
+    for (const auto& [title, w] : inputs)
+        m_inputDocks.push_back(addPanelDock(title, scrollable(w), Qt::LeftDockWidgetArea));
     QDockWidget* verdict = addPanelDock(tr("Verdict"), m_verdict, Qt::LeftDockWidgetArea);
     splitDockWidget(m_inputDocks.front(), verdict, Qt::Vertical);
-    resizeDocks({verdict}, {190}, Qt::Vertical);
+    for (std::size_t i = 1; i < m_inputDocks.size(); ++i)
+        tabifyDockWidget(m_inputDocks.front(), m_inputDocks[i]);
+    m_inputDocks.front()->raise();
+    resizeDocks({verdict}, {200}, Qt::Vertical);
     QDockWidget* slice = addPanelDock(tr("γc, τc against A"), m_slice, Qt::BottomDockWidgetArea);
     QDockWidget* history = addPanelDock(tr("History"), m_history, Qt::BottomDockWidgetArea);
     QDockWidget* critical = addPanelDock(tr("A_crit(f)"), m_critical, Qt::BottomDockWidgetArea);
     splitDockWidget(slice, history, Qt::Horizontal);
     splitDockWidget(history, critical, Qt::Horizontal);
-    resizeDocks({slice}, {280}, Qt::Vertical);
-    resizeDocks({m_inputDocks.front()}, {340}, Qt::Horizontal);
+    resizeDocks({slice, history, critical}, {300, 300, 300}, Qt::Vertical);
+    resizeDocks({m_inputDocks.front()}, {380}, Qt::Horizontal);
 }
 
 Slab1DCase MainWindow::currentCase() const {

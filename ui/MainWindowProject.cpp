@@ -35,6 +35,13 @@ QColor codeColour(const std::string& code) {
     if (code == "asce7_22") return QColor(0, 150, 70);
     return QColor(0, 120, 200);
 }
+// "UBC 1976 §2312" -> "UBC 1976": the legend and charts have little room.
+QString shortTitle(const std::string& title) {
+    QString t = QString::fromStdString(title);
+    for (const QString& cut : {QStringLiteral(" §"), QStringLiteral(" ("), QStringLiteral(":")})
+        if (const qsizetype i = t.indexOf(cut); i > 0) t.truncate(i);
+    return t;
+}
 } // namespace
 
 Project MainWindow::project() const {
@@ -78,8 +85,7 @@ void MainWindow::updateCodes() {
             m_verdict->setError(QString::fromStdString(e.what()));
         }
         for (const CodeResult& r : m_codeResults)
-            m_overlays.codes.push_back(
-                {QString::fromStdString(r.title), r.topRatio, codeColour(r.code)});
+            m_overlays.codes.push_back({shortTitle(r.title), r.topRatio, codeColour(r.code)});
         // The building's frequency: the entered period, else the first code's estimate.
         if (b.period)
             m_overlays.buildingFrequency = 1.0 / *b.period;

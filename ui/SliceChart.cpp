@@ -37,7 +37,7 @@ SliceChart::SliceChart(QWidget* parent)
     c->setTitle(tr("γc and τc against A — select a point on the surface"));
     setChart(c);
     setRenderHint(QPainter::Antialiasing);
-    setMinimumSize(260, 200);
+    setMinimumSize(240, 160);
 }
 
 void SliceChart::setSlice(double f, const std::vector<double>& amplitudes,
@@ -58,7 +58,6 @@ void SliceChart::setSlice(double f, const std::vector<double>& amplitudes,
     m_gamma->replace(g);
     m_tau->replace(t);
     m_gamma->setName(gammaTitle);
-    m_yGamma->setTitleText(gammaTitle);
     if (!amplitudes.empty())
         m_x->setRange(amplitudes.front(), std::max(amplitudes.back(), amplitudes.front() + 1e-6));
     m_yGamma->setRange(0, gMax > 0 ? 1.1 * gMax : 1.0);

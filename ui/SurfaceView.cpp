@@ -89,7 +89,7 @@ SurfaceView::SurfaceView(QWidget* parent) : QWidget(parent), m_legend(new QLabel
         g->setAxisX(makeAxis(tr("A (g)"), QStringLiteral("%.2f")));
         g->setAxisY(makeAxis(m_grid.gammaTitle, QStringLiteral("%.2f")));
         g->setAxisZ(makeAxis(tr("f (Hz)"), QStringLiteral("%.2f")));
-        g->scene()->activeCamera()->setCameraPosition(-40.0f, 22.0f, 88.0f);
+        g->scene()->activeCamera()->setCameraPosition(-40.0f, 22.0f, 80.0f);
         g->setHorizontalAspectRatio(1.4f);
         m_3d->surface = new QSurface3DSeries;
         m_3d->surface->setDrawMode(QSurface3DSeries::DrawSurfaceAndWireframe);
@@ -127,7 +127,8 @@ SurfaceView::SurfaceView(QWidget* parent) : QWidget(parent), m_legend(new QLabel
         });
         layout->addWidget(m_map, 1);
     }
-    m_legend->setWordWrap(true);
+    // No word wrap: a wrapped label's minimum height would stretch the window; two fixed lines.
+    m_legend->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     m_legend->setTextFormat(Qt::RichText);
     layout->addWidget(m_legend);
     updateLegend();
@@ -246,12 +247,14 @@ void SurfaceView::rebuildOverlays() {
         add(makeOverlay(Qt::black),
             makeArray({f - wf, f + wf}, xs,
                       [&](std::size_t, std::size_t c) { return heightAt(fi, xs[c]); }));
-        for (const CodeRatio& c : m_overlays.codes) {
+        for (std::size_t k = 0; k < m_overlays.codes.size(); ++k) {
+            const CodeRatio& c = m_overlays.codes[k];
+            const float stagger = (0.10f + 0.09f * static_cast<float>(k)) * yMax; // close ratios
             auto* label = new QCustom3DLabel(
-                QStringLiteral("%1: %2 g").arg(c.name).arg(c.ratio, 0, 'f', 3),
+                QStringLiteral("%1 %2").arg(c.name).arg(c.ratio, 0, 'f', 2),
                 g->activeTheme()->font(),
-                QVector3D(static_cast<float>(c.ratio), heightAt(fi, c.ratio) + 0.08f * yMax, f),
-                QVector3D(0.6f, 0.6f, 0.0f), QQuaternion());
+                QVector3D(static_cast<float>(c.ratio), heightAt(fi, c.ratio) + stagger, f),
+                QVector3D(0.45f, 0.45f, 0.0f), QQuaternion());
             label->setFacingCamera(true);
             label->setTextColor(c.color.darker(130));
             label->setBorderEnabled(false);
@@ -288,14 +291,15 @@ void SurfaceView::updateLegend() {
     };
     QString html = swatch(gammaColor(0.0), tr("stable (γc = 0)")) +
                    swatch(gammaColor(1.0), tr("fastest collapse (largest γc)"));
-    for (const CodeRatio& c : m_overlays.codes)
-        html += swatch(c.color, tr("%1 top-floor ratio %2 g").arg(c.name).arg(c.ratio, 0, 'f', 3));
     if (m_overlays.buildingFrequency)
         html +=
             swatch(Qt::black,
                    tr("building f = 1/T = %1 Hz").arg(*m_overlays.buildingFrequency, 0, 'f', 3));
     if (!m_overlays.aCrit.empty())
         html += swatch(QColor(160, 160, 160), tr("A_crit(f) (white line)"));
+    html += QStringLiteral("<br>") + tr("Top-floor ratios F_top/w_top: ");
+    for (const CodeRatio& c : m_overlays.codes)
+        html += swatch(c.color, tr("%1 %2 g").arg(c.name).arg(c.ratio, 0, 'f', 3));
     m_legend->setText(html);
 }
 

@@ -8,15 +8,22 @@
 namespace kinstab::ui {
 
 namespace {
-enum Column { ColCode, ColPeriod, ColRatio, ColACrit, ColMargin, ColVerdict, Columns };
+enum Column { ColCode, ColRatio, ColACrit, ColMargin, ColVerdict, Columns };
+// "UBC 1976 §2312" -> "UBC 1976": the dock is narrow; the full title is the tooltip.
+QString shortTitle(const QString& t) {
+    QString s = t;
+    for (const QString& cut : {QStringLiteral(" §"), QStringLiteral(" ("), QStringLiteral(":")})
+        if (const qsizetype i = s.indexOf(cut); i > 0) s.truncate(i);
+    return s;
 }
+} // namespace
 
 VerdictPanel::VerdictPanel(QWidget* parent)
     : QWidget(parent), m_table(new QTableWidget(0, Columns, this)), m_note(new QLabel(this)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
-    m_table->setHorizontalHeaderLabels({tr("Code"), tr("T (s)"), tr("F_top/w_top (g)"),
-                                        tr("A_crit (g)"), tr("Margin"), tr("Verdict")});
+    m_table->setHorizontalHeaderLabels(
+        {tr("Code"), tr("Ratio (g)"), tr("A_crit (g)"), tr("Margin"), tr("Verdict")});
     m_table->horizontalHeaderItem(ColRatio)->setToolTip(
         tr("Top-floor lateral force over the top floor's weight, as the code requires it: the peak "
            "floor "
@@ -31,7 +38,7 @@ VerdictPanel::VerdictPanel(QWidget* parent)
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
     layout->addWidget(m_table);
-    m_note->setWordWrap(true);
+    m_note->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred); // no wrap: see SurfaceView
     layout->addWidget(m_note);
 }
 
@@ -47,14 +54,14 @@ QString VerdictPanel::verdictText(int row) const {
 void VerdictPanel::setRow(int row, const QString& title, double period, double ratio,
                           const QString& aCrit, const QString& margin, const QString& verdict,
                           const QColor& colour) {
-    const QString cells[] = {
-        title,  QString::number(period, 'f', 3), QString::number(ratio, 'f', 3), aCrit, margin,
-        verdict};
+    const QString cells[] = {shortTitle(title), QString::number(ratio, 'f', 3), aCrit, margin,
+                             verdict};
     for (int c = 0; c < Columns; ++c) {
         auto* item = new QTableWidgetItem(cells[c]);
         if (c != ColCode && c != ColVerdict)
             item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         if (c == ColVerdict) item->setForeground(colour);
+        if (c == ColCode) item->setToolTip(tr("%1, T = %2 s").arg(title).arg(period, 0, 'f', 3));
         m_table->setItem(row, c, item);
     }
 }
@@ -67,7 +74,7 @@ void VerdictPanel::setCodeResults(const std::vector<CodeResult>& results) {
         setRow(i, QString::fromStdString(r.title), r.periodSeconds, r.topRatio, tr("…"), tr("…"),
                tr("run the sweep"), palette().color(QPalette::PlaceholderText));
         if (r.topRatioWithoutFt)
-            notes << tr("%1: %2 includes the top force F_t; without it %3 (the paper's figure).")
+            notes << tr("%1: %2 with F_t, %3 without (the paper's).")
                          .arg(QString::fromStdString(r.title))
                          .arg(r.topRatio, 0, 'f', 3)
                          .arg(*r.topRatioWithoutFt, 0, 'f', 3);
