@@ -17,6 +17,7 @@ int runPrecision(const ArgList& args);
 int runCodes(const ArgList& args);
 int runCheck(const ArgList& args);
 int runRecord(const ArgList& args);
+int runFriction(const ArgList& args);
 
 class Args;
 // simulate --record FILE (SimulateRecord.cpp), called by runSimulate.

@@ -23,6 +23,8 @@ commands:
   record    --file FILE [--floor-period T [--damping Z]] [--peaks N] [--spectrum-csv FILE]
   codes     --project FILE | building flags + code flags
   check     --project FILE
+  friction  --data FILE.csv [--bearing-area IN2] [--alpha 0|2] [--beta best|0|1/3] [--max-cp PSI]
+            [--outlier-alpha A] [--outlier-min-runs N] [--keep-outliers] [-o FILE]
 
 LIST: comma-separated numbers or start:stop:step.
 model flags: --model slab1d --envelope fast|moderate|slow | --alpha X --beta Y
@@ -49,7 +51,7 @@ int main(int argc, char** argv) {
     const std::map<std::string, std::function<int(const ArgList&)>> commands = {
         {"simulate", runSimulate}, {"surface", runSurface},     {"critical", runCritical},
         {"bench", runBench},       {"precision", runPrecision}, {"record", runRecord},
-        {"codes", runCodes},       {"check", runCheck},
+        {"codes", runCodes},       {"check", runCheck},         {"friction", runFriction},
     };
     if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
         std::cout << kUsage;

@@ -1,0 +1,149 @@
+#include "core/friction/TripletCsv.h"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+namespace kinstab {
+namespace {
+
+const std::array<std::string, 5> kColumns = {"configuration", "cp_psi", "test_no", "delta_in",
+                                             "shear_kips"};
+
+std::string trim(const std::string& s) {
+    const auto b = s.find_first_not_of(" \t\r");
+    if (b == std::string::npos) return {};
+    return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+}
+
+struct Where {
+    const std::string& source;
+    int line;
+    std::string at(const std::string& column = {}) const {
+        std::string s = source + " line " + std::to_string(line);
+        return column.empty() ? s : s + ", column '" + column + "'";
+    }
+};
+
+double parseNumber(const std::string& field, const Where& where, const std::string& column) {
+    double v = 0.0;
+    const char* end = field.data() + field.size();
+    const auto [ptr, ec] = std::from_chars(field.data(), end, v);
+    if (field.empty() || ec != std::errc() || ptr != end || !std::isfinite(v))
+        throw TripletCsvError(where.at(column) + ": '" + field + "' is not a number");
+    return v;
+}
+
+// Index of each required column in the header; throws naming the missing one.
+std::array<std::size_t, 5> headerIndices(const std::vector<std::string>& header,
+                                         const Where& where) {
+    std::array<std::size_t, 5> idx{};
+    for (std::size_t k = 0; k < kColumns.size(); ++k) {
+        std::size_t i = 0;
+        while (i < header.size() && trim(header[i]) != kColumns[k])
+            ++i;
+        if (i == header.size())
+            throw TripletCsvError(where.at() + ": header has no column '" + kColumns[k] +
+                                  "' (needs configuration,cp_psi,test_no,delta_in,shear_kips)");
+        idx[k] = i;
+    }
+    return idx;
+}
+
+} // namespace
+
+std::vector<std::string> splitCsvLine(const std::string& line) {
+    std::vector<std::string> fields(1);
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char ch = line[i];
+        if (quoted) {
+            if (ch == '"' && i + 1 < line.size() && line[i + 1] == '"')
+                fields.back() += '"', ++i;
+            else if (ch == '"')
+                quoted = false;
+            else
+                fields.back() += ch;
+        } else if (ch == '"')
+            quoted = true;
+        else if (ch == ',')
+            fields.emplace_back();
+        else if (ch != '\r')
+            fields.back() += ch;
+    }
+    if (quoted) throw std::invalid_argument("unterminated quoted field");
+    return fields;
+}
+
+std::vector<TripletCurve> parseTripletCsv(const std::string& text, const std::string& source) {
+    std::istringstream in(text);
+    std::string line;
+    std::vector<TripletCurve> curves;
+    std::map<std::tuple<std::string, double, std::string>, std::size_t> index;
+    std::array<std::size_t, 5> col{};
+    bool haveHeader = false;
+    for (int lineNo = 1; std::getline(in, line); ++lineNo) {
+        const Where where{source, lineNo};
+        if (trim(line).empty() || trim(line)[0] == '#') continue;
+        std::vector<std::string> f;
+        try {
+            f = splitCsvLine(line);
+        } catch (const std::invalid_argument& e) {
+            throw TripletCsvError(where.at() + ": " + e.what());
+        }
+        if (!haveHeader) {
+            col = headerIndices(f, where);
+            haveHeader = true;
+            continue;
+        }
+        for (std::size_t k = 0; k < col.size(); ++k)
+            if (col[k] >= f.size())
+                throw TripletCsvError(where.at(kColumns[k]) + ": missing (line has " +
+                                      std::to_string(f.size()) + " fields)");
+        const std::string config = trim(f[col[0]]), test = trim(f[col[2]]);
+        if (config.empty()) throw TripletCsvError(where.at("configuration") + ": empty");
+        if (test.empty()) throw TripletCsvError(where.at("test_no") + ": empty");
+        const double cp = parseNumber(trim(f[col[1]]), where, "cp_psi");
+        const double delta = parseNumber(trim(f[col[3]]), where, "delta_in");
+        const double shear = parseNumber(trim(f[col[4]]), where, "shear_kips");
+        if (!(cp > 0.0))
+            throw TripletCsvError(where.at("cp_psi") + ": must be > 0, got '" + trim(f[col[1]]) +
+                                  "'");
+        if (!(shear > 0.0))
+            throw TripletCsvError(where.at("shear_kips") + ": must be > 0, got '" +
+                                  trim(f[col[4]]) + "'");
+        const auto key = std::make_tuple(config, cp, test);
+        auto [it, added] = index.try_emplace(key, curves.size());
+        if (added) curves.push_back(TripletCurve{config, cp, test, {}, {}});
+        TripletCurve& c = curves[it->second];
+        const Eigen::Index n = c.delta.size();
+        if (n > 0 && !(delta > c.delta(n - 1)))
+            throw TripletCsvError(where.at("delta_in") + ": " + trim(f[col[3]]) +
+                                  " does not increase on the previous " + "sample of " +
+                                  curveLabel(c));
+        c.delta.conservativeResize(n + 1);
+        c.shear.conservativeResize(n + 1);
+        c.delta(n) = delta;
+        c.shear(n) = shear;
+    }
+    if (!haveHeader) throw TripletCsvError(source + ": empty file (no header line)");
+    if (curves.empty()) throw TripletCsvError(source + ": no data rows after the header");
+    for (const TripletCurve& c : curves)
+        if (const std::string e = validateCurve(c); !e.empty())
+            throw TripletCsvError(source + ": " + e);
+    return curves;
+}
+
+std::vector<TripletCurve> readTripletCsv(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw TripletCsvError(path + ": cannot open the file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parseTripletCsv(text.str(), path);
+}
+
+} // namespace kinstab
