@@ -1,5 +1,9 @@
 #include "ui/MainWindow.h"
 
+#include "ui/FrictionPanel.h"
+#include "ui/NumericsView.h"
+#include "ui/RecordsTab.h"
+
 #include "core/codes/CodeSet.h"
 #include "core/io/ResultJson.h"
 #include "ui/BuildingPanel.h"
@@ -76,7 +80,14 @@ MainWindow::MainWindow(QWidget* parent)
     m_centre->setDocumentMode(true);
     m_centre->addTab(m_surface, tr("γc surface"));
     m_teaching = new TeachingView;
-    m_centre->addTab(scrollable(m_teaching), tr("Teaching")); // its minimum size must not grow the window
+    m_centre->addTab(scrollable(m_teaching),
+                     tr("Teaching")); // its minimum size must not grow the window
+    m_records = new RecordsTab;
+    m_centre->addTab(scrollable(m_records), tr("Records"));
+    m_numerics = new NumericsView;
+    m_centre->addTab(m_numerics, tr("Numerics"));
+    m_friction = new FrictionPanel;
+    m_centre->addTab(m_friction, tr("Friction"));
     setCentralWidget(m_centre);
     buildActions();
     buildDocks();
@@ -100,6 +111,8 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_runner, &SweepRunner::partialResult, this, &MainWindow::showPartial);
     connect(m_runner, &SweepRunner::finished, this, &MainWindow::showFinished);
     connect(m_surface, &SurfaceView::pointSelected, this, &MainWindow::pickPoint);
+    // "Use this mu" from the friction calibration goes to the slab's friction field.
+    connect(m_friction, &FrictionPanel::useMu, m_slabPanel, &SlabPanel::useMu);
     resize(1280, 800);
     restoreSettings();
     updateRunState();

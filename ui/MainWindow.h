@@ -33,6 +33,9 @@ class SlabPanel;
 class SliceChart;
 class SurfaceView;
 class TeachingView;
+class RecordsTab;
+class NumericsView;
+class FrictionPanel;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -118,6 +121,9 @@ private:
     VerdictPanel* m_verdict;
     QTabWidget* m_centre = nullptr;
     TeachingView* m_teaching = nullptr;
+    RecordsTab* m_records = nullptr;
+    NumericsView* m_numerics = nullptr;
+    FrictionPanel* m_friction = nullptr;
     RecentFiles* m_recent = nullptr;
     SweepRunner* m_runner;
     QAction* m_run = nullptr;

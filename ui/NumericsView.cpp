@@ -1,0 +1,166 @@
+#include "ui/NumericsView.h"
+
+#include <QCheckBox>
+#include <QFontDatabase>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSplitter>
+#include <QVBoxLayout>
+#include <QtCharts/QChart>
+#include <QtCharts/QChartView>
+#include <QtCharts/QLineSeries>
+#include <QtCharts/QLogValueAxis>
+#include <QtConcurrent/QtConcurrentRun>
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace kinstab::ui {
+
+namespace {
+struct StudyCancelled {};
+// Errors of exactly zero (bit-identical to the reference) still need a place on a log axis.
+constexpr double kErrorFloor = 1e-17;
+} // namespace
+
+NumericsView::NumericsView(QWidget* parent) : QWidget(parent) {
+    m_run = new QPushButton(tr("Run study"), this);
+    m_run->setToolTip(
+        tr("Times every solver and setting on the fixed case set (paper grid at 1 Hz, "
+           "grazing, chattering, high frequency, long duration) and measures its "
+           "error against a converged reference."));
+    m_cancel = new QPushButton(tr("Cancel"), this);
+    m_cancel->setEnabled(false);
+    m_regularized = new QCheckBox(tr("include regularized (tanh) friction — slow"), this);
+    m_regularized->setToolTip(tr("Smoothed friction never sticks: it creeps and is stiff. "
+                                 "Shown to explain why kinstab does not use it."));
+    m_progress = new QProgressBar(this);
+    m_progress->setFormat(tr("%v of %m settings"));
+    auto* bar = new QHBoxLayout;
+    bar->addWidget(m_run);
+    bar->addWidget(m_cancel);
+    bar->addWidget(m_regularized);
+    bar->addWidget(m_progress, 1);
+
+    auto* chart = new QChart;
+    chart->setTitle(tr("Work-precision: error against run time (log-log)"));
+    chart->setAnimationOptions(QChart::NoAnimation);
+    m_chart = new QChartView(chart, this);
+    m_chart->setRenderHint(QPainter::Antialiasing);
+    m_table = new QPlainTextEdit(this);
+    m_table->setReadOnly(true);
+    m_table->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    m_table->setPlaceholderText(
+        tr("Run the study to see the table (also: kinstab-cli precision)."));
+    auto* split = new QSplitter(Qt::Vertical, this);
+    split->addWidget(m_chart);
+    split->addWidget(m_table);
+    split->setStretchFactor(0, 3);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(bar);
+    layout->addWidget(split, 1);
+
+    connect(m_run, &QPushButton::clicked, this, &NumericsView::startStudy);
+    connect(m_cancel, &QPushButton::clicked, this, &NumericsView::cancelStudy);
+    connect(&m_watcher, &QFutureWatcherBase::finished, this, &NumericsView::onFinished);
+    connect(&m_watcher, &QFutureWatcherBase::progressRangeChanged, m_progress,
+            &QProgressBar::setRange);
+    connect(&m_watcher, &QFutureWatcherBase::progressValueChanged, m_progress,
+            &QProgressBar::setValue);
+}
+
+NumericsView::~NumericsView() {
+    cancelStudy();
+    m_watcher.waitForFinished();
+}
+
+bool NumericsView::isRunning() const {
+    return m_watcher.isRunning();
+}
+
+void NumericsView::startStudy() {
+    if (isRunning()) return;
+    m_cancelFlag = std::make_shared<std::atomic<bool>>(false);
+    WorkPrecisionOptions options;
+    options.includeRegularized = m_regularized->isChecked();
+    auto flag = m_cancelFlag;
+    m_watcher.setFuture(QtConcurrent::run(
+        [options, flag](QPromise<std::shared_ptr<WorkPrecisionStudy>>& promise) mutable {
+            options.onProgress = [&](std::size_t done, std::size_t total) {
+                promise.setProgressRange(0, static_cast<int>(total));
+                promise.setProgressValue(static_cast<int>(done));
+                if (flag->load()) throw StudyCancelled{};
+            };
+            try {
+                promise.addResult(
+                    std::make_shared<WorkPrecisionStudy>(runWorkPrecisionStudy(options)));
+            } catch (const StudyCancelled&) {
+            }
+        }));
+    m_run->setEnabled(false);
+    m_cancel->setEnabled(true);
+}
+
+void NumericsView::cancelStudy() {
+    if (m_cancelFlag) m_cancelFlag->store(true);
+}
+
+void NumericsView::onFinished() {
+    m_run->setEnabled(true);
+    m_cancel->setEnabled(false);
+    const auto future = m_watcher.future();
+    if (future.resultCount() > 0) showStudy(*future.result());
+}
+
+int NumericsView::curveCount() const {
+    return m_curves;
+}
+
+void NumericsView::showStudy(const WorkPrecisionStudy& study) {
+    QChart* chart = m_chart->chart();
+    chart->removeAllSeries();
+    for (QAbstractAxis* axis : chart->axes())
+        chart->removeAxis(axis);
+    std::map<std::string, QList<QPointF>> curves;
+    double lo = 1.0, hi = 1.0, tlo = 1.0, thi = 1.0;
+    bool first = true;
+    for (const WorkPrecisionRow& row : study.rows) {
+        if (!std::isfinite(row.error) || !(row.timing.minSeconds > 0.0)) continue;
+        const double e = std::max(row.error, kErrorFloor);
+        curves[row.caseId + " / " + row.solver].append({e, row.timing.minSeconds});
+        lo = first ? e : std::min(lo, e);
+        hi = first ? e : std::max(hi, e);
+        tlo = first ? row.timing.minSeconds : std::min(tlo, row.timing.minSeconds);
+        thi = first ? row.timing.minSeconds : std::max(thi, row.timing.minSeconds);
+        first = false;
+    }
+    auto* x = new QLogValueAxis;
+    x->setTitleText(tr("error (relative τc, or residual δ / limit; 1 = wrong outcome)"));
+    x->setLabelFormat("%.0e");
+    x->setRange(lo / 3.0, hi * 3.0);
+    auto* y = new QLogValueAxis;
+    y->setTitleText(tr("run time, s (minimum of repeats)"));
+    y->setLabelFormat("%.0e");
+    y->setRange(tlo / 3.0, thi * 3.0);
+    chart->addAxis(x, Qt::AlignBottom);
+    chart->addAxis(y, Qt::AlignLeft);
+    m_curves = 0;
+    for (auto& [name, points] : curves) {
+        auto* series = new QLineSeries;
+        series->setName(QString::fromStdString(name));
+        series->setPointsVisible(true);
+        series->replace(points);
+        chart->addSeries(series);
+        series->attachAxis(x);
+        series->attachAxis(y);
+        ++m_curves;
+    }
+    m_table->setPlainText(QString::fromStdString(workPrecisionText(study)));
+    emit studyShown();
+}
+
+} // namespace kinstab::ui

@@ -1,0 +1,51 @@
+#pragma once
+// The Numerics view (SPEC §11): the work-precision study of core/numerics/WorkPrecision.h as a
+// log-log plot of error against run time, one curve per case and solver, and its table.
+// The study runs off the GUI thread; Cancel takes effect after the row in progress.
+
+#include "core/numerics/WorkPrecision.h"
+
+#include <QFutureWatcher>
+#include <QWidget>
+#include <atomic>
+#include <memory>
+
+class QChartView;
+class QCheckBox;
+class QPlainTextEdit;
+class QProgressBar;
+class QPushButton;
+
+namespace kinstab::ui {
+
+class NumericsView : public QWidget {
+    Q_OBJECT
+public:
+    explicit NumericsView(QWidget* parent = nullptr);
+    ~NumericsView() override;
+
+    void startStudy();
+    void cancelStudy();
+    bool isRunning() const;
+    // Shows a finished study (also used by tests with a study computed elsewhere).
+    void showStudy(const WorkPrecisionStudy& study);
+    int curveCount() const;
+
+signals:
+    void studyShown();
+
+private:
+    void onFinished();
+
+    QPushButton* m_run = nullptr;
+    QPushButton* m_cancel = nullptr;
+    QCheckBox* m_regularized = nullptr;
+    QProgressBar* m_progress = nullptr;
+    QChartView* m_chart = nullptr;
+    QPlainTextEdit* m_table = nullptr;
+    QFutureWatcher<std::shared_ptr<WorkPrecisionStudy>> m_watcher;
+    std::shared_ptr<std::atomic<bool>> m_cancelFlag;
+    int m_curves = 0;
+};
+
+} // namespace kinstab::ui

@@ -1,0 +1,32 @@
+#pragma once
+// The Records tab: import an accelerogram (AT2, COSMOS, CSMIP, text) and preview the ground
+// motion, the floor motion through the floor filter, the spectra and the fitted envelope
+// (paper Figs. 25-27). Starts on the shipped RSN68 UP record, the stand-in for the paper's
+// Pacoima Dam vertical.
+
+#include <QWidget>
+
+class QLabel;
+
+namespace kinstab::ui {
+
+class RecordPreview;
+
+class RecordsTab : public QWidget {
+    Q_OBJECT
+public:
+    explicit RecordsTab(QWidget* parent = nullptr);
+    // Loads a file; on failure the reason is shown beside the button and false returned.
+    bool open(const QString& path);
+    RecordPreview* preview() const { return m_preview; }
+    QString errorText() const;
+
+public slots:
+    void chooseFile();
+
+private:
+    RecordPreview* m_preview;
+    QLabel* m_message;
+};
+
+} // namespace kinstab::ui
