@@ -16,6 +16,7 @@ int runBench(const ArgList& args);
 int runPrecision(const ArgList& args);
 int runCodes(const ArgList& args);
 int runCheck(const ArgList& args);
+int runReport(const ArgList& args);
 int runRecord(const ArgList& args);
 int runFriction(const ArgList& args);
 

@@ -25,6 +25,7 @@ commands:
   check     --project FILE
   friction  --data FILE.csv [--bearing-area IN2] [--alpha 0|2] [--beta best|0|1/3] [--max-cp PSI]
             [--outlier-alpha A] [--outlier-min-runs N] [--keep-outliers] [-o FILE]
+  report    --project FILE -o FILE.pdf [--page a4|letter] [--figure-grid N]
 
 LIST: comma-separated numbers or start:stop:step.
 model flags: --model slab1d --envelope fast|moderate|slow | --alpha X --beta Y
@@ -52,6 +53,7 @@ int main(int argc, char** argv) {
         {"simulate", runSimulate}, {"surface", runSurface},     {"critical", runCritical},
         {"bench", runBench},       {"precision", runPrecision}, {"record", runRecord},
         {"codes", runCodes},       {"check", runCheck},         {"friction", runFriction},
+        {"report", runReport},
     };
     if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
         std::cout << kUsage;

@@ -1,0 +1,30 @@
+#pragma once
+// The sections of the design report, each added to the document only when its analysis ran.
+
+#include "core/io/Project.h"
+#include "ui/report/ReportAnalysis.h"
+#include "ui/report/ReportDocument.h"
+
+#include <QString>
+
+#include <optional>
+#include <string>
+
+namespace kinstab::ui::report {
+
+QString num(double x, int digits);
+QString num(const std::optional<double>& x, int digits, const QString& none = QStringLiteral("—"));
+inline QString qs(const std::string& s) {
+    return QString::fromStdString(s);
+}
+QString gammaLabel(const Slab1DCase& c); // "γc = τmax/τc"
+
+void addInputSections(ReportDocument& doc, const Project& p);
+void addCodeSections(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
+void addExcitationSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
+void addSurfaceSections(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
+void addVerdictTable(ReportDocument& doc, const ReportAnalysis& a);
+void addNumericsSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
+void addReferences(ReportDocument& doc, const Project& p);
+
+} // namespace kinstab::ui::report

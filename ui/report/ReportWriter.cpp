@@ -1,0 +1,39 @@
+#include "ui/report/ReportWriter.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QPainter>
+#include <QPdfWriter>
+
+namespace kinstab::ui::report {
+
+int writeReportPdf(const ReportDocument& doc, const QString& path, PaperSize paper) {
+    const QFileInfo info(path);
+    if (!info.absoluteDir().exists())
+        throw ReportError("the folder " + info.absolutePath().toStdString() + " does not exist");
+    QPdfWriter pdf(path);
+    pdf.setPageSize(pageSizeOf(paper));
+    pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
+    pdf.setResolution(300);
+    pdf.setTitle(doc.title);
+    pdf.setCreator(QStringLiteral("kinstab " KINSTAB_VERSION));
+    QPainter painter;
+    if (!painter.begin(&pdf)) throw ReportError("cannot write a PDF file there");
+    ReportStyle style;
+    style.dpi = pdf.resolution();
+    const QRectF page(0, 0, pdf.width(), pdf.height());
+    const PageLayout layout(doc, &pdf, page, style);
+    for (int k = 0; k < layout.pageCount(); ++k) {
+        if (k > 0) pdf.newPage();
+        layout.paintPage(painter, k);
+    }
+    painter.end();
+    return layout.pageCount();
+}
+
+int writeReport(const ReportSource& source, const ReportAnalysis& analysis, const QString& path,
+                PaperSize paper) {
+    return writeReportPdf(buildReportDocument(source, analysis), path, paper);
+}
+
+} // namespace kinstab::ui::report

@@ -1,0 +1,40 @@
+#pragma once
+// The design report (SPEC §10, issue #5): one function builds the document from a project and
+// the analyses already computed, one writes it as a vector PDF. The GUI's File → Export report…
+// and `kinstab-cli report` both call writeReport, so they produce the same document.
+
+#include "core/io/Project.h"
+#include "ui/report/PageLayout.h"
+#include "ui/report/ReportAnalysis.h"
+#include "ui/report/ReportDocument.h"
+
+#include <QByteArray>
+#include <QDateTime>
+#include <QString>
+
+#include <stdexcept>
+
+namespace kinstab::ui::report {
+
+struct ReportError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct ReportSource {
+    Project project;
+    QString fileName;        // the project file as the user named it ("" when unsaved)
+    QByteArray fileContents; // its bytes, for the SHA-256 in the title block
+    QDateTime created = QDateTime::currentDateTimeUtc();
+};
+
+ReportDocument buildReportDocument(const ReportSource& source, const ReportAnalysis& analysis);
+
+// Writes the PDF (vector text and line art). Returns the number of pages; throws ReportError
+// when the file cannot be written.
+int writeReportPdf(const ReportDocument& doc, const QString& path, PaperSize paper);
+
+// Both in one: what the GUI and the CLI call.
+int writeReport(const ReportSource& source, const ReportAnalysis& analysis, const QString& path,
+                PaperSize paper);
+
+} // namespace kinstab::ui::report
