@@ -18,6 +18,7 @@
 #include "ui/SliceChart.h"
 #include "ui/SurfaceView.h"
 #include "ui/VerdictPanel.h"
+#include "ui/report/ReportExport.h"
 #include "ui/teaching/TeachingView.h"
 
 #include <QAction>
@@ -146,6 +147,11 @@ void MainWindow::buildFileMenu() {
                       [this] { exportChart(m_history, QStringLiteral("history")); });
     charts->addAction(tr("A_crit(f)…"), this,
                       [this] { exportChart(m_critical, QStringLiteral("acrit")); });
+    file->addAction(tr("Export &report (PDF)…"), this, [this] {
+        // The same document as `kinstab-cli report` (ui/report/ReportWriter.h).
+        const QString out = report::exportReportDialog(this, project(), m_path);
+        if (!out.isEmpty()) statusBar()->showMessage(tr("Report written to %1").arg(out), 5000);
+    });
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 }
