@@ -102,8 +102,12 @@ private slots:
         const double aCrit =
             QJsonDocument::fromJson(r.out).object()["a_crit"].toArray()[0].toDouble();
         QVERIFY(aCrit > 0.95 && aCrit <= 1.00);
-        QVERIFY2(pdfText(a4_).contains(QString::number(aCrit, 'f', 4)),
-                 qPrintable(QString::number(aCrit, 'f', 4)));
+        // The verdict table's A_crit column (4 decimals) agrees within the search tolerance.
+        const auto m =
+            QRegularExpression("ATC 3-06 \\(1978\\) §4.2\\s+0.275\\s+1.000\\s+(\\d\\.\\d{4})")
+                .match(pdfText(a4_));
+        QVERIFY(m.hasMatch());
+        QCOMPARE_LE(std::abs(m.captured(1).toDouble() - aCrit), 1e-4 + 5e-5);
     }
 
     void vectorOnly() {
