@@ -24,7 +24,8 @@ private slots:
 };
 
 namespace {
-// max over tau of |e(t* tau) sin(omega tau)| and max of e, by sampling (step 1e-3 in tau, to tau = 400: ten times the envelope's peak).
+// max over tau of |e(t* tau) sin(omega tau)| and max of e, by sampling (step 1e-3 in tau, to tau =
+// 400: ten times the envelope's peak).
 void sampledMaxima(const Envelope& env, double f, double tstar, double& product, double& envelope) {
     const double w = 2.0 * std::numbers::pi * f * tstar;
     product = envelope = 0.0;

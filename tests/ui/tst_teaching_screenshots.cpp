@@ -70,7 +70,8 @@ private slots:
         const auto& ev = view.run().events();
         QVERIFY(ev.size() > 2);
         int k = static_cast<int>(ev.size()) - 2;
-        while (k > 0 && ev[static_cast<std::size_t>(k)].kind != EventKind::SlipOnset) --k;
+        while (k > 0 && ev[static_cast<std::size_t>(k)].kind != EventKind::SlipOnset)
+            --k;
         const double t0 = ev[static_cast<std::size_t>(k)].tau;
         const double t1 = ev[static_cast<std::size_t>(k + 1)].tau;
         view.player()->seek(t0 + 0.6 * (t1 - t0));
