@@ -9,18 +9,9 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "CliRun.h"
+
 namespace {
-struct Run {
-    int code = -1;
-    QByteArray out, err;
-};
-Run cli(const QStringList& args) {
-    QProcess p;
-    p.start(KINSTAB_CLI, args);
-    p.waitForFinished(60000);
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-            p.readAllStandardError()};
-}
 const QString kExample = KINSTAB_SOURCE_DIR "/resources/examples/paper-16-story.json";
 void near(double got, double want, double tol) {
     QVERIFY2(std::abs(got - want) <= tol,

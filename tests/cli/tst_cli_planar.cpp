@@ -6,6 +6,8 @@
 #include <QProcess>
 #include <QtTest>
 
+#include "CliRun.h"
+
 class TestCliPlanar : public QObject {
     Q_OBJECT
 private slots:
@@ -17,17 +19,6 @@ private slots:
 };
 
 namespace {
-struct Run {
-    int code = -1;
-    QByteArray out, err;
-};
-
-Run cli(const QStringList& args) {
-    QProcess p;
-    p.start(KINSTAB_CLI, args);
-    p.waitForFinished(60000);
-    return {p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};
-}
 
 QJsonObject json(const Run& r) {
     return QJsonDocument::fromJson(r.out).object();

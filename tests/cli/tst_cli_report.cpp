@@ -8,26 +8,11 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "CliRun.h"
+
 #include <cmath>
 
 namespace {
-
-struct Run {
-    int code = -1;
-    QByteArray out, err;
-};
-
-Run run(const QString& program, const QStringList& args, int timeoutMs = 300000) {
-    QProcess p;
-    p.start(program, args);
-    if (!p.waitForFinished(timeoutMs)) p.kill();
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-            p.readAllStandardError()};
-}
-
-Run cli(const QStringList& args) {
-    return run(KINSTAB_CLI, args);
-}
 
 const QString kProject =
     QStringLiteral(KINSTAB_SOURCE_DIR "/resources/examples/paper-16-story.json");

@@ -8,19 +8,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
-namespace {
-struct Run {
-    int code = -1;
-    QByteArray out, err;
-};
-Run cli(const QStringList& args) {
-    QProcess p;
-    p.start(KINSTAB_CLI, args);
-    p.waitForFinished(60000);
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-            p.readAllStandardError()};
-}
-} // namespace
+#include "CliRun.h"
 
 class TestCliSlab : public QObject {
     Q_OBJECT
