@@ -1,5 +1,7 @@
 #include "core/slab/PlanarSolver.h"
 
+#include "core/numerics/GaussLegendre.h"
+
 #include "core/numerics/Dopri5.h"
 #include "core/numerics/LevelCrossings.h"
 #include "core/numerics/RootFinding.h"
@@ -20,19 +22,6 @@ using Vec5 = OdeVec<5>; // (ex, ey, tau - tau_entry, dx, dy) in s = ln|u|
 constexpr double kSlaved = 1e-6;
 
 // 10-point Gauss-Legendre on [-1, 1] (the quadrature of a slip's first stretch).
-constexpr std::array<double, 5> kGlX = {0.1488743389816312, 0.4333953941292472, 0.6794095682990244,
-                                        0.8650633666889845, 0.9739065285171717};
-constexpr std::array<double, 5> kGlW = {0.2955242247147529, 0.2692667193099963, 0.2190863625159820,
-                                        0.1494513491505806, 0.0666713443086881};
-
-template <class F> double gaussLegendre(F&& f, double lo, double hi) {
-    const double m = 0.5 * (lo + hi), r = 0.5 * (hi - lo);
-    double sum = 0.0;
-    for (std::size_t i = 0; i < kGlX.size(); ++i)
-        sum += kGlW[i] * (f(m - r * kGlX[i]) + f(m + r * kGlX[i]));
-    return r * sum;
-}
-
 class PlanarRun {
 public:
     PlanarRun(const SlabModel2D& m, const PlanarOptions& o) : m_(m), o_(o), mu_(m.params().mu) {}
@@ -364,9 +353,9 @@ PlanarRun::Step PlanarRun::slaved(double end) {
     while (t_ < end) {
         const double t0 = t_, h = std::min(startLength_, end - t0), r0 = rho;
         ++r_.slab.work.steps;
-        auto speedAt = [&](double t) { return r0 + gaussLegendre(margin, t0, t); };
+        auto speedAt = [&](double t) { return r0 + gaussLegendre10(margin, t0, t); };
         auto shift = [&](double t1, int k) {
-            return gaussLegendre(
+            return gaussLegendre10(
                 [&](double s) {
                     const Vec2 e = unitA(s);
                     return speedAt(s) * (k == 0 ? e.x : e.y);

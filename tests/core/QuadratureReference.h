@@ -6,6 +6,7 @@
 // each by plain bisection to ~1e-15.
 
 #include "core/excitation/Excitation1D.h"
+#include "core/numerics/GaussLegendre.h"
 #include "core/slab/SlabTypes.h"
 
 #include <algorithm>
@@ -121,21 +122,11 @@ private:
     }
     // Composite Gauss-Legendre over sub-steps no longer than h_.
     template <class G> double gauss(double t0, double t1, G&& g) const {
-        static constexpr std::array<double, 5> x = {0.1488743389816312, 0.4333953941292472,
-                                                    0.6794095682990244, 0.8650633666889845,
-                                                    0.9739065285171717};
-        static constexpr std::array<double, 5> w = {0.2955242247147529, 0.2692667193099963,
-                                                    0.2190863625159820, 0.1494513491505806,
-                                                    0.0666713443086881};
         const int pieces = std::max(1, static_cast<int>(std::ceil((t1 - t0) / h_)));
         double sum = 0;
         for (int p = 0; p < pieces; ++p) {
             const double lo = t0 + (t1 - t0) * p / pieces, hi = t0 + (t1 - t0) * (p + 1) / pieces;
-            const double m = 0.5 * (lo + hi), r = 0.5 * (hi - lo);
-            double part = 0;
-            for (std::size_t i = 0; i < x.size(); ++i)
-                part += w[i] * (g(m - r * x[i]) + g(m + r * x[i]));
-            sum += r * part;
+            sum += gaussLegendre10(g, lo, hi);
         }
         return sum;
     }

@@ -4,6 +4,7 @@
 // by composite Gauss-Legendre (no closed forms).
 
 #include "core/excitation/Excitation1D.h"
+#include "core/numerics/GaussLegendre.h"
 #include "core/slab/SlabTypes.h"
 
 #include <QtTest>
@@ -56,22 +57,11 @@ struct Integrals {
     double first = 0, second = 0;
 };
 template <class A> Integrals integrate(A&& accel, double T, int pieces) {
-    static constexpr std::array<double, 5> x = {0.1488743389816312, 0.4333953941292472,
-                                                0.6794095682990244, 0.8650633666889845,
-                                                0.9739065285171717};
-    static constexpr std::array<double, 5> w = {0.2955242247147529, 0.2692667193099963,
-                                                0.2190863625159820, 0.1494513491505806,
-                                                0.0666713443086881};
     Integrals out;
     for (int p = 0; p < pieces; ++p) {
         const double lo = T * p / pieces, hi = T * (p + 1) / pieces;
-        const double m = 0.5 * (lo + hi), r = 0.5 * (hi - lo);
-        for (std::size_t i = 0; i < x.size(); ++i)
-            for (double s : {m - r * x[i], m + r * x[i]}) {
-                const double as = accel(s);
-                out.first += r * w[i] * as;
-                out.second += r * w[i] * (T - s) * as;
-            }
+        out.first += gaussLegendre10(accel, lo, hi);
+        out.second += gaussLegendre10([&](double s) { return (T - s) * accel(s); }, lo, hi);
     }
     return out;
 }
