@@ -3,6 +3,7 @@
 #include "core/io/AtomicFile.h"
 #include "core/io/CodesJson.h"
 #include "core/io/JsonReader.h"
+#include "core/io/PlanarJson.h"
 
 #include <cmath>
 
@@ -43,6 +44,7 @@ std::string validateProject(const Project& p) {
         !(e = validateGrid(p.grid)).empty())
         e = "grid: " + e;
     if (e.empty()) e = validateCriticalSearch(p.critical);
+    if (e.empty()) e = validatePlanarSettings(p.planar);
     return e;
 }
 
@@ -150,6 +152,7 @@ json projectToJson(const Project& p) {
             {"slab", slabToJson(p)},
             {"grid", {{"amplitudes", p.grid.amplitudes}, {"frequencies", p.grid.frequencies}}},
             {"model", p.model},
+            {"planar", planarSettingsToJson(p.planar)},
             {"check", checkToJson(p.critical)}};
 }
 
@@ -168,6 +171,8 @@ Project projectFromJson(const json& j) {
             p.grid.frequencies = g->numbers("frequencies");
         }
         p.model = r.text("model", "slab1d");
+        // Projects written before the planar model have no "planar" key: defaults.
+        if (auto pl = r.optionalObject("planar")) p.planar = planarSettingsFromJson(*pl);
         if (auto c = r.optionalObject("check")) p.critical = checkFrom(*c);
         if (const std::string e = validateProject(p); !e.empty()) throw ProjectError(e);
         return p;

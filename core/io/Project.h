@@ -7,6 +7,7 @@
 
 #include "core/codes/Building.h"
 #include "core/codes/CodeSet.h"
+#include "core/slab/PlanarSettings.h"
 #include "core/slab/Slab1DCase.h"
 #include "core/sweep/CriticalAmplitude.h"
 #include "core/sweep/Grid.h"
@@ -34,7 +35,8 @@ struct Project {
     Slab1DCase slab;                   // envelope, t*, mu, limit, solver, scale
     std::optional<double> wallWidthIn; // set when t* comes from the wall width d (inches)
     SweepGrid grid;                    // A (g) and f (Hz) of the γc surface
-    std::string model = "slab1d";      // "slab1d" | "planar" (the planar model comes later)
+    std::string model = "slab1d";      // "slab1d" | "planar"
+    PlanarSettings planar;             // the planar model's own inputs (core/io/PlanarJson.h)
     CriticalSearch critical;           // A_crit search of the design check
 };
 
