@@ -35,7 +35,7 @@ void InputPanel::track(NumberField* field, const QString& label) {
 bool InputPanel::isValid() const {
     for (const auto& [field, label] : m_fields)
         if (field->isEnabled() && !field->isValid()) return false;
-    return true;
+    return extraProblems().isEmpty();
 }
 
 QStringList InputPanel::problems() const {
@@ -47,7 +47,7 @@ QStringList InputPanel::problems() const {
             if (name.endsWith(QLatin1Char(':'))) name.chop(1);
             out << QStringLiteral("%1: %2").arg(name, field->error());
         }
-    return out;
+    return out + extraProblems();
 }
 
 } // namespace kinstab::ui

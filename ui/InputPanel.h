@@ -32,6 +32,8 @@ protected:
     // Tracks a field placed elsewhere in the form.
     void track(NumberField* field, const QString& label);
     QFormLayout* form() const { return m_form; }
+    // Problems of inputs that are not NumberFields ("Label: reason"); they gate Run too.
+    virtual QStringList extraProblems() const { return {}; }
 
 private:
     QFormLayout* m_form;

@@ -13,6 +13,8 @@
 #include "ui/ExcitationPanel.h"
 #include "ui/GridPanel.h"
 #include "ui/HistoryChart.h"
+#include "ui/ModelPanel.h"
+#include "ui/PlanarHistoryChart.h"
 #include "ui/RecentFiles.h"
 #include "ui/SlabPanel.h"
 #include "ui/SliceChart.h"
@@ -34,6 +36,7 @@
 #include <QSaveFile>
 #include <QScrollArea>
 #include <QSettings>
+#include <QStackedWidget>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QToolBar>
@@ -73,6 +76,8 @@ MainWindow::MainWindow(QWidget* parent)
       m_surface(new SurfaceView), m_slice(new SliceChart), m_history(new HistoryChart),
       m_critical(new CriticalChart), m_verdict(new VerdictPanel), m_runner(new SweepRunner(this)),
       m_progress(new QProgressBar), m_status(new QLabel) {
+    m_modelPanel = new ModelPanel;
+    m_planarHistory = new PlanarHistoryChart;
     setWindowTitle(tr("kinstab — kinetic stability of friction-held slabs"));
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks |
                    QMainWindow::AllowNestedDocks);
@@ -99,12 +104,13 @@ MainWindow::MainWindow(QWidget* parent)
     statusBar()->addWidget(m_status, 1);
     statusBar()->addPermanentWidget(m_progress);
 
-    for (InputPanel* p : std::initializer_list<InputPanel*>{m_building, m_codesPanel, m_slabPanel,
-                                                            m_excitation, m_gridPanel})
+    for (InputPanel* p : std::initializer_list<InputPanel*>{
+             m_building, m_codesPanel, m_slabPanel, m_modelPanel, m_excitation, m_gridPanel})
         connect(p, &InputPanel::changed, this, &MainWindow::updateRunState);
     for (InputPanel* p : std::initializer_list<InputPanel*>{m_building, m_codesPanel})
         connect(p, &InputPanel::changed, this, &MainWindow::updateCodes);
     connect(m_building, &BuildingPanel::unitsChanged, m_slabPanel, &SlabPanel::setMetric);
+    connect(m_modelPanel, &InputPanel::changed, this, &MainWindow::updateTitle);
     connect(m_slabPanel, &InputPanel::changed, this, [this] {
         if (m_slabPanel->isValid()) m_excitation->setTstar(currentCase().tstar);
     });
@@ -188,11 +194,10 @@ QDockWidget* MainWindow::addPanelDock(const QString& title, QWidget* w, Qt::Dock
 }
 
 void MainWindow::buildDocks() {
-    const std::pair<QString, QWidget*> inputs[] = {{tr("Building"), m_building},
-                                                   {tr("Codes"), m_codesPanel},
-                                                   {tr("Slab and walls"), m_slabPanel},
-                                                   {tr("Excitation"), m_excitation},
-                                                   {tr("Grid"), m_gridPanel}};
+    const std::pair<QString, QWidget*> inputs[] = {
+        {tr("Building"), m_building},        {tr("Codes"), m_codesPanel},
+        {tr("Slab and walls"), m_slabPanel}, {tr("Model"), m_modelPanel},
+        {tr("Excitation"), m_excitation},    {tr("Grid"), m_gridPanel}};
     // Verdict under the inputs first, then the other inputs tabbed with the first.
     for (const auto& [title, w] : inputs)
         m_inputDocks.push_back(addPanelDock(title, scrollable(w), Qt::LeftDockWidgetArea));
@@ -203,7 +208,10 @@ void MainWindow::buildDocks() {
     m_inputDocks.front()->raise();
     resizeDocks({verdict}, {200}, Qt::Vertical);
     QDockWidget* slice = addPanelDock(tr("γc, τc against A"), m_slice, Qt::BottomDockWidgetArea);
-    QDockWidget* history = addPanelDock(tr("History"), m_history, Qt::BottomDockWidgetArea);
+    m_historyStack = new QStackedWidget;
+    m_historyStack->addWidget(m_history);
+    m_historyStack->addWidget(m_planarHistory);
+    QDockWidget* history = addPanelDock(tr("History"), m_historyStack, Qt::BottomDockWidgetArea);
     QDockWidget* critical = addPanelDock(tr("A_crit(f)"), m_critical, Qt::BottomDockWidgetArea);
     splitDockWidget(slice, history, Qt::Horizontal);
     splitDockWidget(history, critical, Qt::Horizontal);
@@ -221,7 +229,7 @@ Slab1DCase MainWindow::currentCase() const {
 
 bool MainWindow::inputsValid() const {
     return m_building->isValid() && m_codesPanel->isValid() && m_slabPanel->isValid() &&
-           m_excitation->isValid() && m_gridPanel->isValid();
+           m_modelPanel->isValid() && m_excitation->isValid() && m_gridPanel->isValid();
 }
 
 void MainWindow::updateRunState() {
@@ -230,8 +238,8 @@ void MainWindow::updateRunState() {
     m_cancel->setEnabled(running);
     if (running) return;
     QStringList problems = m_building->problems() + m_codesPanel->problems() +
-                           m_slabPanel->problems() + m_excitation->problems() +
-                           m_gridPanel->problems();
+                           m_slabPanel->problems() + m_modelPanel->problems() +
+                           m_excitation->problems() + m_gridPanel->problems();
     if (!problems.isEmpty()) {
         m_status->setText(tr("Fix before running — %1").arg(problems.join(QStringLiteral("; "))));
         m_run->setToolTip(problems.join(QLatin1Char('\n')));
@@ -253,13 +261,18 @@ void MainWindow::runSweep() {
         m_status->setText(QString::fromStdString(e));
         return;
     }
+    if (!preparePlanar(job)) return;
     m_sweepCase = job.slabCase;
+    m_sweepPlanar = job.planar;
     m_overlays.aCrit.clear();
     m_runner->start(job);
     m_progress->setRange(0, 1000);
     m_progress->setValue(0);
     m_progress->show();
-    m_status->setText(tr("Running %1 points…").arg(job.grid.size()));
+    m_status->setText(
+        job.planar
+            ? tr("Running %1 points of the planar model (10–50 ms each)…").arg(job.grid.size())
+            : tr("Running %1 points…").arg(job.grid.size()));
     updateRunState();
 }
 
@@ -277,8 +290,8 @@ void MainWindow::showProgress(qint64 done, qint64 total, double secondsLeft) {
 
 void MainWindow::showPartial(const SweepResult& r) {
     m_sweep = r;
-    m_gamma = gammaGrid(r, m_sweepCase.tauRef());
-    m_gamma.gammaTitle = gammaTitle(m_sweepCase.scale);
+    m_gamma = gammaGrid(r, m_sweepPlanar ? m_sweepPlanar->tauRef() : m_sweepCase.tauRef());
+    m_gamma.gammaTitle = gammaTitle(m_sweepCase.scale) + modelTitle();
     m_surface->setData(m_gamma);
     updateSlice();
 }
@@ -320,9 +333,14 @@ void MainWindow::pickPoint(int ai, int fi) {
     updateSlice();
     const double a = m_gamma.amplitudes[static_cast<std::size_t>(ai)];
     const double f = m_gamma.frequencies[static_cast<std::size_t>(fi)];
+    m_teaching->showPoint(a, f); // the teaching tab follows the pick
+    if (m_sweepPlanar) {
+        pickPlanar(a, f);
+        return;
+    }
+    m_historyStack->setCurrentWidget(m_history);
     m_picked = runPoint(m_sweepCase, a, f);
     m_history->setRun(*m_picked);
-    m_teaching->showPoint(a, f); // the teaching tab follows the pick
 }
 
 void MainWindow::updateSlice() {
@@ -352,7 +370,8 @@ void MainWindow::exportSurface() {
     if (path.isEmpty()) return;
     std::string text;
     if (path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive)) {
-        nlohmann::json j = sweepJson(m_sweep, m_sweepCase.tauRef());
+        using nlohmann::json;
+        json j = sweepJson(m_sweep, m_sweepCase.tauRef());
         j["model"] = "slab1d";
         j["solver"] = solverName(m_sweepCase.solver);
         j["envelope"] = {{"name", m_sweepCase.envelope.name()},
@@ -362,6 +381,16 @@ void MainWindow::exportSurface() {
         j["mu"] = m_sweepCase.slab.mu;
         j["tstar"] = m_sweepCase.tstar;
         j["limit"] = m_sweepCase.slab.limit;
+        if (m_sweepPlanar) {
+            const PlanarCase& c = *m_sweepPlanar;
+            j.update({{"model", "planar"},
+                      {"solver", "dopri5"},
+                      {"fy", c.fyHz},
+                      {"ay_ratio", c.ayRatio},
+                      {"theta", c.slab.theta},
+                      {"normalization", normalizationName(c.normalization)},
+                      {"vertical_peak_g", c.vertical ? json(c.vertical->peak()) : json()}});
+        }
         text = j.dump(1) + "\n";
     } else {
         text = sweepCsv(m_sweep, m_sweepCase.tauRef());

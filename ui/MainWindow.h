@@ -4,6 +4,7 @@
 
 #include "core/io/Project.h"
 #include "core/slab/Slab1DCase.h"
+#include "ui/PlanarPointRun.h"
 #include "ui/PointRun.h"
 #include "ui/SurfaceData.h"
 #include "ui/SweepRunner.h"
@@ -17,6 +18,7 @@ class QChartView;
 class QDockWidget;
 class QLabel;
 class QProgressBar;
+class QStackedWidget;
 class QTabWidget;
 
 namespace kinstab::ui {
@@ -29,6 +31,8 @@ class VerdictPanel;
 class ExcitationPanel;
 class GridPanel;
 class HistoryChart;
+class ModelPanel;
+class PlanarHistoryChart;
 class SlabPanel;
 class SliceChart;
 class SurfaceView;
@@ -66,6 +70,11 @@ public:
     HistoryChart* historyChart() const { return m_history; }
     SliceChart* sliceChart() const { return m_slice; }
     SlabPanel* slabPanel() const { return m_slabPanel; }
+    ModelPanel* modelPanel() const { return m_modelPanel; }
+    PlanarHistoryChart* planarHistoryChart() const { return m_planarHistory; }
+    // The planar case the surface was computed with (none: the 1-DOF model).
+    const std::optional<PlanarCase>& sweepPlanarCase() const { return m_sweepPlanar; }
+    const std::optional<PlanarPointRun>& pickedPlanarRun() const { return m_pickedPlanar; }
     ExcitationPanel* excitationPanel() const { return m_excitation; }
     GridPanel* gridPanel() const { return m_gridPanel; }
     BuildingPanel* buildingPanel() const { return m_building; }
@@ -106,17 +115,24 @@ private:
     void refreshOverlays();
     void exportSurface();
     void exportChart(QChartView* view, const QString& name);
+    // The planar model (MainWindowPlanar.cpp).
+    bool preparePlanar(SweepJob& job);
+    void pickPlanar(double amplitude, double frequency);
+    QString modelTitle() const;
     void saveSettings();
     void restoreSettings();
 
     BuildingPanel* m_building;
     CodesPanel* m_codesPanel;
     SlabPanel* m_slabPanel;
+    ModelPanel* m_modelPanel = nullptr;
     ExcitationPanel* m_excitation;
     GridPanel* m_gridPanel;
     SurfaceView* m_surface;
     SliceChart* m_slice;
     HistoryChart* m_history;
+    PlanarHistoryChart* m_planarHistory = nullptr;
+    QStackedWidget* m_historyStack = nullptr; // the 1-DOF or the planar history
     CriticalChart* m_critical;
     VerdictPanel* m_verdict;
     QTabWidget* m_centre = nullptr;
@@ -143,6 +159,8 @@ private:
     GammaGrid m_gamma;
     SurfaceOverlays m_overlays;
     std::optional<PointRun> m_picked;
+    std::optional<PlanarCase> m_sweepPlanar;
+    std::optional<PlanarPointRun> m_pickedPlanar;
     std::optional<DesignCheckResult> m_check;
     int m_selA = -1, m_selF = -1;
 };

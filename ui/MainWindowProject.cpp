@@ -7,6 +7,7 @@
 #include "ui/ExcitationPanel.h"
 #include "ui/GridPanel.h"
 #include "ui/MainWindow.h"
+#include "ui/ModelPanel.h"
 #include "ui/RecentFiles.h"
 #include "ui/SlabPanel.h"
 #include "ui/SurfaceView.h"
@@ -52,6 +53,8 @@ Project MainWindow::project() const {
     const auto d = m_slabPanel->wallWidthMetres();
     p.wallWidthIn = d ? std::optional<double>(*d / inch) : std::nullopt;
     p.grid = m_gridPanel->grid();
+    p.model = m_modelPanel->model();
+    p.planar = m_modelPanel->settings();
     return p;
 }
 
@@ -64,6 +67,7 @@ void MainWindow::showProject(const Project& p) {
     m_excitation->setEnvelope(p.slab.envelope);
     m_excitation->setScale(p.slab.scale);
     m_excitation->setTstar(p.slab.tstar);
+    m_modelPanel->load(p.model, p.planar);
     if (!m_gridPanel->setGrid(p.grid))
         statusBar()->showMessage(
             tr("The project's grid was not evenly spaced: shown as from/to/step"), 8000);
@@ -97,7 +101,8 @@ void MainWindow::updateCodes() {
 
 void MainWindow::updateTitle() {
     const QString name = m_path.isEmpty() ? tr("untitled") : QFileInfo(m_path).fileName();
-    setWindowTitle(tr("%1 — kinstab").arg(name));
+    setWindowTitle(m_modelPanel->isPlanar() ? tr("%1 — planar model — kinstab").arg(name)
+                                            : tr("%1 — kinstab").arg(name));
 }
 
 void MainWindow::newProject() {

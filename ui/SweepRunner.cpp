@@ -56,7 +56,9 @@ template <class F> void parallelFor(std::size_t n, int threads, const SweepContr
 }
 
 SweepOutput runJob(const SweepJob& job, SweepRunner::Live& live) {
-    const PointFunction base = slab1DPoint(job.slabCase);
+    const PointFunction base = job.planar ? planarPoint(*job.planar) : slab1DPoint(job.slabCase);
+    // Below this amplitude nothing slips: where the A_crit scans start.
+    const double scanFrom = job.planar ? planarNoSlipAmplitude(*job.planar) : job.slabCase.slab.mu;
     // A cancelled search returns at once: criticalAmplitude then ends within one point.
     const PointFunction point = [&live, base](double a, double f) {
         if (live.control.isCancelled()) return PointResult{Outcome::Failed, 0};
@@ -77,22 +79,22 @@ SweepOutput runJob(const SweepJob& job, SweepRunner::Live& live) {
     live.control.onProgress = [&live](std::size_t, std::size_t) { ++live.completed; };
 
     SweepOutput out;
-    out.tauRef = job.slabCase.tauRef();
+    out.tauRef = job.planar ? job.planar->tauRef() : job.slabCase.tauRef();
     out.sweep = runSweep(job.grid, recording, &live.control, job.threads);
-    const double mu = job.slabCase.slab.mu;
     if (job.criticalCurve && !live.control.isCancelled()) {
         out.aCrit.assign(nf, std::nullopt);
         const double top =
             *std::max_element(job.grid.amplitudes.begin(), job.grid.amplitudes.end());
         const CriticalSearch search{0.0, top, 0.01, 1e-5};
         parallelFor(nf, job.threads, live.control, [&](std::size_t j) {
-            out.aCrit[j] = criticalAmplitude(point, job.grid.frequencies[j], mu, search).amplitude;
+            out.aCrit[j] =
+                criticalAmplitude(point, job.grid.frequencies[j], scanFrom, search).amplitude;
             ++live.completed;
         });
     }
     if (!job.codes.empty() && !live.control.isCancelled()) {
         try {
-            out.check = designCheck(job.codes, job.slabCase, job.search, point);
+            out.check = designCheck(job.codes, job.slabCase, job.search, point, scanFrom);
         } catch (const std::exception& e) {
             out.checkError = e.what();
         }

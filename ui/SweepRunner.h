@@ -4,6 +4,7 @@
 // point), and a cancel keeps everything already computed.
 
 #include "core/codes/DesignCheck.h"
+#include "core/slab/PlanarCase.h"
 #include "core/slab/Slab1DCase.h"
 #include "core/sweep/Sweep.h"
 
@@ -19,6 +20,7 @@ namespace kinstab::ui {
 
 struct SweepJob {
     Slab1DCase slabCase;
+    std::optional<PlanarCase> planar; // set: the planar model runs (slabCase gives the check's mu)
     SweepGrid grid;
     std::vector<CodeResult> codes; // the design check runs on these (none: no check)
     CriticalSearch search;         // of the design check

@@ -60,7 +60,8 @@ DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1D
 }
 
 DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1DCase& slab,
-                              const CriticalSearch& search, const PointFunction& point) {
+                              const CriticalSearch& search, const PointFunction& point,
+                              std::optional<double> scanFrom) {
     if (const std::string e = validateCase(slab); !e.empty()) throw InputError(e);
     if (const std::string e = validateCriticalSearch(search); !e.empty()) throw InputError(e);
     DesignCheckResult out;
@@ -72,7 +73,8 @@ DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1D
         const double f = 1.0 / r.periodSeconds;
         auto it = cache.find(f);
         if (it == cache.end()) {
-            const CriticalResult c = criticalAmplitude(point, f, slab.slab.mu, search);
+            const CriticalResult c =
+                criticalAmplitude(point, f, scanFrom.value_or(slab.slab.mu), search);
             out.runs += c.runs;
             it = cache.emplace(f, c.amplitude).first;
         }

@@ -39,9 +39,12 @@ struct DesignCheckResult {
 DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1DCase& slab,
                               const CriticalSearch& search = {});
 // The same with the slab runs supplied by the caller: the GUI passes one that returns at once
-// after a cancel, so a running check stops within one run.
+// after a cancel, so a running check stops within one run. scanFrom: where the A_crit scan
+// starts, below which nothing slips (default the slab's mu; the planar model passes
+// planarNoSlipAmplitude, and `point` runs that model).
 DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1DCase& slab,
-                              const CriticalSearch& search, const PointFunction& point);
+                              const CriticalSearch& search, const PointFunction& point,
+                              std::optional<double> scanFrom = std::nullopt);
 
 std::string validateCriticalSearch(const CriticalSearch& s); // empty when fine
 

@@ -1,0 +1,42 @@
+// MainWindow, continued: the planar model (SPEC §10 "model (1-DOF / planar)"). The sweep, the
+// A_crit(f) curve and the design check run planarPoint of the project's planar case; a picked
+// point shows its planar history (δx, δy). Everything else (surface, overlays, slice, verdict)
+// is model-blind.
+
+#include "ui/MainWindow.h"
+#include "ui/ModelPanel.h"
+#include "ui/PlanarHistoryChart.h"
+#include "ui/PlanarVertical.h"
+
+#include <QLabel>
+#include <QStackedWidget>
+#include <QTabWidget>
+
+namespace kinstab::ui {
+
+bool MainWindow::preparePlanar(SweepJob& job) {
+    job.planar.reset();
+    const bool planar = m_modelPanel->isPlanar();
+    m_centre->setTabText(0, planar ? tr("γc surface — planar") : tr("γc surface"));
+    if (!planar) return true;
+    try {
+        job.planar = projectPlanarCase(job.slabCase, m_modelPanel->settings());
+    } catch (const std::exception& e) {
+        m_status->setText(QString::fromStdString(e.what()));
+        return false;
+    }
+    return true;
+}
+
+QString MainWindow::modelTitle() const {
+    return m_sweepPlanar ? tr(" (planar)") : QString();
+}
+
+void MainWindow::pickPlanar(double amplitude, double frequency) {
+    m_picked.reset();
+    m_pickedPlanar = runPlanarPoint(*m_sweepPlanar, amplitude, frequency);
+    m_planarHistory->setRun(*m_pickedPlanar);
+    m_historyStack->setCurrentWidget(m_planarHistory);
+}
+
+} // namespace kinstab::ui

@@ -1,0 +1,180 @@
+#include "ui/ModelPanel.h"
+
+#include "ui/NumberField.h"
+#include "ui/PlanarVertical.h"
+#include "ui/RecordPreview.h"
+
+#include <QComboBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace kinstab::ui {
+
+namespace {
+const QString errorStyle = QStringLiteral("color: #c0392b;");
+} // namespace
+
+ModelPanel::ModelPanel(QWidget* parent)
+    : InputPanel(parent), m_model(new QComboBox(this)), m_normalization(new QComboBox(this)),
+      m_vertical(new QComboBox(this)), m_fileRow(new QWidget(this)),
+      m_path(new QLineEdit(m_fileRow)), m_browse(new QPushButton(tr("Browse…"), m_fileRow)),
+      m_pathError(new QLabel(m_fileRow)), m_note(new QLabel(this)) {
+    m_model->setObjectName(QStringLiteral("model"));
+    m_model->addItem(tr("1-DOF (across the walls)"));
+    m_model->addItem(tr("Planar (2-DOF, with vertical)"));
+    m_model->setToolTip(
+        tr("1-DOF: the slab slides across the walls only (Furgerson 1980 ch. IV).\n"
+           "Planar: it slides in both horizontal directions, friction along the relative "
+           "velocity, normal force 1 + a_z (ch. VI); slower, 10–50 ms per point."));
+    form()->addRow(tr("&Model:"), m_model);
+    buildPlanarRows();
+    connect(m_model, &QComboBox::currentIndexChanged, this, [this] {
+        updateMode();
+        emit changed();
+    });
+    connect(m_vertical, &QComboBox::currentIndexChanged, this, [this] {
+        updateMode();
+        emit changed();
+    });
+    connect(m_normalization, &QComboBox::currentIndexChanged, this, &InputPanel::changed);
+    connect(m_path, &QLineEdit::editingFinished, this, &ModelPanel::checkVerticalFile);
+    connect(m_browse, &QPushButton::clicked, this, &ModelPanel::browse);
+    load("slab1d", PlanarSettings{});
+}
+
+void ModelPanel::buildPlanarRows() {
+    m_fy = addField("fy", tr("f_&y:"), tr("Hz"),
+                    tr("Frequency of the motion along the walls. The paper's Figs. 37–42 use "
+                       "0.2, 0.5, 1, 2, 5 and 10 Hz; the critical amplitude rises with f_y."));
+    m_fy->setCheck(rangeCheck(0, 1000, false));
+    m_ratio = addField("ayRatio", tr("A_y / A_x:"), QString(),
+                       tr("Amplitude along the walls over the amplitude across them. The paper "
+                          "takes 0.9, Pacoima Dam's ratio of horizontal peaks."));
+    m_ratio->setCheck(rangeCheck(0, 100));
+    m_theta = addField("theta", tr("Θ (along):"), QString(),
+                       tr("Along-wall limit: the slab falls when its slip along the walls exceeds "
+                          "Θ = 2 wall length / wall width (half-widths). Default 20."));
+    m_theta->setCheck(rangeCheck(0, 1e6, false));
+    m_normalization->addItem(tr("max of envelope × sine (product)"));
+    m_normalization->addItem(tr("max of envelope (as printed, ch. VI)"));
+    m_normalization->setToolTip(
+        tr("How each horizontal component's S_max is taken. Product: each peaks at its "
+           "amplitude (ch. IV). Envelope: as printed in ch. VI, somewhat below it."));
+    form()->addRow(tr("S_max:"), m_normalization);
+    m_vertical->addItem(tr("None (gravity only)"));
+    m_vertical->addItem(tr("RSN68 UP (stands in for Pacoima Dam vertical)"));
+    m_vertical->addItem(tr("Record file…"));
+    m_vertical->setToolTip(RecordPreview::defaultVerticalNote());
+    form()->addRow(tr("&Vertical:"), m_vertical);
+    auto* column = new QVBoxLayout(m_fileRow);
+    column->setContentsMargins(0, 0, 0, 0);
+    auto* row = new QHBoxLayout;
+    m_path->setObjectName(QStringLiteral("verticalPath"));
+    m_path->setPlaceholderText(tr("AT2, COSMOS, CSMIP V2 or text record"));
+    row->addWidget(m_path, 1);
+    row->addWidget(m_browse);
+    column->addLayout(row);
+    m_pathError->setStyleSheet(errorStyle);
+    m_pathError->setWordWrap(true);
+    column->addWidget(m_pathError);
+    form()->addRow(tr("Record:"), m_fileRow);
+    m_note->setWordWrap(true);
+    m_note->setText(RecordPreview::defaultVerticalNote());
+    form()->addRow(QString(), m_note);
+}
+
+void ModelPanel::updateMode() {
+    const bool planar = isPlanar();
+    for (NumberField* f : {m_fy, m_ratio, m_theta}) {
+        f->setEnabled(planar); // disabled fields do not gate Run (InputPanel)
+        form()->setRowVisible(f, planar);
+    }
+    form()->setRowVisible(m_normalization, planar);
+    form()->setRowVisible(m_vertical, planar);
+    const auto v = static_cast<VerticalSource>(m_vertical->currentIndex());
+    form()->setRowVisible(m_fileRow, planar && v == VerticalSource::File);
+    form()->setRowVisible(m_note, planar && v == VerticalSource::Rsn68Up);
+    checkVerticalFile();
+}
+
+// Reads the record once when its path is set, so a broken file is marked before Run.
+void ModelPanel::checkVerticalFile() {
+    QString error;
+    const auto v = static_cast<VerticalSource>(m_vertical->currentIndex());
+    if (isPlanar() && v == VerticalSource::File) {
+        PlanarSettings s;
+        s.vertical = v;
+        s.verticalPath = m_path->text().trimmed().toStdString();
+        if (s.verticalPath.empty()) {
+            error = tr("name the vertical record file");
+        } else {
+            try {
+                readVerticalRecord(s);
+            } catch (const std::exception& e) {
+                error = QString::fromStdString(e.what());
+            }
+        }
+    }
+    m_pathError->setText(error);
+    m_pathError->setVisible(!error.isEmpty());
+    if (error == m_verticalError) return;
+    m_verticalError = error;
+    emit changed();
+}
+
+void ModelPanel::browse() {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Vertical record"), m_path->text(),
+                                                      tr("Records (*.AT2 *.V1 *.V2 *.txt "
+                                                         "*.acc *.dat);;All files (*)"));
+    if (path.isEmpty()) return;
+    m_path->setText(path);
+    checkVerticalFile();
+}
+
+QStringList ModelPanel::extraProblems() const {
+    if (m_verticalError.isEmpty()) return {};
+    return {tr("Vertical record: %1").arg(m_verticalError)};
+}
+
+bool ModelPanel::isPlanar() const {
+    return m_model->currentIndex() == 1;
+}
+
+std::string ModelPanel::model() const {
+    return isPlanar() ? "planar" : "slab1d";
+}
+
+PlanarSettings ModelPanel::settings() const {
+    PlanarSettings s = m_loaded;
+    s.fyHz = m_fy->value().value_or(s.fyHz);
+    s.ayRatio = m_ratio->value().value_or(s.ayRatio);
+    s.theta = m_theta->value().value_or(s.theta);
+    s.normalization = m_normalization->currentIndex() == 0 ? PlanarNormalization::Product
+                                                           : PlanarNormalization::Envelope;
+    s.vertical = static_cast<VerticalSource>(m_vertical->currentIndex());
+    s.verticalPath = m_path->text().trimmed().toStdString();
+    return s;
+}
+
+void ModelPanel::load(const std::string& model, const PlanarSettings& s) {
+    m_loaded = s;
+    {
+        const QSignalBlocker block(this); // one changed() at the end
+        m_model->setCurrentIndex(model == "planar" ? 1 : 0);
+        m_fy->setValue(s.fyHz);
+        m_ratio->setValue(s.ayRatio);
+        m_theta->setValue(s.theta);
+        m_normalization->setCurrentIndex(s.normalization == PlanarNormalization::Product ? 0 : 1);
+        m_vertical->setCurrentIndex(static_cast<int>(s.vertical));
+        m_path->setText(QString::fromStdString(s.verticalPath));
+        updateMode();
+    }
+    emit changed();
+}
+
+} // namespace kinstab::ui

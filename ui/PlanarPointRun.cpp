@@ -1,0 +1,18 @@
+#include "ui/PlanarPointRun.h"
+
+namespace kinstab::ui {
+
+PlanarPointRun runPlanarPoint(const PlanarCase& c, double amplitude, double frequencyHz) {
+    PlanarCase withPath = c;
+    withPath.solver.recordPath = true;
+    PlanarPointRun p;
+    p.amplitude = amplitude;
+    p.frequency = frequencyHz;
+    p.limit = c.slab.limit;
+    p.theta = c.slab.theta;
+    p.tauRef = c.tauRef();
+    p.result = runPlanar(withPath, amplitude, frequencyHz);
+    return p;
+}
+
+} // namespace kinstab::ui

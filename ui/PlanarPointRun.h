@@ -1,0 +1,17 @@
+#pragma once
+// One picked point of a planar surface, run again with its path recorded (a sweep keeps only
+// tau_c, the outcome and the exit side): the relative displacements δx (across) and δy (along
+// the walls) against τ.
+
+#include "core/slab/PlanarCase.h"
+
+namespace kinstab::ui {
+
+struct PlanarPointRun {
+    double amplitude = 0, frequency = 0, limit = 1, theta = 20, tauRef = 1;
+    PlanarResult result; // with result.path: every accepted step and event
+};
+
+PlanarPointRun runPlanarPoint(const PlanarCase& c, double amplitude, double frequencyHz);
+
+} // namespace kinstab::ui
