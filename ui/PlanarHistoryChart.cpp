@@ -22,7 +22,7 @@ QString outcomeText(const PlanarPointRun& run) {
     const PlanarResult& r = run.result;
     if (r.slab.outcome != Outcome::Collapsed)
         return QString::fromStdString(outcomeName(r.slab.outcome));
-    return QObject::tr("collapses %1 the walls at τc = %2 (γc = %3)")
+    return QObject::tr("falls %1, τc = %2, γc = %3")
         .arg(QString::fromStdString(exitSideName(r.exitSide)))
         .arg(r.slab.tauC, 0, 'f', 2)
         .arg(run.tauRef / r.slab.tauC, 0, 'f', 3);
@@ -41,8 +41,8 @@ PlanarHistoryChart::PlanarHistoryChart(QWidget* parent)
     for (QLineSeries* s : {m_limitUp, m_limitDown, m_dy, m_dx})
         c->addSeries(s);
     m_x->setTitleText(tr("τ = t / t*"));
-    m_yx->setTitleText(tr("δx / (d/2)"));
-    m_yy->setTitleText(tr("δy / (d/2)"));
+    m_yx->setTitleText(tr("δx"));
+    m_yy->setTitleText(tr("δy"));
     m_yy->setLabelsColor(QColor(40, 120, 200));
     c->addAxis(m_x, Qt::AlignBottom);
     c->addAxis(m_yx, Qt::AlignLeft);
@@ -68,6 +68,11 @@ int PlanarHistoryChart::sampleCount() const {
 
 void PlanarHistoryChart::setRun(const PlanarPointRun& run) {
     QList<QPointF> dx, dy;
+    // The path starts at the first slip: the slab sits still on its walls before it.
+    if (!run.result.path.empty() && run.result.path.front().tau > 0) {
+        dx.append({0, 0});
+        dy.append({0, 0});
+    }
     double xMax = run.limit, yMax = 0.1;
     for (const PlanarSample& s : run.result.path) {
         dx.append({s.tau, s.dx});
@@ -83,7 +88,7 @@ void PlanarHistoryChart::setRun(const PlanarPointRun& run) {
     m_x->setRange(0, tauEnd);
     m_yx->setRange(-1.15 * xMax, 1.15 * xMax);
     m_yy->setRange(-1.15 * yMax, 1.15 * yMax);
-    chart()->setTitle(tr("Planar, A_x = %1 g, f_x = %2 Hz: %3")
+    chart()->setTitle(tr("Planar, A = %1 g, f = %2 Hz: %3")
                           .arg(run.amplitude, 0, 'f', 3)
                           .arg(run.frequency, 0, 'f', 3)
                           .arg(outcomeText(run)));

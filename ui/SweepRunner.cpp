@@ -1,6 +1,7 @@
 #include "ui/SweepRunner.h"
 
 #include "core/sweep/CriticalAmplitude.h"
+#include "core/sweep/ModelPoint.h"
 
 #include <QPromise>
 #include <QtConcurrent>
@@ -56,9 +57,9 @@ template <class F> void parallelFor(std::size_t n, int threads, const SweepContr
 }
 
 SweepOutput runJob(const SweepJob& job, SweepRunner::Live& live) {
-    const PointFunction base = job.planar ? planarPoint(*job.planar) : slab1DPoint(job.slabCase);
-    // Below this amplitude nothing slips: where the A_crit scans start.
-    const double scanFrom = job.planar ? planarNoSlipAmplitude(*job.planar) : job.slabCase.slab.mu;
+    const ModelPoint model = modelPoint(job.slabCase, job.planar); // 1-DOF or planar
+    const PointFunction base = model.point;
+    const double scanFrom = model.scanFrom;
     // A cancelled search returns at once: criticalAmplitude then ends within one point.
     const PointFunction point = [&live, base](double a, double f) {
         if (live.control.isCancelled()) return PointResult{Outcome::Failed, 0};
@@ -79,7 +80,7 @@ SweepOutput runJob(const SweepJob& job, SweepRunner::Live& live) {
     live.control.onProgress = [&live](std::size_t, std::size_t) { ++live.completed; };
 
     SweepOutput out;
-    out.tauRef = job.planar ? job.planar->tauRef() : job.slabCase.tauRef();
+    out.tauRef = model.tauRef;
     out.sweep = runSweep(job.grid, recording, &live.control, job.threads);
     if (job.criticalCurve && !live.control.isCancelled()) {
         out.aCrit.assign(nf, std::nullopt);

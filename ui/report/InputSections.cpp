@@ -128,6 +128,7 @@ void addInputSections(ReportDocument& doc, const Project& p) {
                        num(p.critical.scanStep, 4) + ", " + num(p.critical.tolerance, 6), "g"});
     sl.rows.push_back({"A_crit search: limit", "", num(p.critical.to, 2), "g"});
     doc.addTable(sl);
+    addPlanarInputs(doc, p);
 }
 
 void addCodeSections(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {

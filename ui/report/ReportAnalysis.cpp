@@ -2,6 +2,8 @@
 
 #include "core/codes/CodeSet.h"
 #include "core/sweep/CriticalAmplitude.h"
+#include "core/sweep/ModelPoint.h"
+#include "ui/PlanarVertical.h"
 
 #include <QtConcurrent/QtConcurrentMap>
 
@@ -26,11 +28,11 @@ std::vector<double> linspace(double lo, double hi, int n) {
     return v;
 }
 
-SurfaceData figureSweep(const Slab1DCase& c, const SweepGrid& g, SweepControl* control,
+SurfaceData figureSweep(const ModelPoint& m, const SweepGrid& g, SweepControl* control,
                         long& runs) {
-    const SweepResult r = runSweep(g, slab1DPoint(c), control);
+    const SweepResult r = runSweep(g, m.point, control);
     runs += static_cast<long>(r.completed);
-    return surfaceFromSweep(r, c.tauRef());
+    return surfaceFromSweep(r, m.tauRef);
 }
 
 // The map reaches down to the smallest code ratio (so the code lines and design points lie on
@@ -46,12 +48,11 @@ SweepGrid mapGrid(const Project& p, const std::vector<CodeResult>& codes, std::o
     return {linspace(aLo, aHi, n), linspace(fLo, fHi, n)};
 }
 
-std::vector<std::optional<double>> criticalCurve(const Slab1DCase& c, const CriticalSearch& s,
+std::vector<std::optional<double>> criticalCurve(const ModelPoint& m, const CriticalSearch& s,
                                                  const std::vector<double>& freqs, long& runs) {
-    const PointFunction point = slab1DPoint(c);
     const std::vector<CriticalResult> found =
         QtConcurrent::blockingMapped<std::vector<CriticalResult>>(
-            freqs, [&](double f) { return criticalAmplitude(point, f, c.slab.mu, s); });
+            freqs, [&](double f) { return criticalAmplitude(m.point, f, m.scanFrom, s); });
     std::vector<std::optional<double>> out;
     for (const CriticalResult& r : found) {
         runs += r.runs;
@@ -105,25 +106,30 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
     const auto t0 = std::chrono::steady_clock::now();
     ReportAnalysis a;
     const Slab1DCase& c = project.slab;
+    const bool planar = project.model == "planar";
+    // Every sweep, A_crit search and the check below run the project's model (SPEC §10).
+    const ModelPoint model =
+        modelPoint(c, planar ? std::optional(projectPlanarCase(c, project.planar)) : std::nullopt);
     a.codes = runCodes(project.building, project.codes);
     auto t = std::chrono::steady_clock::now();
-    a.check = designCheck(a.codes, c, project.critical);
+    a.check = designCheck(a.codes, c, project.critical, model.point, model.scanFrom);
     a.checkSeconds = secondsSince(t);
-    a.projectSweep = runSweep(project.grid, slab1DPoint(c), control);
+    a.projectSweep = runSweep(project.grid, model.point, control);
 
     const std::optional<double> fd = designFrequency(project, a.check);
-    const int n = options.figureGrid;
+    const int n =
+        planar ? std::min(options.figureGrid, options.planarFigureGrid) : options.figureGrid;
     t = std::chrono::steady_clock::now();
     const SweepGrid net{
         linspace(project.grid.amplitudes.front(), project.grid.amplitudes.back(), n),
         linspace(project.grid.frequencies.front(), project.grid.frequencies.back(), n)};
-    a.netSurface = figureSweep(c, net, control, a.figureRuns);
-    a.mapSurface = figureSweep(c, mapGrid(project, a.codes, fd, n), control, a.figureRuns);
+    a.netSurface = figureSweep(model, net, control, a.figureRuns);
+    a.mapSurface = figureSweep(model, mapGrid(project, a.codes, fd, n), control, a.figureRuns);
     a.figureSweepSeconds = secondsSince(t);
 
     a.overlay.critFrequencies = a.mapSurface.frequencies;
     a.overlay.critAmplitude =
-        criticalCurve(c, project.critical, a.overlay.critFrequencies, a.critRuns);
+        criticalCurve(model, project.critical, a.overlay.critFrequencies, a.critRuns);
     a.overlay.designFrequency = fd;
     for (const CodeVerdict& v : a.check.codes)
         a.overlay.codes.push_back({shortCodeName(v.code), v.ratio, v.frequencyHz});
@@ -138,13 +144,14 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
         // From one step above 0: an amplitude of 0 is no excitation at all.
         const int steps = static_cast<int>(std::ceil(hi / options.sliceStep));
         const SweepGrid g{linspace(hi / steps, hi, steps), {*fd}};
-        const SweepResult r = runSweep(g, slab1DPoint(c), control);
+        const SweepResult r = runSweep(g, model.point, control);
         a.figureRuns += static_cast<long>(r.completed);
-        const SurfaceData s = surfaceFromSweep(r, c.tauRef());
+        const SurfaceData s = surfaceFromSweep(r, model.tauRef);
         a.slice.amplitudes = s.amplitudes;
         a.slice.gamma = s.gamma;
     }
-    if (options.crossCheck && c.solver == SolverKind::Exact)
+    // The paper's RK4 solver is of the 1-DOF model only.
+    if (options.crossCheck && c.solver == SolverKind::Exact && !planar)
         a.crossCheck = crossCheck(project, a.projectSweep, options.crossCheckSteps);
     a.totalSeconds = secondsSince(t0);
     return a;

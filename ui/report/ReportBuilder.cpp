@@ -24,9 +24,7 @@ TitleBlock titleBlock(const ReportSource& s, const ReportAnalysis& a) {
     t.fields.push_back({QStringLiteral("Date"),
                         s.created.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm 'UTC'"))});
     t.fields.push_back({QStringLiteral("Application"), QStringLiteral("kinstab " KINSTAB_VERSION)});
-    t.fields.push_back(
-        {QStringLiteral("Model"),
-         QStringLiteral("1-DOF friction-held slab on walls (Furgerson 1980, ch. IV–V)")});
+    t.fields.push_back({QStringLiteral("Model"), modelName(s.project)});
     QStringList codes;
     for (const CodeResult& r : a.codes)
         codes << shortCodeName(r.code);

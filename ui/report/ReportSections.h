@@ -20,6 +20,9 @@ inline QString qs(const std::string& s) {
 QString gammaLabel(const Slab1DCase& c); // "γc = τmax/τc"
 
 void addInputSections(ReportDocument& doc, const Project& p);
+// "1-DOF friction-held slab ..." or "planar 2-DOF slab ..." (PlanarSection.cpp).
+QString modelName(const Project& p);
+void addPlanarInputs(ReportDocument& doc, const Project& p); // planar projects only
 void addCodeSections(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 void addExcitationSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 void addSurfaceSections(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
