@@ -60,17 +60,22 @@ void ModelPanel::buildPlanarRows() {
                        tr("Along-wall limit: the slab falls when its slip along the walls exceeds "
                           "Θ = 2 wall length / wall width (half-widths). Default 20."));
     m_theta->setCheck(rangeCheck(0, 1e6, false));
-    m_normalization->addItem(tr("max of envelope × sine (product)"));
-    m_normalization->addItem(tr("max of envelope (as printed, ch. VI)"));
+    m_normalization->addItem(tr("product (e × sine)"));
+    m_normalization->addItem(tr("envelope (ch. VI)"));
     m_normalization->setToolTip(
         tr("How each horizontal component's S_max is taken. Product: each peaks at its "
            "amplitude (ch. IV). Envelope: as printed in ch. VI, somewhat below it."));
     form()->addRow(tr("S_max:"), m_normalization);
     m_vertical->addItem(tr("None (gravity only)"));
-    m_vertical->addItem(tr("RSN68 UP (stands in for Pacoima Dam vertical)"));
+    m_vertical->addItem(tr("RSN68 UP (for Pacoima Dam)"));
     m_vertical->addItem(tr("Record file…"));
     m_vertical->setToolTip(RecordPreview::defaultVerticalNote());
     form()->addRow(tr("&Vertical:"), m_vertical);
+    // The dock is narrow: combos may elide rather than widen the panel.
+    for (QComboBox* c : {m_model, m_normalization, m_vertical}) {
+        c->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        c->setMinimumContentsLength(12);
+    }
     auto* column = new QVBoxLayout(m_fileRow);
     column->setContentsMargins(0, 0, 0, 0);
     auto* row = new QHBoxLayout;
