@@ -3,9 +3,11 @@
 #include "core/io/AtomicFile.h"
 #include "core/io/CodesJson.h"
 #include "core/io/JsonReader.h"
+#include "core/io/MotionJson.h"
 #include "core/io/PlanarJson.h"
 
 #include <cmath>
+#include <filesystem>
 
 namespace kinstab {
 
@@ -45,6 +47,7 @@ std::string validateProject(const Project& p) {
         e = "grid: " + e;
     if (e.empty()) e = validateCriticalSearch(p.critical);
     if (e.empty()) e = validatePlanarSettings(p.planar);
+    if (e.empty() && p.record) e = validateRecordExcitation(*p.record);
     return e;
 }
 
@@ -142,7 +145,7 @@ void checkHeader(const JsonReader& r) {
 
 } // namespace
 
-json projectToJson(const Project& p) {
+json projectToJson(const Project& p, const std::string& baseDir) {
     return {{"format", kProjectFormat},
             {"version", kProjectVersion},
             {"name", p.name},
@@ -153,10 +156,11 @@ json projectToJson(const Project& p) {
             {"grid", {{"amplitudes", p.grid.amplitudes}, {"frequencies", p.grid.frequencies}}},
             {"model", p.model},
             {"planar", planarSettingsToJson(p.planar)},
-            {"check", checkToJson(p.critical)}};
+            {"check", checkToJson(p.critical)},
+            {"excitation", excitationToJson(p.record, baseDir)}};
 }
 
-Project projectFromJson(const json& j) {
+Project projectFromJson(const json& j, const std::string& baseDir) {
     try {
         const JsonReader r(j, "");
         checkHeader(r);
@@ -174,7 +178,9 @@ Project projectFromJson(const json& j) {
         // Projects written before the planar model have no "planar" key: defaults.
         if (auto pl = r.optionalObject("planar")) p.planar = planarSettingsFromJson(*pl);
         if (auto c = r.optionalObject("check")) p.critical = checkFrom(*c);
+        p.record = excitationFromJson(r, baseDir);
         if (const std::string e = validateProject(p); !e.empty()) throw ProjectError(e);
+        if (p.record) checkRecordFile(*p.record);
         return p;
     } catch (const JsonFieldError& e) {
         throw ProjectError(e.what());
@@ -185,7 +191,7 @@ Project projectFromJson(const json& j) {
     }
 }
 
-Project parseProject(const std::string& text) {
+Project parseProject(const std::string& text, const std::string& baseDir) {
     json j;
     try {
         j = json::parse(text);
@@ -194,12 +200,18 @@ Project parseProject(const std::string& text) {
         throw ProjectError("not valid JSON (truncated or corrupt?) at byte " +
                            std::to_string(e.byte) + ": " + e.what());
     }
-    return projectFromJson(j);
+    return projectFromJson(j, baseDir);
 }
+
+namespace {
+std::string directoryOf(const std::string& path) {
+    return std::filesystem::absolute(std::filesystem::path(path)).parent_path().string();
+}
+} // namespace
 
 Project loadProject(const std::string& path) {
     try {
-        return parseProject(readWholeFile(path));
+        return parseProject(readWholeFile(path), directoryOf(path));
     } catch (const FileError& e) {
         throw ProjectError(e.what());
     } catch (const ProjectError& e) {
@@ -210,7 +222,7 @@ Project loadProject(const std::string& path) {
 void saveProject(const Project& p, const std::string& path) {
     if (const std::string e = validateProject(p); !e.empty()) throw ProjectError("not saved: " + e);
     try {
-        writeFileAtomically(path, projectToJson(p).dump(2) + "\n");
+        writeFileAtomically(path, projectToJson(p, directoryOf(path)).dump(2) + "\n");
     } catch (const FileError& e) {
         throw ProjectError(e.what());
     }

@@ -7,6 +7,7 @@
 
 #include "core/codes/Building.h"
 #include "core/codes/CodeSet.h"
+#include "core/excitation/RecordExcitation.h"
 #include "core/slab/PlanarSettings.h"
 #include "core/slab/Slab1DCase.h"
 #include "core/sweep/CriticalAmplitude.h"
@@ -32,12 +33,13 @@ struct Project {
     std::string description;
     Building building;
     CodeSelection codes;
-    Slab1DCase slab;                   // envelope, t*, mu, limit, solver, scale
-    std::optional<double> wallWidthIn; // set when t* comes from the wall width d (inches)
-    SweepGrid grid;                    // A (g) and f (Hz) of the γc surface
-    std::string model = "slab1d";      // "slab1d" | "planar"
-    PlanarSettings planar;             // the planar model's own inputs (core/io/PlanarJson.h)
-    CriticalSearch critical;           // A_crit search of the design check
+    Slab1DCase slab;                        // envelope, t*, mu, limit, solver, scale
+    std::optional<double> wallWidthIn;      // set when t* comes from the wall width d (inches)
+    SweepGrid grid;                         // A (g) and f (Hz) of the γc surface
+    std::string model = "slab1d";           // "slab1d" | "planar"
+    PlanarSettings planar;                  // the planar model's own inputs (core/io/PlanarJson.h)
+    CriticalSearch critical;                // A_crit search of the design check
+    std::optional<RecordExcitation> record; // a record drives the slab; none: the enveloped sine
 };
 
 // The paper's 16-story building (chapter V) with the paper's slab, envelope and grid.
@@ -45,9 +47,14 @@ Project paperExampleProject();
 
 std::string validateProject(const Project& p); // empty when fine
 
-nlohmann::json projectToJson(const Project& p);
-Project projectFromJson(const nlohmann::json& j); // throws ProjectError naming the field
-Project parseProject(const std::string& text);    // throws ProjectError (also on bad JSON)
+// baseDir: the project file's directory; a record's file is stored relative to it and resolved
+// against it on load ("" keeps paths as they are). A record file that cannot be read is a
+// ProjectError naming excitation.record.file and the path.
+nlohmann::json projectToJson(const Project& p, const std::string& baseDir = "");
+// Throws ProjectError naming the field.
+Project projectFromJson(const nlohmann::json& j, const std::string& baseDir = "");
+// Throws ProjectError (also on bad JSON).
+Project parseProject(const std::string& text, const std::string& baseDir = "");
 
 Project loadProject(const std::string& path);                // throws ProjectError
 void saveProject(const Project& p, const std::string& path); // atomic; throws ProjectError

@@ -1,0 +1,49 @@
+#include "core/excitation/RecordExcitation.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace kinstab {
+
+namespace {
+std::string fieldError(const std::string& field, double value, const std::string& rule) {
+    std::ostringstream s;
+    s << "excitation.record." << field << " = " << value << ": " << rule;
+    return s.str();
+}
+} // namespace
+
+std::string validateRecordExcitation(const RecordExcitation& e) {
+    if (e.file.empty()) return "excitation.record.file: missing (the accelerogram file)";
+    if (e.read.dt && !(*e.read.dt > 0.0 && *e.read.dt <= 10.0))
+        return fieldError("dt", *e.read.dt, "must be > 0 and at most 10 s");
+    if (e.read.format == RecordFormat::Values && !e.read.dt)
+        return "excitation.record.dt: missing (format 'values' has no time column)";
+    if (e.targetPeak && !(*e.targetPeak > 0.0 && *e.targetPeak <= 1000.0))
+        return fieldError("target_peak_g", *e.targetPeak, "must be > 0 and at most 1000 g");
+    if (!(e.scaleFactor > 0.0 && e.scaleFactor <= 1e6))
+        return fieldError("scale_factor", e.scaleFactor, "must be > 0 and at most 1e6");
+    if (e.floor) {
+        const std::string f = validateFloorFilter(*e.floor);
+        if (!f.empty()) {
+            const bool period = f.rfind("floor period", 0) == 0;
+            return fieldError(period ? "floor_filter.period_s" : "floor_filter.damping",
+                              period ? e.floor->period : e.floor->damping, f);
+        }
+    }
+    return {};
+}
+
+Accelerogram readGroundRecord(const RecordExcitation& e) {
+    return readRecord(e.file, e.read);
+}
+
+Accelerogram drivingMotion(const RecordExcitation& e, const Accelerogram& ground) {
+    return e.floor ? floorMotion(ground, *e.floor) : ground;
+}
+
+double scaledPeak(const RecordExcitation& e, const Accelerogram& motion) {
+    return e.targetPeak ? *e.targetPeak : e.scaleFactor * std::abs(motion.peak().value);
+}
+
+} // namespace kinstab
