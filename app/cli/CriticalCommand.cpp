@@ -2,6 +2,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/PlanarFlags.h"
+#include "app/cli/SearchFlags.h"
 #include "core/io/ResultJson.h"
 #include "core/sweep/CriticalAmplitude.h"
 
@@ -11,24 +12,14 @@ namespace kinstab::cli {
 
 int runCritical(const ArgList& argv) {
     std::set<std::string> flags = modelFlagNames();
-    flags.insert({"frequencies", "max-amplitude", "scan-step", "tolerance"});
+    flags.insert("frequencies");
+    const std::set<std::string> searchFlags = searchFlagNames();
+    flags.insert(searchFlags.begin(), searchFlags.end());
     const Args args(argv, flags);
     const std::vector<double> freqs = args.list("frequencies");
     const std::string e = validateGrid(SweepGrid{{1.0}, freqs});
     if (!e.empty()) throw UsageError("--" + e);
-    CriticalSearch search;
-    search.to = args.number("max-amplitude", 5.0);
-    search.scanStep = args.number("scan-step", 0.01);
-    search.tolerance = args.number("tolerance", 1e-6);
-    if (search.to <= 0.0 || search.to > 1000.0)
-        throw UsageError("--max-amplitude " + args.text("max-amplitude") +
-                         ": must be > 0 and at most 1000");
-    if (search.scanStep <= 0.0 || search.scanStep > search.to)
-        throw UsageError("--scan-step " + args.text("scan-step") +
-                         ": must be > 0 and below --max-amplitude");
-    if (search.tolerance <= 0.0 || search.tolerance > search.scanStep)
-        throw UsageError("--tolerance " + args.text("tolerance") +
-                         ": must be > 0 and at most --scan-step");
+    const CriticalSearch search = criticalSearchFromFlags(args);
 
     if (isPlanar(args)) return runCriticalPlanar(args, freqs, search);
     const Slab1DCase c = slab1DCaseFromFlags(args);

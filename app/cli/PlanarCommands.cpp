@@ -13,7 +13,6 @@
 
 namespace kinstab::cli {
 
-namespace {
 nlohmann::json planarEventsJson(const std::vector<PlanarEvent>& events) {
     nlohmann::json a = nlohmann::json::array();
     for (const auto& e : events)
@@ -38,7 +37,15 @@ std::string planarHistoryCsv(const SlabModel2D& m, const PlanarResult& r) {
     }
     return s.str();
 }
-} // namespace
+
+void addPlanarResultKeys(nlohmann::json& j, const PlanarResult& r) {
+    j["exit_side"] = r.slab.outcome == Outcome::Collapsed ? nlohmann::json(exitSideName(r.exitSide))
+                                                          : nlohmann::json();
+    j["tau_lift_off"] = numberOrNull(r.tauLiftOff);
+    j["max_abs_delta_y"] = r.maxAbsDeltaY;
+    j["residual_delta_y"] = r.residualDeltaY;
+    j["work"]["rejected_steps"] = r.slab.work.restarts;
+}
 
 int runSimulatePlanar(const Args& args, double amplitude, double frequency, double historyStep) {
     PlanarCase c = planarCaseFromFlags(args);
@@ -58,12 +65,7 @@ int runSimulatePlanar(const Args& args, double amplitude, double frequency, doub
     j["amplitude"] = amplitude;
     j["frequency"] = frequency;
     j["tau_ref"] = c.tauRef();
-    j["exit_side"] = r.slab.outcome == Outcome::Collapsed ? nlohmann::json(exitSideName(r.exitSide))
-                                                          : nlohmann::json();
-    j["tau_lift_off"] = numberOrNull(r.tauLiftOff);
-    j["max_abs_delta_y"] = r.maxAbsDeltaY;
-    j["residual_delta_y"] = r.residualDeltaY;
-    j["work"]["rejected_steps"] = r.slab.work.restarts;
+    addPlanarResultKeys(j, r);
     j["wall_time_s"] = wall;
     if (args.has("events")) j["events"] = planarEventsJson(r.events);
     if (args.has("history")) writeOutput(args.text("history"), planarHistoryCsv(model, r));

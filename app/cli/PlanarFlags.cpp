@@ -25,11 +25,11 @@ std::shared_ptr<const Excitation1D> verticalFromFile(const std::string& path, do
 }
 } // namespace
 
-PlanarCase planarCaseFromFlags(const Args& args) {
+PlanarCase planarCaseFromFlags(const Args& args, bool recordDriven) {
     if (args.text("solver", "exact") == "paper" || args.has("paper-steps"))
         throw UsageError("--solver paper: the paper's RK4 solver is for --model slab1d only");
     for (const char* f : {"record", "floor-period", "damping"})
-        if (args.has(f))
+        if (args.has(f) && !recordDriven)
             throw UsageError(std::string("--") + f + ": not available with --model planar");
     const Slab1DCase common = commonCaseFromFlags(args);
     PlanarCase c;
@@ -43,10 +43,10 @@ PlanarCase planarCaseFromFlags(const Args& args) {
     if (c.ayRatio < 0.0 || c.ayRatio > 100.0)
         throw UsageError("--ay-ratio " + args.text("ay-ratio") +
                          ": A_y / A_x must be between 0 and 100");
-    if (!args.has("fy"))
+    if (!args.has("fy") && !recordDriven)
         throw UsageError("--fy is required with --model planar (frequency along the walls, Hz; "
                          "the paper uses 0.2, 0.5, 1, 2, 5, 10)");
-    c.fyHz = args.requiredNumber("fy");
+    c.fyHz = args.number("fy", c.fyHz);
     if (c.fyHz <= 0.0 || c.fyHz > 1000.0)
         throw UsageError("--fy " + args.text("fy") + ": must be > 0 and at most 1000 Hz");
     c.slab.theta = args.number("theta", 20.0);

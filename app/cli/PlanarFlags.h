@@ -12,7 +12,9 @@ namespace kinstab::cli {
 
 bool isPlanar(const Args& args); // --model planar
 // Reads and validates the planar case; throws UsageError naming the bad flag.
-PlanarCase planarCaseFromFlags(const Args& args);
+// recordDriven: the horizontal motion comes from --record (PlanarRecord.cpp), so --fy is not
+// required and --record/--floor-period/--damping are the caller's.
+PlanarCase planarCaseFromFlags(const Args& args, bool recordDriven = false);
 // The planar keys of the JSON outputs (model, envelope, mu, tstar, limit, ay_ratio, fy, theta,
 // normalization, vertical, solver, tolerances).
 nlohmann::json planarCaseJson(const PlanarCase& c);
@@ -30,6 +32,14 @@ namespace kinstab::cli {
 int runSimulatePlanar(const Args& args, double amplitude, double frequency, double historyStep);
 int runSurfacePlanar(const Args& args, const SweepGrid& grid, int threads,
                      const std::string& format);
+// Shared by the sine- and record-driven planar simulate: the event list, the path CSV and the
+// planar keys of the result (exit_side, tau_lift_off, max_abs_delta_y, residual_delta_y).
+nlohmann::json planarEventsJson(const std::vector<PlanarEvent>& events);
+std::string planarHistoryCsv(const SlabModel2D& m, const PlanarResult& r);
+void addPlanarResultKeys(nlohmann::json& j, const PlanarResult& r);
+
+// simulate --model planar --record FILE [--record-y FILE] (PlanarRecord.cpp).
+int runSimulatePlanarRecord(const Args& args);
 int runCriticalPlanar(const Args& args, const std::vector<double>& frequencies,
                       const CriticalSearch& search);
 

@@ -55,6 +55,28 @@ std::optional<FloorFilterParams> floorFilterFromFlags(const Args& args) {
     return p;
 }
 
+RecordExcitation recordExcitationFromFlags(const Args& args, const std::string& fileFlag) {
+    RecordExcitation e;
+    e.file = args.text(fileFlag);
+    if (e.file.empty()) throw UsageError("--" + fileFlag + ": needs a file name");
+    e.read = recordReadOptionsFromFlags(args);
+    e.floor = floorFilterFromFlags(args);
+    if (args.has("amplitude") && args.has("scale-factor"))
+        throw UsageError("--scale-factor " + args.text("scale-factor") +
+                         ": --amplitude and --scale-factor exclude each other");
+    if (args.has("amplitude")) {
+        e.targetPeak = args.requiredNumber("amplitude");
+        if (!(*e.targetPeak > 0.0) || *e.targetPeak > 1000.0)
+            throw UsageError("--amplitude " + args.text("amplitude") +
+                             ": target peak must be > 0 and at most 1000 g");
+    }
+    e.scaleFactor = args.number("scale-factor", 1.0);
+    if (!(e.scaleFactor > 0.0) || e.scaleFactor > 1e6)
+        throw UsageError("--scale-factor " + args.text("scale-factor") +
+                         ": must be > 0 and at most 1e6");
+    return e;
+}
+
 nlohmann::json accelerogramJson(const Accelerogram& a) {
     const SignedPeak p = a.peak();
     return {

@@ -7,6 +7,7 @@
 
 #include "app/cli/Args.h"
 #include "core/excitation/FloorFilter.h"
+#include "core/excitation/RecordExcitation.h"
 #include "core/io/RecordReader.h"
 
 #include <nlohmann/json.hpp>
@@ -22,6 +23,11 @@ RecordReadOptions recordReadOptionsFromFlags(const Args& args);
 Accelerogram readRecordFromFlag(const Args& args, const std::string& fileFlag);
 // --floor-period / --damping; none when --floor-period is absent (--damping alone is an error).
 std::optional<FloorFilterParams> floorFilterFromFlags(const Args& args);
+
+// The record excitation of simulate --record: the file, its read flags, --floor-period/--damping
+// and the scaling (--amplitude PEAK_G or --scale-factor F, exclusive; neither: as recorded).
+// Checks the flags only; the file is read later.
+RecordExcitation recordExcitationFromFlags(const Args& args, const std::string& fileFlag);
 
 nlohmann::json accelerogramJson(const Accelerogram& a); // summary: npts, dt, peak, units, names
 nlohmann::json floorFilterJson(const FloorFilterParams& p);

@@ -3,6 +3,7 @@
 #include "app/cli/ModelFlags.h"
 #include "app/cli/PlanarFlags.h"
 #include "app/cli/RecordFlags.h"
+#include "app/cli/SearchFlags.h"
 #include "core/excitation/EnvelopedSine.h"
 #include "core/io/ResultJson.h"
 #include "core/slab/History.h"
@@ -15,13 +16,17 @@ namespace kinstab::cli {
 
 int runSimulate(const ArgList& argv) {
     std::set<std::string> flags = modelFlagNames();
-    flags.insert({"amplitude", "frequency", "history", "history-step"});
-    const std::set<std::string> recordFlags = recordReadFlagNames();
+    flags.insert({"amplitude", "frequency", "history", "history-step", "scale-factor", "record-y"});
+    std::set<std::string> recordFlags = recordReadFlagNames();
+    recordFlags.merge(searchFlagNames()); // --critical's search, with --record only
     flags.insert(recordFlags.begin(), recordFlags.end());
-    const Args args(argv, flags, {"events"});
+    const Args args(argv, flags, {"events", "critical"});
     if (args.has("record") && !isPlanar(args)) return runSimulateRecord(args);
+    if (args.has("record")) return runSimulatePlanarRecord(args);
+    recordFlags.insert({"scale-factor", "record-y"});
     for (const std::string& f : recordFlags)
         if (args.has(f)) throw UsageError("--" + f + " " + args.text(f) + ": needs --record FILE");
+    if (args.has("critical")) throw UsageError("--critical: needs --record FILE");
     const double amplitude = args.requiredNumber("amplitude");
     const double frequency = args.requiredNumber("frequency");
     if (amplitude < 0.0 || amplitude > 1000.0)

@@ -25,8 +25,7 @@ std::string validateCriticalSearch(const CriticalSearch& s) {
     return {};
 }
 
-namespace {
-CodeVerdict judge(const CodeResult& r, std::optional<double> aCrit, double searchLimit) {
+CodeVerdict judgeCode(const CodeResult& r, std::optional<double> aCrit, double searchLimit) {
     CodeVerdict v;
     v.code = r.code;
     v.title = r.title;
@@ -52,7 +51,6 @@ CodeVerdict judge(const CodeResult& r, std::optional<double> aCrit, double searc
     v.explanation = s.str();
     return v;
 }
-} // namespace
 
 DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1DCase& slab,
                               const CriticalSearch& search) {
@@ -78,7 +76,7 @@ DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1D
             out.runs += c.runs;
             it = cache.emplace(f, c.amplitude).first;
         }
-        out.codes.push_back(judge(r, it->second, search.to));
+        out.codes.push_back(judgeCode(r, it->second, search.to));
     }
     return out;
 }

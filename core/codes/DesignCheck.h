@@ -48,4 +48,8 @@ DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1D
 
 std::string validateCriticalSearch(const CriticalSearch& s); // empty when fine
 
+// One code's verdict against a critical amplitude (nullopt: nothing collapsed up to
+// searchLimit); shared by the sine's check and the record's (core/codes/RecordCheck.h).
+CodeVerdict judgeCode(const CodeResult& r, std::optional<double> aCrit, double searchLimit);
+
 } // namespace kinstab

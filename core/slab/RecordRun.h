@@ -1,0 +1,15 @@
+#pragma once
+// The 1-DOF slab under a recorded motion scaled to a peak (SPEC §3, §7): the run an engineer
+// asks for when a record, not the enveloped sine, is the excitation. Only the exact solver runs
+// records (it is exact for the linearly interpolated samples, SPEC §6).
+
+#include "core/io/Accelerogram.h"
+#include "core/slab/Slab1DCase.h"
+
+namespace kinstab {
+
+// peak: the peak |a| (g) the motion is scaled to. Throws std::invalid_argument on a bad motion.
+SlabResult runRecord1D(const Slab1DCase& c, const Accelerogram& motion, double peak,
+                       const RunOptions& options = {});
+
+} // namespace kinstab
