@@ -2,6 +2,7 @@
 
 #include "ui/EnvelopeChart.h"
 #include "ui/NumberField.h"
+#include "ui/RecordInput.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -19,7 +20,14 @@ const EnvelopePreset presets[] = {EnvelopePreset::Fast, EnvelopePreset::Moderate
 
 ExcitationPanel::ExcitationPanel(QWidget* parent)
     : InputPanel(parent), m_preset(new QComboBox(this)), m_scale(new QComboBox(this)),
-      m_times(new QLabel(this)), m_chart(new EnvelopeChart(this)) {
+      m_times(new QLabel(this)), m_chart(new EnvelopeChart(this)), m_source(new QComboBox(this)),
+      m_record(new RecordInput(this)) {
+    m_source->setObjectName("excitationSource");
+    m_source->addItems({tr("Enveloped sine"), tr("Record")});
+    m_source->setToolTip(tr("The floor acceleration: the paper's enveloped sine over an (A, f) "
+                            "grid, or a recorded accelerogram (optionally through the floor "
+                            "filter) scaled to a peak."));
+    form()->addRow(tr("S&ource:"), m_source);
     m_preset->addItems({tr("Fast rising (Table 4)"), tr("Moderately rising (Table 4)"),
                         tr("Slowly rising (Table 4)"), tr("Custom α, β")});
     m_preset->setToolTip(tr("Shape of the floor-acceleration envelope. The paper's three presets "
@@ -46,6 +54,13 @@ ExcitationPanel::ExcitationPanel(QWidget* parent)
     m_times->setWordWrap(true);
     form()->addRow(m_times);
     form()->addRow(m_chart);
+    form()->addRow(m_record);
+    track(m_record->peakField(), tr("Target peak:"));
+    connect(m_record, &RecordInput::changed, this, &InputPanel::changed);
+    connect(m_source, &QComboBox::currentIndexChanged, this, [this] {
+        updateSource();
+        emit changed();
+    });
 
     connect(m_preset, &QComboBox::currentIndexChanged, this, [this] {
         updatePreset();
@@ -54,6 +69,44 @@ ExcitationPanel::ExcitationPanel(QWidget* parent)
     connect(m_scale, &QComboBox::currentIndexChanged, this, &InputPanel::changed);
     connect(this, &InputPanel::changed, this, &ExcitationPanel::updateTimes);
     setEnvelope(Envelope::fromPreset(EnvelopePreset::Moderate));
+    updateSource();
+}
+
+void ExcitationPanel::updateSource() {
+    const bool record = usesRecord();
+    for (QWidget* w : std::initializer_list<QWidget*>{m_preset, m_alpha, m_beta, m_times, m_chart})
+        form()->setRowVisible(w, !record);
+    form()->setRowVisible(m_record, record);
+    m_record->peakField()->setEnabled(record);
+    updatePreset();
+}
+
+bool ExcitationPanel::usesRecord() const {
+    return m_source->currentIndex() == 1;
+}
+
+void ExcitationPanel::setUsesRecord(bool on) {
+    m_source->setCurrentIndex(on ? 1 : 0);
+}
+
+std::optional<RecordExcitation> ExcitationPanel::record() const {
+    return usesRecord() ? m_record->record() : std::nullopt;
+}
+
+void ExcitationPanel::setRecord(const std::optional<RecordExcitation>& r) {
+    if (r) m_record->setRecord(*r);
+    setUsesRecord(r.has_value());
+}
+
+bool ExcitationPanel::isValid() const {
+    return InputPanel::isValid() && (!usesRecord() || m_record->isReady());
+}
+
+QStringList ExcitationPanel::problems() const {
+    QStringList out = InputPanel::problems();
+    if (usesRecord() && !m_record->isReady() && m_record->peakField()->isValid())
+        out << m_record->problem();
+    return out;
 }
 
 void ExcitationPanel::updatePreset() {
@@ -64,8 +117,8 @@ void ExcitationPanel::updatePreset() {
         m_alpha->setValue(e.alpha);
         m_beta->setValue(e.beta);
     }
-    m_alpha->setEnabled(custom);
-    m_beta->setEnabled(custom);
+    m_alpha->setEnabled(custom && !usesRecord());
+    m_beta->setEnabled(custom && !usesRecord());
     updateTimes();
 }
 
@@ -102,7 +155,7 @@ void ExcitationPanel::setTstar(double tstar) {
 }
 
 void ExcitationPanel::updateTimes() {
-    if (!isValid()) {
+    if (!InputPanel::isValid()) {
         m_times->clear();
         return;
     }

@@ -1,9 +1,13 @@
 #pragma once
 // Excitation: one of the paper's envelope presets (Table 4) or a user alpha/beta, with a plot
-// of the envelope and its characteristic times.
+// of the envelope and its characteristic times; or a record (RecordInput: file, preview, floor
+// filter, target peak) instead of the enveloped sine (SPEC §10).
 
 #include "core/excitation/Envelope.h"
+#include "core/excitation/RecordExcitation.h"
 #include "ui/InputPanel.h"
+
+#include <optional>
 
 class QComboBox;
 class QLabel;
@@ -12,6 +16,7 @@ namespace kinstab::ui {
 
 class EnvelopeChart;
 class NumberField;
+class RecordInput;
 
 class ExcitationPanel : public InputPanel {
     Q_OBJECT
@@ -25,7 +30,18 @@ public:
     // The time scale the characteristic times are shown in.
     void setTstar(double tstar);
 
+    // Record instead of the enveloped sine: none while the source is the sine.
+    bool usesRecord() const;
+    std::optional<RecordExcitation> record() const;
+    void setRecord(const std::optional<RecordExcitation>& r); // none: the sine
+    void setUsesRecord(bool on);
+    RecordInput* recordInput() const { return m_record; }
+    // The fields' checks and, with a record, a readable record file (these hide InputPanel's).
+    bool isValid() const;
+    QStringList problems() const;
+
 private:
+    void updateSource();
     void updatePreset();
     void updateTimes();
 
@@ -36,6 +52,8 @@ private:
     QComboBox* m_scale;
     QLabel* m_times;
     EnvelopeChart* m_chart;
+    QComboBox* m_source;
+    RecordInput* m_record;
 };
 
 } // namespace kinstab::ui

@@ -117,6 +117,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_runner, &SweepRunner::progress, this, &MainWindow::showProgress);
     connect(m_runner, &SweepRunner::partialResult, this, &MainWindow::showPartial);
     connect(m_runner, &SweepRunner::finished, this, &MainWindow::showFinished);
+    buildRecordRun();
     connect(m_surface, &SurfaceView::pointSelected, this, &MainWindow::pickPoint);
     // "Use this mu" from the friction calibration goes to the slab's friction field.
     connect(m_friction, &FrictionPanel::useMu, m_slabPanel, &SlabPanel::useMu);
@@ -233,7 +234,7 @@ bool MainWindow::inputsValid() const {
 }
 
 void MainWindow::updateRunState() {
-    const bool running = m_runner->isRunning();
+    const bool running = m_runner->isRunning() || m_recordRunner->isRunning();
     m_run->setEnabled(!running && inputsValid());
     m_cancel->setEnabled(running);
     if (running) return;
@@ -250,6 +251,7 @@ void MainWindow::updateRunState() {
 }
 
 void MainWindow::runSweep() {
+    if (m_excitation->usesRecord()) return runRecord();
     if (!inputsValid() || m_runner->isRunning()) return;
     SweepJob job;
     job.slabCase = currentCase();
@@ -278,6 +280,7 @@ void MainWindow::runSweep() {
 
 void MainWindow::cancelSweep() {
     m_runner->cancel();
+    m_recordRunner->cancel();
 }
 
 void MainWindow::showProgress(qint64 done, qint64 total, double secondsLeft) {

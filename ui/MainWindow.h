@@ -6,6 +6,7 @@
 #include "core/slab/Slab1DCase.h"
 #include "ui/PlanarPointRun.h"
 #include "ui/PointRun.h"
+#include "ui/RecordRunner.h"
 #include "ui/SurfaceData.h"
 #include "ui/SweepRunner.h"
 
@@ -85,6 +86,9 @@ public:
     const SweepResult& lastSweep() const { return m_sweep; }
     const std::optional<PointRun>& pickedRun() const { return m_picked; }
     const std::optional<DesignCheckResult>& lastCheck() const { return m_check; }
+    RecordRunner* recordRunner() const { return m_recordRunner; }
+    // The last record run (MainWindowRecord.cpp): single run, critical scale, verdicts.
+    const std::optional<RecordOutput>& lastRecordRun() const { return m_recordRun; }
 
 public slots:
     void runSweep();
@@ -96,6 +100,7 @@ public slots:
 
 signals:
     void sweepFinished();
+    void recordRunFinished();
 
 protected:
     void closeEvent(QCloseEvent* e) override;
@@ -121,6 +126,10 @@ private:
     QString modelTitle() const;
     void saveSettings();
     void restoreSettings();
+    // A record as the excitation (MainWindowRecord.cpp).
+    void buildRecordRun();
+    void runRecord();
+    void showRecordFinished(const RecordOutput& out);
 
     BuildingPanel* m_building;
     CodesPanel* m_codesPanel;
@@ -142,6 +151,8 @@ private:
     FrictionPanel* m_friction = nullptr;
     RecentFiles* m_recent = nullptr;
     SweepRunner* m_runner;
+    RecordRunner* m_recordRunner = nullptr;
+    std::optional<RecordOutput> m_recordRun;
     QAction* m_run = nullptr;
     QAction* m_cancel = nullptr;
     QMenu* m_viewMenu = nullptr;

@@ -55,6 +55,7 @@ Project MainWindow::project() const {
     p.grid = m_gridPanel->grid();
     p.model = m_modelPanel->model();
     p.planar = m_modelPanel->settings();
+    p.record = m_excitation->record();
     return p;
 }
 
@@ -68,6 +69,7 @@ void MainWindow::showProject(const Project& p) {
     m_excitation->setScale(p.slab.scale);
     m_excitation->setTstar(p.slab.tstar);
     m_modelPanel->load(p.model, p.planar);
+    m_excitation->setRecord(p.record);
     if (!m_gridPanel->setGrid(p.grid))
         statusBar()->showMessage(
             tr("The project's grid was not evenly spaced: shown as from/to/step"), 8000);
@@ -120,7 +122,10 @@ bool MainWindow::openProject(const QString& path, bool quiet) {
     try {
         if (!f.open(QIODevice::ReadOnly)) throw ProjectError(f.errorString().toStdString());
         const QByteArray text = f.readAll();
-        const Project p = parseProject(text.toStdString());
+        // A record's file is stored relative to the project's directory.
+        const QString dir =
+            path.startsWith(QLatin1Char(':')) ? QString() : QFileInfo(path).absolutePath();
+        const Project p = parseProject(text.toStdString(), dir.toStdString());
         m_path = path.startsWith(QLatin1Char(':')) ? QString() : path;
         showProject(p);
         if (!m_path.isEmpty()) m_recent->add(m_path);
@@ -145,7 +150,8 @@ QString MainWindow::saveProjectAs(const QString& path) {
     if (!inputsValid()) return tr("fix the marked inputs first");
     const Project p = project();
     if (const std::string e = validateProject(p); !e.empty()) return QString::fromStdString(e);
-    const std::string text = projectToJson(p).dump(2) + "\n";
+    const std::string text =
+        projectToJson(p, QFileInfo(path).absolutePath().toStdString()).dump(2) + "\n";
     QSaveFile f(path); // atomic: the old file stays until the new one is complete
     if (!f.open(QIODevice::WriteOnly) ||
         f.write(text.data(), static_cast<qint64>(text.size())) < 0 || !f.commit())

@@ -177,6 +177,11 @@ QString RecordPreview::defaultVerticalNote() {
         "the paper's Pacoima Dam vertical, which is not publicly available.");
 }
 
+QString RecordPreview::fileDialogFilter() {
+    return tr("Accelerograms (*.AT2 *.at2 *.V1 *.V2 *.V1c *.V2c *.acc *.txt *.csv *.dat);;"
+              "All files (*)");
+}
+
 bool RecordPreview::loadFile(const QString& path, const RecordReadOptions& options) {
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) {

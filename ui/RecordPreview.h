@@ -38,6 +38,8 @@ public:
     // The shipped stand-in for the paper's Pacoima Dam vertical, and the note the UI shows with it.
     static QString defaultVerticalRecord();
     static QString defaultVerticalNote();
+    // The file dialog's filter for accelerograms.
+    static QString fileDialogFilter();
 
     QChart* groundChart() const;
     QChart* floorChart() const;

@@ -43,10 +43,8 @@ QString RecordsTab::errorText() const {
 }
 
 void RecordsTab::chooseFile() {
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Open accelerogram"), {},
-                                     tr("Accelerograms (*.AT2 *.at2 *.V1 *.V2 *.V1c *.V2c *.acc "
-                                        "*.txt *.csv *.dat);;All files (*)"));
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open accelerogram"), {},
+                                                      RecordPreview::fileDialogFilter());
     if (!path.isEmpty()) open(path);
 }
 

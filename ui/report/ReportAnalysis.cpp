@@ -150,6 +150,17 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
         a.slice.amplitudes = s.amplitudes;
         a.slice.gamma = s.gamma;
     }
+    if (project.record) {
+        RecordAnalysisInput in{c, *project.record, project.critical, a.codes, true, false};
+        try {
+            a.record = analyseRecord(in, control);
+        } catch (const RecordError& e) {
+            throw ProjectError("excitation.record.file = '" + project.record->file +
+                               "': " + e.what());
+        } catch (const std::invalid_argument& e) {
+            throw ProjectError(e.what());
+        }
+    }
     // The paper's RK4 solver is of the 1-DOF model only.
     if (options.crossCheck && c.solver == SolverKind::Exact && !planar)
         a.crossCheck = crossCheck(project, a.projectSweep, options.crossCheckSteps);

@@ -7,6 +7,7 @@
 #include "core/codes/CodeResult.h"
 #include "core/codes/DesignCheck.h"
 #include "core/io/Project.h"
+#include "core/sweep/RecordAnalysis.h"
 #include "core/sweep/Sweep.h"
 #include "ui/report/FigureData.h"
 
@@ -39,6 +40,8 @@ struct ReportAnalysis {
     long critRuns = 0;
     SliceData slice;
     std::optional<SolverCrossCheck> crossCheck;
+    // The project's record, when it has one: single run, critical peak, its verdicts.
+    std::optional<RecordAnalysis> record;
     double totalSeconds = 0;
 };
 

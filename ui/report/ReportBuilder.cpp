@@ -69,10 +69,12 @@ ReportDocument buildReportDocument(const ReportSource& s, const ReportAnalysis& 
         doc.addHeading(QStringLiteral("Summary"));
         doc.addParagraph(summaryText(a));
         addVerdictTable(doc, a);
+        if (const QString r = recordSummary(a); !r.isEmpty()) doc.addParagraph(r);
     }
     addInputSections(doc, p);
     addCodeSections(doc, p, a);
     addExcitationSection(doc, p, a);
+    addRecordSection(doc, p, a);
     addSurfaceSections(doc, p, a);
     if (!a.check.codes.empty()) {
         doc.addSection(QStringLiteral("Design check: which failure governs"));

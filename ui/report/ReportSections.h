@@ -27,6 +27,15 @@ void addCodeSections(ReportDocument& doc, const Project& p, const ReportAnalysis
 void addExcitationSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 void addSurfaceSections(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 void addVerdictTable(ReportDocument& doc, const ReportAnalysis& a);
+// The same table for any verdicts (the record's: critHeader names its critical peak).
+void addVerdictTable(ReportDocument& doc, const std::vector<CodeVerdict>& codes,
+                     const QString& critHeader);
+// The record as the project's excitation (RecordSection.cpp): provenance, scaling, floor
+// filter, the time histories and Fourier spectra of ground and floor (Figs. 25-27), the single
+// run and the critical peak against the code ratios. Only when the analysis has a record.
+void addRecordSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
+// One sentence for the summary: what governs with the record.
+QString recordSummary(const ReportAnalysis& a);
 void addNumericsSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 void addReferences(ReportDocument& doc, const Project& p);
 

@@ -107,12 +107,17 @@ void addSurfaceSections(ReportDocument& doc, const Project& p, const ReportAnaly
 }
 
 void addVerdictTable(ReportDocument& doc, const ReportAnalysis& a) {
-    Table t{{"code", "F_top/w_top", "f = 1/T (Hz)", "A_crit (g)", "margin A_crit/ratio", "verdict"},
+    addVerdictTable(doc, a.check.codes, QStringLiteral("A_crit (g)"));
+}
+
+void addVerdictTable(ReportDocument& doc, const std::vector<CodeVerdict>& codes,
+                     const QString& critHeader) {
+    Table t{{"code", "F_top/w_top", "f = 1/T (Hz)", critHeader, "margin A_crit/ratio", "verdict"},
             {},
             {2.6, 1.2, 1.2, 1.2, 1.4, 2.4},
             {Align::Left, Align::Right, Align::Right, Align::Right, Align::Right, Align::Left},
             {}};
-    for (const CodeVerdict& v : a.check.codes) {
+    for (const CodeVerdict& v : codes) {
         QString ratio = num(v.ratio, 3);
         if (v.ratioWithoutFt) ratio = num(*v.ratioWithoutFt, 3) + " / " + ratio;
         t.rows.push_back({qs(v.title), ratio, num(v.frequencyHz, 3), num(v.aCrit, 4, "> limit"),
@@ -120,7 +125,7 @@ void addVerdictTable(ReportDocument& doc, const ReportAnalysis& a) {
     }
     doc.addTable(t);
     bool ubc = false;
-    for (const CodeVerdict& v : a.check.codes)
+    for (const CodeVerdict& v : codes)
         ubc = ubc || v.ratioWithoutFt.has_value();
     if (ubc)
         doc.addParagraph(

@@ -1,0 +1,13 @@
+#pragma once
+// The record run as a PointRun for HistoryChart: delta(tau), the scaled motion under the slab,
+// the +-mu slip thresholds and the fitted envelope (Fig. 27) scaled like the motion.
+
+#include "core/sweep/RecordAnalysis.h"
+#include "ui/PointRun.h"
+
+namespace kinstab::ui {
+
+// a.run must have its events (RecordAnalysisInput::events).
+PointRun recordPointRun(const Slab1DCase& c, const RecordAnalysis& a);
+
+} // namespace kinstab::ui

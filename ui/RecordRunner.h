@@ -1,0 +1,54 @@
+#pragma once
+// Runs a record analysis off the GUI thread (core/sweep/RecordAnalysis.h: the single run, the
+// critical scale and the verdicts), like SweepRunner: QtConcurrent::run with a QPromise adapted
+// to core's SweepControl, progress polled a few times a second, cancel within one slab run.
+
+#include "core/sweep/RecordAnalysis.h"
+#include "ui/PointRun.h"
+
+#include <QFutureWatcher>
+#include <QObject>
+#include <QTimer>
+
+#include <memory>
+#include <optional>
+
+namespace kinstab::ui {
+
+struct RecordOutput {
+    std::optional<RecordAnalysis> analysis; // none when the input failed
+    std::optional<PointRun> history;        // the single run, sampled for HistoryChart
+    std::string error;                      // why it failed (names the field or file)
+    bool cancelled = false;
+};
+
+class RecordRunner : public QObject {
+    Q_OBJECT
+public:
+    explicit RecordRunner(QObject* parent = nullptr);
+    ~RecordRunner() override; // cancels and waits
+
+    void start(const RecordAnalysisInput& input);
+    void cancel();
+    bool isRunning() const;
+    void waitForFinished() { m_watcher.waitForFinished(); }
+
+    struct Live; // shared with the worker
+
+signals:
+    void progress(qint64 done, qint64 total);
+    void finished(const kinstab::ui::RecordOutput& out);
+
+private:
+    void poll();
+    void onFinished();
+
+    std::shared_ptr<Live> m_live;
+    QFutureWatcher<RecordOutput> m_watcher;
+    QTimer m_timer;
+};
+
+// The work itself, synchronous (the runner calls it on its worker; tests call it directly).
+RecordOutput runRecordJob(const RecordAnalysisInput& input, SweepControl* control = nullptr);
+
+} // namespace kinstab::ui
