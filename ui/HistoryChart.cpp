@@ -111,11 +111,12 @@ void HistoryChart::setRun(const PointRun& run) {
                                       .arg(r.tauC, 0, 'f', 2)
                                       .arg(run.tauRef / r.tauC, 0, 'f', 3)
                                 : QString::fromStdString(outcomeName(r.outcome));
-    chart()->setTitle(tr("A = %1 g, f = %2 Hz: %3, %4 slip intervals (cf. Fig. 35)")
-                          .arg(run.amplitude, 0, 'f', 3)
-                          .arg(run.frequency, 0, 'f', 3)
-                          .arg(outcome)
-                          .arg(r.slipIntervals));
+    const QString drive =
+        run.drive.empty()
+            ? tr("A = %1 g, f = %2 Hz").arg(run.amplitude, 0, 'f', 3).arg(run.frequency, 0, 'f', 3)
+            : QString::fromStdString(run.drive);
+    chart()->setTitle(
+        tr("%1: %2, %3 slip intervals (cf. Fig. 35)").arg(drive, outcome).arg(r.slipIntervals));
 }
 
 } // namespace kinstab::ui

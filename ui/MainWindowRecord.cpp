@@ -10,6 +10,7 @@
 #include "ui/VerdictPanel.h"
 
 #include <QAction>
+#include <QDockWidget>
 #include <QLabel>
 #include <QProgressBar>
 
@@ -75,6 +76,9 @@ void MainWindow::showRecordFinished(const RecordOutput& out) {
             m_verdict->setCheck(*m_check);
         }
         const QString summary = runSummary(a, currentCase().tstar);
+        // The result is shown under the record's inputs: bring their dock to the front.
+        for (QWidget* w = m_excitation; w; w = w->parentWidget())
+            if (auto* dock = qobject_cast<QDockWidget*>(w)) dock->raise();
         input->setResult(summary, false);
         m_status->setText(
             out.cancelled

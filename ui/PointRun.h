@@ -5,6 +5,7 @@
 #include "core/slab/History.h"
 #include "core/slab/Slab1DCase.h"
 
+#include <string>
 #include <vector>
 
 namespace kinstab::ui {
@@ -16,6 +17,7 @@ struct EnvelopeSample {
 
 struct PointRun {
     double amplitude = 0, frequency = 0, mu = 0, limit = 1, tauRef = 1;
+    std::string drive; // what drove the run when not the sine at (A, f): "record X at 0.9 g"
     SlabResult result;
     History history;
     std::vector<EnvelopeSample> envelope;

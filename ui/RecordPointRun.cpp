@@ -3,6 +3,7 @@
 #include "core/excitation/RecordedMotion.h"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace kinstab::ui {
 
@@ -13,6 +14,11 @@ PointRun recordPointRun(const Slab1DCase& c, const RecordAnalysis& a) {
     p.limit = c.slab.limit;
     p.tauRef = a.tauRef.value_or(1.0);
     p.result = a.run;
+    char peak[32];
+    std::snprintf(peak, sizeof peak, "%.3f", a.peak);
+    p.drive =
+        (a.ground.component.empty() ? std::string("record") : "record " + a.ground.component) +
+        " at " + std::string(peak) + " g";
     const RecordedMotion motion(a.motion, c.tstar, a.peak);
     // Up to the collapse, else the whole record; about 4 samples per record interval.
     const bool ended = a.run.outcome == Outcome::Collapsed || a.run.outcome == Outcome::LiftOff;
