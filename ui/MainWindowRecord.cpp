@@ -6,6 +6,7 @@
 #include "ui/ExcitationPanel.h"
 #include "ui/HistoryChart.h"
 #include "ui/MainWindow.h"
+#include "ui/ModelPanel.h"
 #include "ui/RecordInput.h"
 #include "ui/VerdictPanel.h"
 
@@ -56,8 +57,13 @@ void MainWindow::runRecord() {
     m_progress->setRange(0, 1000);
     m_progress->setValue(0);
     m_progress->show();
+    // The GUI runs records with the 1-DOF model; the planar slab under records is kinstab-cli's.
+    const bool planar = m_modelPanel && m_modelPanel->model() == "planar";
     m_status->setText(tr("Running the record and searching its critical scale… (a record has "
-                         "no (A, f) surface)"));
+                         "no (A, f) surface%1)")
+                          .arg(planar ? tr("; records run the 1-DOF model here — planar: "
+                                           "kinstab-cli simulate --model planar --record")
+                                      : QString()));
     updateRunState();
 }
 

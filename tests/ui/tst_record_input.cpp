@@ -88,6 +88,21 @@ private slots:
         QVERIFY(w->verdictPanel()->rowCount() > 0);
         QCOMPARE(w->verdictPanel()->verdictText(0), QString("overstress governs"));
     }
+    void cancelKeepsTheRunDropsTheSearch() {
+        // A search cancelled before it starts: the single run is there, the critical scale and
+        // the verdicts are not (as a cancelled sweep keeps only what it computed).
+        RecordAnalysisInput in;
+        in.record.file = kElCentro.toStdString();
+        in.record.targetPeak = 1.5;
+        SweepControl control;
+        control.cancel();
+        const RecordOutput out = runRecordJob(in, &control);
+        QVERIFY(out.analysis && out.cancelled);
+        QCOMPARE(outcomeName(out.analysis->run.outcome), std::string("collapsed"));
+        QVERIFY(!out.analysis->critical);
+        QVERIFY(out.analysis->verdicts.empty());
+        QVERIFY(out.history && out.history->history.samples.size() > 100);
+    }
     void brokenFileShowsBesideTheField() {
         QTemporaryDir dir;
         const QString bad = dir.filePath("broken.AT2");
