@@ -157,7 +157,8 @@ void addRecordSection(ReportDocument& doc, const Project& p, const ReportAnalysi
     doc.addParagraph(
         QStringLiteral(
             "The project's excitation is a recorded accelerogram instead of the enveloped sine: "
-            "linearly interpolated between samples, zero after its end, run by the exact solver "
+            "linearly interpolated between samples, zero after its end, driving the 1-DOF slab "
+            "with the exact solver "
             "(exact for piecewise-linear input). The floor filter, when used, is the absolute "
             "acceleration of a damped linear oscillator of the building's period under the ground "
             "record (the paper's eq. 6). The record is scaled to the peak below; the critical "
