@@ -135,4 +135,15 @@ double DecaySineIntegrals::second(double t0, double h) const {
     return (pointAt(t0 + h).p2 - o.p2 - o.p1 * h).imag();
 }
 
+double DecaySineIntegrals::both(double t0, double h, double& secondOut) const {
+    const Point& o = origin(t0);
+    if (zqAbs_ * h <= kShortSpan) {
+        secondOut = shortSpan(o, h, 2).imag();
+        return shortSpan(o, h, 1).imag();
+    }
+    const Point p = pointAt(t0 + h);
+    secondOut = (p.p2 - o.p2 - o.p1 * h).imag();
+    return (p.p1 - o.p1).imag();
+}
+
 } // namespace kinstab

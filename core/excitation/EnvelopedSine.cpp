@@ -72,13 +72,29 @@ double EnvelopedSine::displacementChange(double t0, double t1) const {
     return scale_ * integrals_.second(t0, t1 - t0);
 }
 
+double EnvelopedSine::velocityAndDisplacementChange(double t0, double t1, double& dx) const {
+    double second = 0.0;
+    const double dv = scale_ * integrals_.both(t0, t1 - t0, second);
+    dx = scale_ * second;
+    return dv;
+}
+
+long EnvelopedSine::halfPeriodIndex(double segmentStart) const {
+    return static_cast<long>(std::floor(segmentStart / halfPeriod_ + 1e-9));
+}
+
 double EnvelopedSine::segmentEnd(double segmentStart) const {
     // Half-periods of the sine: on each, |sin| and the envelope are log-concave, so |a| is
     // unimodal and crosses a level at most twice (NUMERICS.md §5.2).
-    const double k = std::floor(segmentStart / halfPeriod_ + 1e-9);
+    const double k = static_cast<double>(halfPeriodIndex(segmentStart));
     double end = (k + 1.0) * halfPeriod_;
     if (end <= segmentStart) end = (k + 2.0) * halfPeriod_;
     return end;
+}
+
+// The sign of the sine on the half-period that holds the segment.
+int EnvelopedSine::signOn(double lo, double /*hi*/) const {
+    return halfPeriodIndex(lo) % 2 == 0 ? 1 : -1;
 }
 
 double EnvelopedSine::halfPeriodPeak(long k) const {
@@ -109,8 +125,8 @@ Crossings EnvelopedSine::crossings(double level, double segmentStart, double seg
     Crossings out;
     if (level == 0.0) return out;
     // The half-period holding the segment (as segmentEnd() cuts them).
-    const long k = static_cast<long>(std::floor(segmentStart / halfPeriod_ + 1e-9));
-    const double sign = (k % 2 == 0) ? 1.0 : -1.0;
+    const long k = halfPeriodIndex(segmentStart);
+    const double sign = signOn(segmentStart, segmentEnd);
     if ((level > 0.0) != (sign > 0.0)) return out;
     const double target = std::abs(level);
     if (boundOn(segmentStart, segmentEnd) <= target) return out;

@@ -23,10 +23,12 @@ public:
     double velocityChange(double t0, double t1) const override;
     double velocityChangeAndAccel(double t0, double t1, double& accelAtT1) const override;
     double displacementChange(double t0, double t1) const override;
+    double velocityAndDisplacementChange(double t0, double t1, double& dx) const override;
     double segmentEnd(double segmentStart) const override;
     Crossings crossings(double level, double segmentStart, double segmentEnd) const override;
     double boundAfter(double tau) const override;
     double boundOn(double lo, double hi) const override;
+    int signOn(double lo, double hi) const override;
     double peak() const override { return amplitude_; }
 
     double omega() const { return omega_; }
@@ -44,6 +46,7 @@ private:
     void envelopeAndSlope(double tau, double& e, double& de, double* d2e = nullptr) const;
     void accelAndSlope(double tau, double& a, double& da) const;
     double computeSMax() const;
+    long halfPeriodIndex(double segmentStart) const; // as segmentEnd() cuts the time line
 
     double amplitude_;
     double p_, q_; // alpha t*, beta t*

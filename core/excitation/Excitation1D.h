@@ -29,6 +29,12 @@ public:
     }
     // Integral over [t0, t1] of (integral of a over [t0, s]) ds.
     virtual double displacementChange(double t0, double t1) const = 0;
+    // Both changes at once: the end of every slip piece needs both, and a closed form can
+    // share its exponentials between them.
+    virtual double velocityAndDisplacementChange(double t0, double t1, double& dx) const {
+        dx = displacementChange(t0, t1);
+        return velocityChange(t0, t1);
+    }
     // Time line cut into segments; each segment is small enough that a(tau) crosses any level
     // at most Crossings::t.size() times in it, and crossings() finds them all with a bracket.
     virtual double segmentEnd(double segmentStart) const = 0;
@@ -39,6 +45,9 @@ public:
     virtual double boundAfter(double tau) const = 0;
     // An upper bound of |a| over [lo, hi], cheap: lets the solver skip quiet segments.
     virtual double boundOn(double lo, double hi) const = 0;
+    // +1 or -1 when a keeps that sign on [lo, hi] (within one segment) and the implementation
+    // knows it without evaluating a; 0 otherwise.
+    virtual int signOn(double /*lo*/, double /*hi*/) const { return 0; }
     // Largest |a| anywhere.
     virtual double peak() const = 0;
 };

@@ -22,6 +22,10 @@ struct RootResult {
 // start: a first guess inside the bracket (the midpoint when absent or outside); a good one
 // saves the bisection steps before Newton takes over. absTolerance: stop once the bracket or
 // the Newton step is below it (0: a few ulps, as exact as double arithmetic allows).
+// Once Newton converges quadratically (a step under 1/100 of the one before), the error left
+// after a step is about (step / previous step)^2 x step: when that is below the tolerance, the
+// point is returned without the evaluation that would only confirm it. At a double root Newton
+// is linear (each step about half the last) and this never fires.
 template <class FDF>
 RootResult safeguardedNewton(FDF&& fdf, double lo, double hi, double flo, double fhi,
                              int maxIterations = 200,
@@ -38,6 +42,8 @@ RootResult safeguardedNewton(FDF&& fdf, double lo, double hi, double flo, double
     if (start > std::min(lo, hi) && start < std::max(lo, hi)) x = start;
     double dxOld = std::abs(hi - lo);
     double dx = dxOld;
+    double lastNewton = std::numeric_limits<double>::infinity();
+    double predictedError = std::numeric_limits<double>::infinity();
     double f = 0.0, df = 0.0;
     fdf(x, f, df);
     for (r.iterations = 1; r.iterations <= maxIterations; ++r.iterations) {
@@ -52,13 +58,20 @@ RootResult safeguardedNewton(FDF&& fdf, double lo, double hi, double flo, double
         if (newtonOutside || newtonSlow || df == 0.0) {
             dx = 0.5 * (b - a);
             x = a + dx;
+            lastNewton = predictedError = std::numeric_limits<double>::infinity();
         } else {
             dx = f / df;
             x -= dx;
+            // Two Newton steps in a row are needed to see the rate (lastNewton is inf after
+            // the start or a bisection, and then the ratio is 0, not small).
+            const double ratio = std::abs(dx) / lastNewton;
+            predictedError = ratio > 0.0 && ratio < 0.01 ? ratio * ratio * std::abs(dx)
+                                                         : std::numeric_limits<double>::infinity();
+            lastNewton = std::abs(dx);
         }
         const double tol = std::max(absTolerance, 4.0 * std::numeric_limits<double>::epsilon() *
                                                       std::max({std::abs(a), std::abs(b), 1e-300}));
-        if (std::abs(b - a) <= tol || std::abs(dx) <= 0.25 * tol) {
+        if (std::abs(b - a) <= tol || std::abs(dx) <= 0.25 * tol || predictedError <= 0.25 * tol) {
             r.x = x;
             r.converged = true;
             return r;

@@ -34,6 +34,15 @@ private:
         const double h = tau - t_;
         return x_ + v_ * h - 0.5 * s_ * p_.mu * h * h - a_.displacementChange(t_, tau);
     }
+    // velocityAt(tau), with displacementAt(tau) in x, from one closed-form evaluation.
+    double velocityAndDisplacementAt(double tau, double& x) {
+        ++r_.work.accelEvaluations;
+        const double h = tau - t_;
+        double dx = 0.0;
+        const double dv = a_.velocityAndDisplacementChange(t_, tau, dx);
+        x = x_ + v_ * h - 0.5 * s_ * p_.mu * h * h - dx;
+        return v_ - s_ * p_.mu * h - dv;
+    }
     struct Cut {
         double tau = 0;
         int kind = 0; // +1: a crosses mu, -1: a crosses -mu, 0: segment end
@@ -52,9 +61,13 @@ private:
         if (state == kind) return 0;
         return std::nullopt;
     }
+    // How a stop is resolved: the piece knows whether |a| > mu all along it (Reverse) or not
+    // (Stick); or a(tau) at the stop decides (Decide, for a slip with no cuts yet).
+    enum class AtStop { Stick, Reverse, Decide };
     Step segment(double lo, double hi);
+    Step cutIntoPieces(double lo, double hi);
     Step piece(double lo, double hi, int excess);
-    Step slipThrough(double hi, bool excess);
+    Step slipThrough(double hi, AtStop atStop);
     void moveTo(double tau, double x, double v) {
         t_ = tau;
         x_ = x;
@@ -127,12 +140,23 @@ SlabResult ExactRun::run() {
     }
 }
 
-// One segment: cut at every crossing of |a| = mu, then each piece has a fixed sign of
+ExactRun::Step ExactRun::segment(double lo, double hi) {
+    if (s_ == 0 && a_.boundOn(lo, hi) <= p_.mu) return Step::Continue; // nothing can start
+    if (s_ != 0 && a_.signOn(lo, hi) == s_) {
+        // a has the slip's sign: s v' = -mu - |a| < 0 throughout, so the first stop is found
+        // without cuts; only what follows it (an onset, or the reversed slip) needs them.
+        if (slipThrough(hi, AtStop::Decide) == Step::Done) return Step::Done;
+        if (t_ >= hi) return Step::Continue;
+        lo = t_;
+    }
+    return cutIntoPieces(lo, hi);
+}
+
+// Cut [lo, hi] at every crossing of |a| = mu, then each piece has a fixed sign of
 // |a| - mu and of a +- mu. That sign flips at every cut, so a is evaluated once per segment
 // (in its longest piece) and carried through the cuts; a cut that contradicts the carried
 // state (only through rounding) falls back to evaluating a in the piece.
-ExactRun::Step ExactRun::segment(double lo, double hi) {
-    if (s_ == 0 && a_.boundOn(lo, hi) <= p_.mu) return Step::Continue; // nothing can start
+ExactRun::Step ExactRun::cutIntoPieces(double lo, double hi) {
     Crossings up = a_.crossings(p_.mu, lo, hi);
     Crossings down = p_.mu > 0.0 ? a_.crossings(-p_.mu, lo, hi) : Crossings{};
     std::array<Cut, 10> cuts{};
@@ -177,14 +201,16 @@ ExactRun::Step ExactRun::piece(double lo, double hi, int excess) {
         ++r_.slipIntervals;
         if (!event(EventKind::SlipOnset, s_)) return Step::Done;
     }
-    return slipThrough(hi, excess != 0);
+    return slipThrough(hi, excess != 0 ? AtStop::Reverse : AtStop::Stick);
 }
 
-// Slip from t_ to hi (inside one piece); handles a stop, a reversal and collapse.
-ExactRun::Step ExactRun::slipThrough(double hi, bool excess) {
+// Slip from t_ to hi (inside one piece); handles a stop, a reversal and collapse. With
+// AtStop::Decide it returns at the first stop (t_ < hi then).
+ExactRun::Step ExactRun::slipThrough(double hi, AtStop atStop) {
     while (true) {
-        const double vHi = velocityAt(hi);
-        const bool stops = s_ * vHi <= 0.0 && !(excess && v_ == 0.0);
+        double xHi = 0.0;
+        const double vHi = velocityAndDisplacementAt(hi, xHi);
+        const bool stops = s_ * vHi <= 0.0 && !(atStop == AtStop::Reverse && v_ == 0.0);
         // s v <= 0 already at t_ only through rounding right after a grazing onset: stop there.
         const double tStop = !stops             ? hi
                              : (s_ * v_ <= 0.0) ? t_
@@ -195,7 +221,7 @@ ExactRun::Step ExactRun::slipThrough(double hi, bool excess) {
                                                           df = s_ * (-s_ * p_.mu - a);
                                                       },
                                                       t_, hi, s_ * v_, s_ * vHi);
-        const double xEnd = displacementAt(tStop);
+        const double xEnd = stops ? displacementAt(tStop) : xHi;
         if (s_ * xEnd > p_.limit) {
             // Displacement is monotone while the slip keeps its sign: one crossing of the limit.
             const double tC = rootOf(
@@ -214,11 +240,12 @@ ExactRun::Step ExactRun::slipThrough(double hi, bool excess) {
             return Step::Continue;
         }
         moveTo(tStop, xEnd, 0.0);
-        if (excess) {
+        if (atStop == AtStop::Reverse || (atStop == AtStop::Decide && excessAt(tStop) != 0)) {
             // |a| > mu at the stop: no sticking, it slides back at once (NUMERICS.md §4 row 5).
             s_ = -s_;
             ++r_.slipIntervals;
             if (!event(EventKind::Reversal, s_)) return Step::Done;
+            if (atStop == AtStop::Decide) return Step::Continue;
             continue;
         }
         s_ = 0;

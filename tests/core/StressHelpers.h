@@ -40,6 +40,17 @@ public:
     double displacementChange(double t0, double t1) const override {
         return -a_.displacementChange(t0, t1);
     }
+    double velocityChangeAndAccel(double t0, double t1, double& accelAtT1) const override {
+        const double dv = -a_.velocityChangeAndAccel(t0, t1, accelAtT1);
+        accelAtT1 = -accelAtT1;
+        return dv;
+    }
+    double velocityAndDisplacementChange(double t0, double t1, double& dx) const override {
+        const double dv = -a_.velocityAndDisplacementChange(t0, t1, dx);
+        dx = -dx;
+        return dv;
+    }
+    int signOn(double lo, double hi) const override { return -a_.signOn(lo, hi); }
     double segmentEnd(double s) const override { return a_.segmentEnd(s); }
     Crossings crossings(double level, double s0, double s1) const override {
         return a_.crossings(-level, s0, s1);
