@@ -54,10 +54,11 @@ int runBench(const ArgList& argv) {
                         {"outcome_disagreements", b.outcomeDisagreements}};
     std::cout << j.dump(2) << "\n";
     std::fprintf(stderr,
-                 "%zux%zu surface, %d threads, %d runs after a warm-up:\n"
+                 "%zux%zu surface, %d threads, %d alternating runs of each after a warm-up:\n"
                  "  exact       median %.3f s (min %.3f s, CPU %.3f s)\n"
                  "  paper T/%g  median %.3f s (min %.3f s, CPU %.3f s)\n"
-                 "  exact/paper %.2f (wall), %.2f (CPU); outcomes differ at %zu points\n",
+                 "  exact/paper %.2f (wall), %.2f (CPU), medians of per-run ratios; outcomes "
+                 "differ at %zu points\n",
                  grid.amplitudes.size(), grid.frequencies.size(), b.threads, b.exact.runs,
                  b.exact.medianSeconds, b.exact.minSeconds, b.exact.medianCpuSeconds,
                  c.paperStepsPerPeriod, b.paper.medianSeconds, b.paper.minSeconds,

@@ -34,6 +34,11 @@ private:
         const double h = tau - t_;
         return x_ + v_ * h - 0.5 * s_ * p_.mu * h * h - a_.displacementChange(t_, tau);
     }
+    // d(s v)/dtau = -mu - s a(tau) while slipping with sign s.
+    double slipSlope(double tau) {
+        ++r_.work.accelEvaluations;
+        return -p_.mu - s_ * a_.accel(tau);
+    }
     // velocityAt(tau), with displacementAt(tau) in x, from one closed-form evaluation.
     double velocityAndDisplacementAt(double tau, double& x) {
         ++r_.work.accelEvaluations;
@@ -90,12 +95,14 @@ private:
         r_.residualDelta = x_;
         return Step::Done;
     }
-    double rootOf(auto&& fdf, double lo, double hi, double flo, double fhi) {
-        // Start from the secant point: the functions are monotone on the bracket, and it saves
-        // the first Newton steps from the midpoint (every call costs closed-form integrals).
-        const double secant = lo + (hi - lo) * (flo / (flo - fhi));
+    // dflo, dfhi: the slopes at the ends. The functions are monotone on the bracket; starting
+    // from the root of their Hermite cubic saves the first Newton steps from the midpoint or
+    // the secant point (every call costs closed-form integrals).
+    double rootOf(auto&& fdf, double lo, double hi, double flo, double fhi, double dflo,
+                  double dfhi) {
+        const double start = hermiteRootGuess(lo, hi, flo, fhi, dflo, dfhi);
         const RootResult root =
-            safeguardedNewton(fdf, lo, hi, flo, fhi, 200, secant, o_.eventTolerance);
+            safeguardedNewton(fdf, lo, hi, flo, fhi, 200, start, o_.eventTolerance);
         r_.work.rootIterations += root.iterations;
         return std::clamp(root.x, lo, hi);
     }
@@ -212,15 +219,16 @@ ExactRun::Step ExactRun::slipThrough(double hi, AtStop atStop) {
         const double vHi = velocityAndDisplacementAt(hi, xHi);
         const bool stops = s_ * vHi <= 0.0 && !(atStop == AtStop::Reverse && v_ == 0.0);
         // s v <= 0 already at t_ only through rounding right after a grazing onset: stop there.
-        const double tStop = !stops             ? hi
-                             : (s_ * v_ <= 0.0) ? t_
-                                                : rootOf(
-                                                      [&](double tau, double& f, double& df) {
-                                                          double a = 0.0;
-                                                          f = s_ * velocityAt(tau, &a);
-                                                          df = s_ * (-s_ * p_.mu - a);
-                                                      },
-                                                      t_, hi, s_ * v_, s_ * vHi);
+        const double tStop = !stops ? hi
+                             : (s_ * v_ <= 0.0)
+                                 ? t_
+                                 : rootOf(
+                                       [&](double tau, double& f, double& df) {
+                                           double a = 0.0;
+                                           f = s_ * velocityAt(tau, &a);
+                                           df = s_ * (-s_ * p_.mu - a);
+                                       },
+                                       t_, hi, s_ * v_, s_ * vHi, slipSlope(t_), slipSlope(hi));
         const double xEnd = stops ? displacementAt(tStop) : xHi;
         if (s_ * xEnd > p_.limit) {
             // Displacement is monotone while the slip keeps its sign: one crossing of the limit.
@@ -229,7 +237,8 @@ ExactRun::Step ExactRun::slipThrough(double hi, AtStop atStop) {
                     f = s_ * displacementAt(tau) - p_.limit;
                     df = s_ * velocityAt(tau);
                 },
-                t_, tStop, s_ * x_ - p_.limit, s_ * xEnd - p_.limit);
+                t_, tStop, s_ * x_ - p_.limit, s_ * xEnd - p_.limit, s_ * v_,
+                stops ? 0.0 : s_ * vHi);
             moveTo(tC, s_ * p_.limit, velocityAt(tC));
             r_.tauC = tC;
             if (!event(EventKind::Collapse, s_)) return Step::Done;

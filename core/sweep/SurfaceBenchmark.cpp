@@ -20,12 +20,13 @@ SurfaceBenchmark benchmarkSurface(const Slab1DCase& c, const SweepGrid& grid, in
     exact.solver = SolverKind::Exact;
     paper.solver = SolverKind::Paper;
     SweepResult exactResult, paperResult;
-    b.exact = timeRuns(
-        [&] { exactResult = runSweep(grid, slab1DPoint(exact), nullptr, b.threads); }, repeats);
-    b.paper = timeRuns(
+    const PairedTiming t = timePaired(
+        [&] { exactResult = runSweep(grid, slab1DPoint(exact), nullptr, b.threads); },
         [&] { paperResult = runSweep(grid, slab1DPoint(paper), nullptr, b.threads); }, repeats);
-    b.ratioMedian = b.exact.medianSeconds / b.paper.medianSeconds;
-    b.ratioCpu = b.exact.medianCpuSeconds / b.paper.medianCpuSeconds;
+    b.exact = t.first;
+    b.paper = t.second;
+    b.ratioMedian = t.ratioWall;
+    b.ratioCpu = t.ratioCpu;
     for (std::size_t k = 0; k < exactResult.points.size(); ++k) {
         if (exactResult.points[k].outcome != paperResult.points[k].outcome)
             ++b.outcomeDisagreements;

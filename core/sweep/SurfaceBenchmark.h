@@ -1,8 +1,8 @@
 #pragma once
 // The issue-2 speed target, measured (SPEC §11: speed claims come from benchmarks): the same
 // surface swept with the exact solver and with the paper's RK4 at H = T/16, in one process,
-// each timed over repeated runs. Also counts the grid points where the two disagree on the
-// outcome, so that a speed-up can never hide a change of answer.
+// timed over repeated runs that alternate between the two. Also counts the grid points where the
+// two disagree on the outcome, so that a speed-up can never hide a change of answer.
 
 #include "core/numerics/Timing.h"
 #include "core/slab/Slab1DCase.h"
@@ -14,8 +14,8 @@ struct SurfaceBenchmark {
     SweepGrid grid;
     int threads = 0;
     TimingStats exact, paper;
-    double ratioMedian = 0; // exact / paper, median wall times
-    double ratioCpu = 0;    // exact / paper, median CPU times
+    double ratioMedian = 0; // exact / paper: median of the per-repeat wall-time ratios
+    double ratioCpu = 0;    // the same for CPU time
     std::size_t outcomeDisagreements = 0;
     std::size_t exactCollapsed = 0;
 };
