@@ -92,8 +92,8 @@ double EnvelopedSine::segmentEnd(double segmentStart) const {
     return end;
 }
 
-// The sign of the sine on the half-period that holds the segment.
-int EnvelopedSine::signOn(double lo, double /*hi*/) const {
+// Each half-period is one hump (see segmentEnd()), with the sine's sign.
+int EnvelopedSine::humpSign(double lo, double /*hi*/) const {
     return halfPeriodIndex(lo) % 2 == 0 ? 1 : -1;
 }
 
@@ -121,40 +121,59 @@ double EnvelopedSine::peakGuess(long k) const {
     return lo + (0.5 * std::numbers::pi + std::atan(e1 / e / omega_)) / omega_;
 }
 
-Crossings EnvelopedSine::crossings(double level, double segmentStart, double segmentEnd) const {
-    Crossings out;
-    if (level == 0.0) return out;
-    // The half-period holding the segment (as segmentEnd() cuts them).
-    const long k = halfPeriodIndex(segmentStart);
-    const double sign = signOn(segmentStart, segmentEnd);
-    if ((level > 0.0) != (sign > 0.0)) return out;
-    const double target = std::abs(level);
-    if (boundOn(segmentStart, segmentEnd) <= target) return out;
+std::optional<EnvelopedSine::Hump> EnvelopedSine::humpAbove(long k, double target) const {
+    const double lo = static_cast<double>(k) * halfPeriod_;
+    if (boundOn(lo, lo + halfPeriod_) <= target) return std::nullopt;
     // |a| is unimodal on the half-period, so any point above the level splits its two
     // crossings: the peak guess usually is one; only near grazing is the true peak needed.
-    double m = peakGuess(k);
-    double peakValue = sign * accel(m);
-    if (!(peakValue > target)) {
-        m = halfPeriodPeak(k);
-        peakValue = sign * accel(m);
-        if (!(peakValue > target)) return out; // touching is not crossing
+    Hump h{k, k % 2 == 0 ? 1.0 : -1.0, peakGuess(k), 0.0, 0.0};
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        if (attempt == 1) h.m = halfPeriodPeak(k);
+        h.envelope = envelopeAt(h.m);
+        h.peakValue = scale_ * h.envelope * std::abs(std::sin(omega_ * h.m));
+        if (h.peakValue > target) return h;
     }
+    return std::nullopt;
+}
+
+double EnvelopedSine::humpRoot(const Hump& h, double target, bool rising) const {
     auto fdf = [&](double t, double& f, double& df) {
         accelAndSlope(t, f, df);
-        f = sign * f - target;
-        df = sign * df;
+        f = h.sign * f - target;
+        df = h.sign * df;
     };
-    const double lo = static_cast<double>(k) * halfPeriod_, hi = lo + halfPeriod_;
-    // First guesses: the envelope frozen at its value at m, |a| = level where
+    const double lo = static_cast<double>(h.k) * halfPeriod_, hi = lo + halfPeriod_;
+    // First guess: the envelope frozen at its value at m, |a| = level where
     // |sin(omega (tau - lo))| = level / (scale e(m)).
-    const double offset = std::asin(std::min(1.0, target / (scale_ * envelopeAt(m)))) / omega_;
+    const double offset = std::asin(std::min(1.0, target / (scale_ * h.envelope))) / omega_;
+    return rising
+               ? safeguardedNewton(fdf, lo, h.m, -target, h.peakValue - target, 200, lo + offset).x
+               : safeguardedNewton(fdf, h.m, hi, h.peakValue - target, -target, 200, hi - offset).x;
+}
+
+Crossings EnvelopedSine::crossings(double level, double segmentStart, double segmentEnd) const {
+    Crossings out;
+    const long k = halfPeriodIndex(segmentStart);
+    if (level == 0.0 || (level > 0.0) != (k % 2 == 0)) return out;
+    const auto hump = humpAbove(k, std::abs(level));
+    if (!hump) return out;
     // Only the crossings inside the segment: a segment cut short (a duration cap) must not
     // report the half-period's crossings beyond its end.
-    for (const double t :
-         {safeguardedNewton(fdf, lo, m, -target, peakValue - target, 200, lo + offset).x,
-          safeguardedNewton(fdf, m, hi, peakValue - target, -target, 200, hi - offset).x})
+    for (const bool rising : {true, false}) {
+        const double t = humpRoot(*hump, std::abs(level), rising);
         if (t > segmentStart && t < segmentEnd) out.add(t);
+    }
     return out;
+}
+
+// Only the root asked for; the rising one lies before m and the falling one after it, so a
+// root on the wrong side of (lo, hi) is not even computed.
+double EnvelopedSine::humpCrossing(double level, double lo, double hi, bool rising) const {
+    constexpr double none = std::numeric_limits<double>::quiet_NaN();
+    const auto hump = humpAbove(halfPeriodIndex(lo), level);
+    if (!hump || (rising && lo >= hump->m) || (!rising && hi <= hump->m)) return none;
+    const double t = humpRoot(*hump, level, rising);
+    return t > lo && t < hi ? t : none;
 }
 
 double EnvelopedSine::boundAfter(double tau) const {

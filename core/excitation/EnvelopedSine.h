@@ -8,6 +8,8 @@
 #include "core/excitation/Envelope.h"
 #include "core/excitation/Excitation1D.h"
 
+#include <optional>
+
 namespace kinstab {
 
 struct SineCounters {
@@ -28,7 +30,8 @@ public:
     Crossings crossings(double level, double segmentStart, double segmentEnd) const override;
     double boundAfter(double tau) const override;
     double boundOn(double lo, double hi) const override;
-    int signOn(double lo, double hi) const override;
+    int humpSign(double lo, double hi) const override;
+    double humpCrossing(double level, double lo, double hi, bool rising) const override;
     double peak() const override { return amplitude_; }
 
     double omega() const { return omega_; }
@@ -47,6 +50,15 @@ private:
     void accelAndSlope(double tau, double& a, double& da) const;
     double computeSMax() const;
     long halfPeriodIndex(double segmentStart) const; // as segmentEnd() cuts the time line
+    // Half-period k's hump where |a| > target: a point m inside it (|a(m)| > target) and
+    // |a(m)|; none when |a| stays at or below target (touching is not crossing).
+    struct Hump {
+        long k = 0;
+        double sign = 1, m = 0, peakValue = 0, envelope = 0;
+    };
+    std::optional<Hump> humpAbove(long k, double target) const;
+    // Where |a| rises (rising) or falls through target on that hump.
+    double humpRoot(const Hump& h, double target, bool rising) const;
 
     double amplitude_;
     double p_, q_; // alpha t*, beta t*

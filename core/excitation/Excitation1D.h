@@ -4,6 +4,8 @@
 // and piecewise-linear recorded motions.
 
 #include <array>
+#include <cmath>
+#include <limits>
 
 namespace kinstab {
 
@@ -45,11 +47,24 @@ public:
     virtual double boundAfter(double tau) const = 0;
     // An upper bound of |a| over [lo, hi], cheap: lets the solver skip quiet segments.
     virtual double boundOn(double lo, double hi) const = 0;
-    // +1 or -1 when a keeps that sign on [lo, hi] (within one segment) and the implementation
-    // knows it without evaluating a; 0 otherwise.
-    virtual int signOn(double /*lo*/, double /*hi*/) const { return 0; }
+    // +1 or -1 when [lo, hi] (within one segment) lies on one hump of a: a keeps that sign and
+    // |a| rises, then falls; 0 when not, or not known without evaluating a.
+    virtual int humpSign(double /*lo*/, double /*hi*/) const { return 0; }
+    // On a hump: the first time in (lo, hi) where |a| rises (rising) or falls through level > 0;
+    // NaN when there is none there. Lets a solver find only the crossing an event needs.
+    virtual double humpCrossing(double level, double lo, double hi, bool rising) const;
     // Largest |a| anywhere.
     virtual double peak() const = 0;
 };
+
+inline double Excitation1D::humpCrossing(double level, double lo, double hi, bool rising) const {
+    const int sign = humpSign(lo, hi);
+    const Crossings c = crossings(sign * level, lo, hi);
+    for (int i = 0; i < c.n; ++i) {
+        const double t = c.t[static_cast<std::size_t>(i)];
+        if ((sign * accelSlope(t) > 0.0) == rising) return t;
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+}
 
 } // namespace kinstab

@@ -70,9 +70,21 @@ private:
     // (Stick); or a(tau) at the stop decides (Decide, for a slip with no cuts yet).
     enum class AtStop { Stick, Reverse, Decide };
     Step segment(double lo, double hi);
+    Step hump(double hi, int sigma);
+    Step slipAgainst(double hi);
+    double nextOnset(double hi);
     Step cutIntoPieces(double lo, double hi);
     Step piece(double lo, double hi, int excess);
     Step slipThrough(double hi, AtStop atStop);
+    Step slipTo(double tEnd, double xEnd, double vEnd);
+    bool collapsesBy(double tEnd, double xEnd, double vEnd);
+    bool onset(double tau, int s) {
+        // The slab lags the walls, sliding against the acceleration.
+        t_ = tau;
+        s_ = s;
+        ++r_.slipIntervals;
+        return event(EventKind::SlipOnset, s_);
+    }
     void moveTo(double tau, double x, double v) {
         t_ = tau;
         x_ = x;
@@ -149,14 +161,56 @@ SlabResult ExactRun::run() {
 
 ExactRun::Step ExactRun::segment(double lo, double hi) {
     if (s_ == 0 && a_.boundOn(lo, hi) <= p_.mu) return Step::Continue; // nothing can start
-    if (s_ != 0 && a_.signOn(lo, hi) == s_) {
-        // a has the slip's sign: s v' = -mu - |a| < 0 throughout, so the first stop is found
-        // without cuts; only what follows it (an onset, or the reversed slip) needs them.
-        if (slipThrough(hi, AtStop::Decide) == Step::Done) return Step::Done;
-        if (t_ >= hi) return Step::Continue;
-        lo = t_;
+    const int sigma = a_.humpSign(lo, hi);
+    if (sigma == 0 || p_.mu <= 0.0) return cutIntoPieces(lo, hi);
+    if (s_ == 0) t_ = std::max(t_, lo); // stuck since an earlier segment: wait here
+    return hump(hi, sigma);
+}
+
+// One hump of a (sign sigma; |a| rises through mu at c1 and falls through it at c2) from t_ to
+// hi, asking only for the crossing an event needs. With s v' = -mu - s a:
+//  - sticking: the slab slides (s = -sigma) at the first time |a| > mu;
+//  - s = sigma: s v falls throughout, so the stop needs no crossing and a there decides
+//    between sticking and sliding straight back;
+//  - s = -sigma from before c1: s v falls until c1 (a stop there sticks), then slides on.
+ExactRun::Step ExactRun::hump(double hi, int sigma) {
+    while (t_ < hi) {
+        if (s_ == 0) {
+            const double tOnset = nextOnset(hi);
+            if (!std::isfinite(tOnset)) return Step::Continue; // stuck through the hump
+            if (!onset(tOnset, -sigma)) return Step::Done;
+        } else if (s_ == sigma) {
+            if (slipThrough(hi, AtStop::Decide) == Step::Done) return Step::Done;
+            if (s_ != -sigma) continue; // through to hi, or stuck: look for the next onset
+        } else {
+            const double c1 = a_.humpCrossing(p_.mu, t_, hi, true);
+            if (!std::isfinite(c1)) return slipThrough(hi, AtStop::Stick);
+            if (slipThrough(c1, AtStop::Stick) == Step::Done) return Step::Done;
+            if (s_ == 0 && !onset(c1, -sigma)) return Step::Done;
+        }
+        // Sliding against a at t_ inside [c1, c2] (just started, reversed, or carried in).
+        if (slipAgainst(hi) == Step::Done) return Step::Done;
     }
-    return cutIntoPieces(lo, hi);
+    return Step::Continue;
+}
+
+// The first time from t_ on where |a| > mu on the hump: its rising crossing, or t_ itself when
+// t_ is already past it and still above mu (a stop a rounding error away from a crossing).
+double ExactRun::nextOnset(double hi) {
+    const double c1 = a_.humpCrossing(p_.mu, t_, hi, true);
+    if (std::isfinite(c1)) return c1;
+    return excessAt(t_) != 0 ? t_ : std::numeric_limits<double>::quiet_NaN();
+}
+
+// Sliding against a from t_ in [c1, c2]: s v rises until c2, then falls, so it cannot stop
+// before hi if it is still positive there; only otherwise is c2 needed, to bracket the stop.
+ExactRun::Step ExactRun::slipAgainst(double hi) {
+    double xHi = 0.0;
+    const double vHi = velocityAndDisplacementAt(hi, xHi);
+    if (s_ * vHi > 0.0) return slipTo(hi, xHi, vHi);
+    const double c2 = a_.humpCrossing(p_.mu, t_, hi, false);
+    if (std::isfinite(c2) && slipThrough(c2, AtStop::Reverse) == Step::Done) return Step::Done;
+    return slipThrough(hi, AtStop::Stick);
 }
 
 // Cut [lo, hi] at every crossing of |a| = mu, then each piece has a fixed sign of
@@ -202,11 +256,7 @@ ExactRun::Step ExactRun::cutIntoPieces(double lo, double hi) {
 ExactRun::Step ExactRun::piece(double lo, double hi, int excess) {
     if (s_ == 0) {
         if (excess == 0) return Step::Continue;
-        // Slip onset: the slab lags the walls, sliding against the acceleration.
-        t_ = lo;
-        s_ = -excess;
-        ++r_.slipIntervals;
-        if (!event(EventKind::SlipOnset, s_)) return Step::Done;
+        if (!onset(lo, -excess)) return Step::Done;
     }
     return slipThrough(hi, excess != 0 ? AtStop::Reverse : AtStop::Stick);
 }
@@ -218,9 +268,9 @@ ExactRun::Step ExactRun::slipThrough(double hi, AtStop atStop) {
         double xHi = 0.0;
         const double vHi = velocityAndDisplacementAt(hi, xHi);
         const bool stops = s_ * vHi <= 0.0 && !(atStop == AtStop::Reverse && v_ == 0.0);
+        if (!stops) return slipTo(hi, xHi, vHi);
         // s v <= 0 already at t_ only through rounding right after a grazing onset: stop there.
-        const double tStop = !stops ? hi
-                             : (s_ * v_ <= 0.0)
+        const double tStop = (s_ * v_ <= 0.0)
                                  ? t_
                                  : rootOf(
                                        [&](double tau, double& f, double& df) {
@@ -229,26 +279,9 @@ ExactRun::Step ExactRun::slipThrough(double hi, AtStop atStop) {
                                            df = s_ * (-s_ * p_.mu - a);
                                        },
                                        t_, hi, s_ * v_, s_ * vHi, slipSlope(t_), slipSlope(hi));
-        const double xEnd = stops ? displacementAt(tStop) : xHi;
-        if (s_ * xEnd > p_.limit) {
-            // Displacement is monotone while the slip keeps its sign: one crossing of the limit.
-            const double tC = rootOf(
-                [&](double tau, double& f, double& df) {
-                    f = s_ * displacementAt(tau) - p_.limit;
-                    df = s_ * velocityAt(tau);
-                },
-                t_, tStop, s_ * x_ - p_.limit, s_ * xEnd - p_.limit, s_ * v_,
-                stops ? 0.0 : s_ * vHi);
-            moveTo(tC, s_ * p_.limit, velocityAt(tC));
-            r_.tauC = tC;
-            if (!event(EventKind::Collapse, s_)) return Step::Done;
-            return finish(Outcome::Collapsed);
-        }
-        if (!stops) {
-            moveTo(hi, xEnd, vHi);
-            return Step::Continue;
-        }
-        moveTo(tStop, xEnd, 0.0);
+        const double xStop = displacementAt(tStop);
+        if (collapsesBy(tStop, xStop, 0.0)) return Step::Done;
+        moveTo(tStop, xStop, 0.0);
         if (atStop == AtStop::Reverse || (atStop == AtStop::Decide && excessAt(tStop) != 0)) {
             // |a| > mu at the stop: no sticking, it slides back at once (NUMERICS.md §4 row 5).
             s_ = -s_;
@@ -261,6 +294,29 @@ ExactRun::Step ExactRun::slipThrough(double hi, AtStop atStop) {
         if (!event(EventKind::Stick, 0)) return Step::Done;
         return Step::Continue;
     }
+}
+
+// The slip reaches (tEnd, xEnd, vEnd) without stopping, unless it collapses on the way.
+ExactRun::Step ExactRun::slipTo(double tEnd, double xEnd, double vEnd) {
+    if (collapsesBy(tEnd, xEnd, vEnd)) return Step::Done;
+    moveTo(tEnd, xEnd, vEnd);
+    return Step::Continue;
+}
+
+// Whether the slip from t_ passes the limit by tEnd; if so, ends the run at that time. The
+// displacement is monotone while the slip keeps its sign: one crossing of the limit.
+bool ExactRun::collapsesBy(double tEnd, double xEnd, double vEnd) {
+    if (!(s_ * xEnd > p_.limit)) return false;
+    const double tC = rootOf(
+        [&](double tau, double& f, double& df) {
+            f = s_ * displacementAt(tau) - p_.limit;
+            df = s_ * velocityAt(tau);
+        },
+        t_, tEnd, s_ * x_ - p_.limit, s_ * xEnd - p_.limit, s_ * v_, s_ * vEnd);
+    moveTo(tC, s_ * p_.limit, velocityAt(tC));
+    r_.tauC = tC;
+    if (event(EventKind::Collapse, s_)) finish(Outcome::Collapsed);
+    return true;
 }
 
 } // namespace

@@ -50,7 +50,9 @@ public:
         dx = -dx;
         return dv;
     }
-    int signOn(double lo, double hi) const override { return -a_.signOn(lo, hi); }
+    // humpCrossing() is not forwarded: the mirror test then checks Excitation1D's generic one
+    // (through crossings()) against EnvelopedSine's own.
+    int humpSign(double lo, double hi) const override { return -a_.humpSign(lo, hi); }
     double segmentEnd(double s) const override { return a_.segmentEnd(s); }
     Crossings crossings(double level, double s0, double s1) const override {
         return a_.crossings(-level, s0, s1);
