@@ -121,7 +121,25 @@ double EnvelopedSine::peakGuess(long k) const {
     return lo + (0.5 * std::numbers::pi + std::atan(e1 / e / omega_)) / omega_;
 }
 
+// A solver asks for a hump's rising and then its falling crossing: remember the last hump per
+// thread. The key holds every input, so objects can never see each other's values.
 std::optional<EnvelopedSine::Hump> EnvelopedSine::humpAbove(long k, double target) const {
+    struct Memo {
+        std::array<double, 5> key{};
+        long k = -1;
+        std::optional<Hump> hump;
+    };
+    thread_local Memo memo;
+    const std::array<double, 5> key{p_, q_, omega_, scale_, target};
+    if (memo.k != k || memo.key != key) {
+        memo.hump = findHumpAbove(k, target);
+        memo.k = k;
+        memo.key = key;
+    }
+    return memo.hump;
+}
+
+std::optional<EnvelopedSine::Hump> EnvelopedSine::findHumpAbove(long k, double target) const {
     const double lo = static_cast<double>(k) * halfPeriod_;
     if (boundOn(lo, lo + halfPeriod_) <= target) return std::nullopt;
     // |a| is unimodal on the half-period, so any point above the level splits its two

@@ -57,6 +57,7 @@ private:
         double sign = 1, m = 0, peakValue = 0, envelope = 0;
     };
     std::optional<Hump> humpAbove(long k, double target) const;
+    std::optional<Hump> findHumpAbove(long k, double target) const;
     // Where |a| rises (rising) or falls through target on that hump.
     double humpRoot(const Hump& h, double target, bool rising) const;
 
