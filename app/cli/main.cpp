@@ -3,6 +3,7 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "core/numerics/VectorState.h"
 
 #include <exception>
 #include <functional>
@@ -48,6 +49,7 @@ code flags:  UBC 1976  --zone 0-4 --k-factor K [--importance I] [--site-period T
 } // namespace
 
 int main(int argc, char** argv) {
+    kinstab::clearUpperVectorState(); // see core/numerics/VectorState.h
     using namespace kinstab::cli;
     const std::map<std::string, std::function<int(const ArgList&)>> commands = {
         {"simulate", runSimulate}, {"surface", runSurface},     {"critical", runCritical},

@@ -1,5 +1,6 @@
 // kinstab: the desktop application.
 
+#include "core/numerics/VectorState.h"
 #include "ui/AutoScreenshot.h"
 #include "ui/MainWindow.h"
 
@@ -7,6 +8,7 @@
 #include <QCommandLineParser>
 
 int main(int argc, char** argv) {
+    kinstab::clearUpperVectorState();     // see core/numerics/VectorState.h
     qputenv("QSG_RHI_BACKEND", "opengl"); // required by Qt Data Visualization on Qt 6
     QApplication app(argc, argv);
     QApplication::setApplicationName("kinstab");

@@ -1,6 +1,7 @@
 #include "core/slab/ExactSolver.h"
 
 #include "core/numerics/RootFinding.h"
+#include "core/numerics/VectorState.h"
 
 #include <algorithm>
 #include <cmath>
@@ -323,6 +324,7 @@ bool ExactRun::collapsesBy(double tEnd, double xEnd, double vEnd) {
 
 SlabResult solveExact(const Excitation1D& excitation, const SlabParams& params,
                       const RunOptions& options) {
+    clearUpperVectorState(); // see VectorState.h: a host process may leave AVX state dirty
     return ExactRun(excitation, params, options).run();
 }
 

@@ -1,5 +1,7 @@
 #include "core/slab/PaperRk4Solver.h"
 
+#include "core/numerics/VectorState.h"
+
 #include <array>
 #include <cmath>
 #include <limits>
@@ -211,6 +213,7 @@ std::optional<SlabResult> PaperRun::run() {
 
 SlabResult solvePaperRk4(const Excitation1D& excitation, const SlabParams& params,
                          const PaperSettings& settings, const RunOptions& options) {
+    clearUpperVectorState(); // see VectorState.h: a host process may leave AVX state dirty
     SolverWork total;
     double h = settings.step;
     for (int failures = 0;; ++failures) {

@@ -1,6 +1,7 @@
 #include "core/slab/PlanarSolver.h"
 
 #include "core/numerics/GaussLegendre.h"
+#include "core/numerics/VectorState.h"
 
 #include "core/numerics/Dopri5.h"
 #include "core/numerics/LevelCrossings.h"
@@ -530,6 +531,7 @@ PlanarRun::Step PlanarRun::afterStop() {
 } // namespace
 
 PlanarResult solvePlanar(const SlabModel2D& model, const PlanarOptions& options) {
+    clearUpperVectorState(); // see VectorState.h: a host process may leave AVX state dirty
     const std::string e = validatePlanarParams(model.params());
     if (!e.empty()) {
         PlanarResult r;
