@@ -98,15 +98,10 @@ void ExcitationPanel::setRecord(const std::optional<RecordExcitation>& r) {
     setUsesRecord(r.has_value());
 }
 
-bool ExcitationPanel::isValid() const {
-    return InputPanel::isValid() && (!usesRecord() || m_record->isReady());
-}
-
-QStringList ExcitationPanel::problems() const {
-    QStringList out = InputPanel::problems();
-    if (usesRecord() && !m_record->isReady() && m_record->peakField()->isValid())
-        out << m_record->problem();
-    return out;
+QStringList ExcitationPanel::extraProblems() const {
+    // An invalid peak field is a tracked field, listed with the others already.
+    if (!usesRecord() || m_record->isReady() || !m_record->peakField()->isValid()) return {};
+    return {m_record->problem()};
 }
 
 void ExcitationPanel::updatePreset() {
@@ -155,7 +150,7 @@ void ExcitationPanel::setTstar(double tstar) {
 }
 
 void ExcitationPanel::updateTimes() {
-    if (!InputPanel::isValid()) {
+    if (!fieldsValid()) {
         m_times->clear();
         return;
     }

@@ -36,9 +36,10 @@ public:
     void setRecord(const std::optional<RecordExcitation>& r); // none: the sine
     void setUsesRecord(bool on);
     RecordInput* recordInput() const { return m_record; }
-    // The fields' checks and, with a record, a readable record file (these hide InputPanel's).
-    bool isValid() const;
-    QStringList problems() const;
+
+protected:
+    // With a record: a readable record file (its field shows the reason).
+    QStringList extraProblems() const override;
 
 private:
     void updateSource();

@@ -32,10 +32,14 @@ void InputPanel::track(NumberField* field, const QString& label) {
     connect(field, &NumberField::validityChanged, this, &InputPanel::changed);
 }
 
-bool InputPanel::isValid() const {
+bool InputPanel::fieldsValid() const {
     for (const auto& [field, label] : m_fields)
         if (field->isEnabled() && !field->isValid()) return false;
-    return extraProblems().isEmpty();
+    return true;
+}
+
+bool InputPanel::isValid() const {
+    return fieldsValid() && extraProblems().isEmpty();
 }
 
 QStringList InputPanel::problems() const {

@@ -18,6 +18,8 @@ public:
     explicit InputPanel(QWidget* parent = nullptr);
 
     bool isValid() const;
+    // The NumberFields alone, without extraProblems().
+    bool fieldsValid() const;
     // "Label: reason" for every invalid field, for the status bar.
     QStringList problems() const;
 
