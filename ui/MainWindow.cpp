@@ -234,6 +234,12 @@ bool MainWindow::inputsValid() const {
 }
 
 void MainWindow::updateRunState() {
+    m_surface->setNotice(
+        m_excitation->usesRecord()
+            ? tr("A record has no γc(A, f) surface: Run gives its single run (History), its "
+                 "critical peak and the verdict per code (Verdict, Excitation). Set Source to "
+                 "Enveloped sine for the surface.")
+            : QString());
     const bool running = m_runner->isRunning() || m_recordRunner->isRunning();
     m_run->setEnabled(!running && inputsValid());
     m_cancel->setEnabled(running);

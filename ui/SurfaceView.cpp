@@ -72,9 +72,15 @@ QSurface3DSeries* makeOverlay(const QColor& color) {
 
 } // namespace
 
-SurfaceView::SurfaceView(QWidget* parent) : QWidget(parent), m_legend(new QLabel(this)) {
+SurfaceView::SurfaceView(QWidget* parent)
+    : QWidget(parent), m_legend(new QLabel(this)), m_notice(new QLabel(this)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
+    m_notice->setWordWrap(true);
+    m_notice->setContentsMargins(8, 6, 8, 6);
+    m_notice->setStyleSheet(QStringLiteral("background: #fff4d6; color: #5a4300;"));
+    m_notice->hide();
+    layout->addWidget(m_notice);
     if (Q3DSurface* g = makeGraph()) {
         m_3d = std::make_unique<Graph3D>();
         m_3d->graph = g;
@@ -301,6 +307,15 @@ void SurfaceView::updateLegend() {
     for (const CodeRatio& c : m_overlays.codes)
         html += swatch(c.color, tr("%1 %2 g").arg(c.name).arg(c.ratio, 0, 'f', 3));
     m_legend->setText(html);
+}
+
+void SurfaceView::setNotice(const QString& text) {
+    m_notice->setText(text);
+    m_notice->setVisible(!text.isEmpty());
+}
+
+QString SurfaceView::notice() const {
+    return m_notice->text();
 }
 
 } // namespace kinstab::ui

@@ -34,6 +34,10 @@ public:
     QPoint selected() const { return m_selected; }
     const GammaGrid& data() const { return m_grid; }
     const SurfaceOverlays& overlays() const { return m_overlays; }
+    // A line above the graph saying why it shows nothing (e.g. a record has no (A, f) surface);
+    // empty hides it.
+    void setNotice(const QString& text);
+    QString notice() const;
 
 signals:
     void pointSelected(int ai, int fi);
@@ -46,6 +50,7 @@ private:
     std::unique_ptr<Graph3D> m_3d;
     HeatMapView* m_map = nullptr;
     QLabel* m_legend;
+    QLabel* m_notice;
     GammaGrid m_grid;
     SurfaceOverlays m_overlays;
     QPoint m_selected{-1, -1};

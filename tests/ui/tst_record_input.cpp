@@ -12,6 +12,7 @@
 #include "ui/NumberField.h"
 #include "ui/RecordInput.h"
 #include "ui/RecordPreview.h"
+#include "ui/SurfaceView.h"
 #include "ui/VerdictPanel.h"
 
 #include <QAction>
@@ -87,6 +88,10 @@ private slots:
         // The paper's building: the code ratios are far below the record's critical peak.
         QVERIFY(w->verdictPanel()->rowCount() > 0);
         QCOMPARE(w->verdictPanel()->verdictText(0), QString("overstress governs"));
+        // The surface tab says why it is empty, and stops saying so for the sine.
+        QVERIFY(w->surfaceView()->notice().contains("no γc(A, f) surface"));
+        w->excitationPanel()->findChild<QComboBox*>("excitationSource")->setCurrentIndex(0);
+        QVERIFY(w->surfaceView()->notice().isEmpty());
     }
     void cancelKeepsTheRunDropsTheSearch() {
         // A search cancelled before it starts: the single run is there, the critical scale and
