@@ -58,7 +58,11 @@ QString exportReportDialog(QWidget* parent, const Project& project, const QStrin
     const QString out = QFileDialog::getSaveFileName(parent, QObject::tr("Export design report"),
                                                      base, QObject::tr("PDF (*.pdf)"));
     if (out.isEmpty()) return {};
+    return exportReportTo(parent, project, projectPath, out);
+}
 
+QString exportReportTo(QWidget* parent, const Project& project, const QString& projectPath,
+                       const QString& out) {
     auto control = std::make_shared<SweepControl>();
     QFutureWatcher<AnalysisRun> watcher;
     QEventLoop loop;

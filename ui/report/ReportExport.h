@@ -14,5 +14,8 @@ namespace kinstab::ui::report {
 // the panels differ from that file, the title block hashes the project JSON as used instead,
 // and says so. Returns the path written, or "" when cancelled or failed (after a message box).
 QString exportReportDialog(QWidget* parent, const Project& project, const QString& projectPath);
+// The same without the file dialog: writes to out. Returns out, or "" when cancelled or failed.
+QString exportReportTo(QWidget* parent, const Project& project, const QString& projectPath,
+                       const QString& out);
 
 } // namespace kinstab::ui::report
