@@ -279,7 +279,7 @@ void MainWindow::runSweep() {
     m_progress->show();
     m_status->setText(
         job.planar
-            ? tr("Running %1 points of the planar model (10–50 ms each)…").arg(job.grid.size())
+            ? tr("Running %1 points of the planar model (2–5 ms of CPU each)…").arg(job.grid.size())
             : tr("Running %1 points…").arg(job.grid.size()));
     updateRunState();
 }

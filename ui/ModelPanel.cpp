@@ -30,7 +30,7 @@ ModelPanel::ModelPanel(QWidget* parent)
     m_model->setToolTip(
         tr("1-DOF: the slab slides across the walls only (Furgerson 1980 ch. IV).\n"
            "Planar: it slides in both horizontal directions, friction along the relative "
-           "velocity, normal force 1 + a_z (ch. VI); slower, 10–50 ms per point."));
+           "velocity, normal force 1 + a_z (ch. VI); slower, 2–5 ms of CPU per point."));
     form()->addRow(tr("&Model:"), m_model);
     buildPlanarRows();
     connect(m_model, &QComboBox::currentIndexChanged, this, [this] {

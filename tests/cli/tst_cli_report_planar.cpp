@@ -62,7 +62,7 @@ private slots:
                                                                     {"normalization", "product"},
                                                                     {"vertical", "rsn68_up"}}));
         const QString pdf = dir_.filePath("planar.pdf");
-        // A coarse figure grid: a planar point costs 10-50 ms.
+        // A coarse figure grid: a planar point costs 2-5 ms of CPU.
         const Run r = cli({"report", "--project", project, "-o", pdf, "--figure-grid", "5"});
         QVERIFY2(r.code == 0, r.err.constData());
         text_ = pdfText(pdf);
