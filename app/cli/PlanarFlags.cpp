@@ -31,14 +31,7 @@ PlanarCase planarCaseFromFlags(const Args& args, bool recordDriven) {
     for (const char* f : {"record", "floor-period", "damping"})
         if (args.has(f) && !recordDriven)
             throw UsageError(std::string("--") + f + ": not available with --model planar");
-    const Slab1DCase common = commonCaseFromFlags(args);
-    PlanarCase c;
-    c.envelope = common.envelope;
-    c.tstar = common.tstar;
-    c.scale = common.scale;
-    c.slab.mu = common.slab.mu;
-    c.slab.limit = common.slab.limit;
-    c.slab.duration = common.slab.duration;
+    PlanarCase c = planarCaseSharing(commonCaseFromFlags(args));
     c.ayRatio = args.number("ay-ratio", 0.9);
     if (c.ayRatio < 0.0 || c.ayRatio > 100.0)
         throw UsageError("--ay-ratio " + args.text("ay-ratio") +

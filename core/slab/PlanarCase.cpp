@@ -72,4 +72,15 @@ double planarNoSlipAmplitude(const PlanarCase& c) {
     return std::max(0.0, c.slab.mu * nMin / std::hypot(1.0, c.ayRatio));
 }
 
+PlanarCase planarCaseSharing(const Slab1DCase& common) {
+    PlanarCase c;
+    c.envelope = common.envelope;
+    c.tstar = common.tstar;
+    c.scale = common.scale;
+    c.slab.mu = common.slab.mu;
+    c.slab.limit = common.slab.limit;
+    c.slab.duration = common.slab.duration;
+    return c;
+}
+
 } // namespace kinstab

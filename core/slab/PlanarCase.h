@@ -6,6 +6,7 @@
 #include "core/excitation/Envelope.h"
 #include "core/excitation/Excitation1D.h"
 #include "core/slab/PlanarSolver.h"
+#include "core/slab/Slab1DCase.h"
 #include "core/sweep/Sweep.h"
 
 #include <memory>
@@ -36,6 +37,10 @@ struct PlanarCase {
 };
 
 std::string validatePlanarCase(const PlanarCase& c); // empty when fine
+
+// The planar case with what it shares with the 1-DOF one (envelope, t*, scale, mu, limit,
+// duration) taken from it; the planar inputs keep their defaults.
+PlanarCase planarCaseSharing(const Slab1DCase& common);
 
 // The model of one grid point, sharing the case's vertical motion.
 SlabModel2D planarModel(const PlanarCase& c, double ax, double fxHz);

@@ -47,13 +47,7 @@ std::shared_ptr<const Excitation1D> verticalMotion(const Accelerogram& record, d
 PlanarCase planarCaseFrom(const Slab1DCase& common, const PlanarSettings& s,
                           std::shared_ptr<const Excitation1D> vertical) {
     if (const std::string e = validatePlanarSettings(s); !e.empty()) throw InputError(e);
-    PlanarCase c;
-    c.envelope = common.envelope;
-    c.tstar = common.tstar;
-    c.scale = common.scale;
-    c.slab.mu = common.slab.mu;
-    c.slab.limit = common.slab.limit;
-    c.slab.duration = common.slab.duration;
+    PlanarCase c = planarCaseSharing(common);
     c.slab.theta = s.theta;
     c.ayRatio = s.ayRatio;
     c.fyHz = s.fyHz;
