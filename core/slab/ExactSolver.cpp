@@ -196,11 +196,16 @@ ExactRun::Step ExactRun::hump(double hi, int sigma) {
 }
 
 // The first time from t_ on where |a| > mu on the hump: its rising crossing, or t_ itself when
-// t_ is already past it and still above mu (a stop a rounding error away from a crossing).
+// t_ is already past it and still above mu (a stop a rounding error away from a crossing) with
+// the falling crossing still ahead. Where the hump only grazes mu, |a(t_)| may exceed mu by a
+// rounding error with no crossing left after t_: no onset then, or the slab would slide and stop
+// at t_ forever.
 double ExactRun::nextOnset(double hi) {
+    constexpr double none = std::numeric_limits<double>::quiet_NaN();
     const double c1 = a_.humpCrossing(p_.mu, t_, hi, true);
     if (std::isfinite(c1)) return c1;
-    return excessAt(t_) != 0 ? t_ : std::numeric_limits<double>::quiet_NaN();
+    if (excessAt(t_) == 0) return none;
+    return std::isfinite(a_.humpCrossing(p_.mu, t_, hi, false)) ? t_ : none;
 }
 
 // Sliding against a from t_ in [c1, c2]: s v rises until c2, then falls, so it cannot stop

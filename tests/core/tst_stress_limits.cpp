@@ -99,6 +99,24 @@ private slots:
         QCOMPARE(r.residualDelta, 0.0);
     }
 
+    // A peak that touches mu (A = mu, the grid's first row) over many frequencies: the hump's
+    // crossings coincide within rounding, and |a| may exceed mu by an ulp where no crossing is
+    // left. No slip of any size, and no slide-and-stop loop at one instant (at f = 11.5 Hz that
+    // once ran into the 2,000,000-event guard).
+    void touchingPeakAcrossFrequencies() {
+        int rows = 0;
+        for (double f = 10.0; f <= 30.0 + 1e-9; f += 0.1, ++rows) {
+            const EnvelopedSine a = moderate(0.6, f);
+            SlabParams p;
+            p.mu = 0.6;
+            const SlabResult r = solveExact(a, p);
+            QVERIFY2(r.outcome == Outcome::Stable, qPrintable(QString::number(f)));
+            QCOMPARE_LE(r.work.events, 8);
+            QCOMPARE_LE(r.maxAbsDelta, 1e-12);
+        }
+        QCOMPARE(rows, 201);
+    }
+
     // Grazing onset (NUMERICS.md §4 row 3, [derived, numerically verified]): where
     // |a| - mu = d - k (t - t_m)^2 near the peak, the slip lasts 3 sqrt(d/k) and leaves
     // (9/4) d^2 / k. The relative error of that asymptote is O(sqrt(d)) (NUMERICS: 4.4e-3 at
