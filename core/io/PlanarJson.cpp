@@ -1,12 +1,15 @@
 #include "core/io/PlanarJson.h"
 
+#include "core/io/MotionJson.h"
+
 namespace kinstab {
 
 using nlohmann::json;
 
-json planarSettingsToJson(const PlanarSettings& s) {
-    const json vertical = s.vertical == VerticalSource::File ? json{{"file", s.verticalPath}}
-                                                             : json(verticalSourceName(s.vertical));
+json planarSettingsToJson(const PlanarSettings& s, const std::string& baseDir) {
+    const json vertical = s.vertical == VerticalSource::File
+                              ? json{{"file", pathForProject(s.verticalPath, baseDir)}}
+                              : json(verticalSourceName(s.vertical));
     return {{"fy_hz", s.fyHz},
             {"ay_ratio", s.ayRatio},
             {"theta", s.theta},
@@ -15,7 +18,7 @@ json planarSettingsToJson(const PlanarSettings& s) {
 }
 
 namespace {
-void verticalFrom(const JsonReader& r, PlanarSettings& s) {
+void verticalFrom(const JsonReader& r, PlanarSettings& s, const std::string& baseDir) {
     if (!r.has("vertical")) return;
     const json& v = r.raw("vertical");
     if (v.is_object()) {
@@ -23,6 +26,7 @@ void verticalFrom(const JsonReader& r, PlanarSettings& s) {
         s.vertical = VerticalSource::File;
         s.verticalPath = o.text("file", "");
         if (s.verticalPath.empty()) o.fail("file", "'': name the vertical record file");
+        s.verticalPath = pathFromProject(s.verticalPath, baseDir);
         return;
     }
     if (!v.is_string()) r.fail("vertical", "expected \"none\", \"rsn68_up\" or {\"file\": PATH}");
@@ -34,7 +38,7 @@ void verticalFrom(const JsonReader& r, PlanarSettings& s) {
 }
 } // namespace
 
-PlanarSettings planarSettingsFromJson(const JsonReader& r) {
+PlanarSettings planarSettingsFromJson(const JsonReader& r, const std::string& baseDir) {
     PlanarSettings s;
     s.fyHz = r.number("fy_hz", s.fyHz);
     s.ayRatio = r.number("ay_ratio", s.ayRatio);
@@ -43,7 +47,7 @@ PlanarSettings planarSettingsFromJson(const JsonReader& r) {
     const auto n = normalizationFromName(norm);
     if (!n) r.fail("normalization", "'" + norm + "' must be product or envelope");
     s.normalization = *n;
-    verticalFrom(r, s);
+    verticalFrom(r, s, baseDir);
     if (const std::string e = validatePlanarSettings(s); !e.empty()) throw JsonFieldError(e);
     return s;
 }

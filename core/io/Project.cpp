@@ -155,7 +155,7 @@ json projectToJson(const Project& p, const std::string& baseDir) {
             {"slab", slabToJson(p)},
             {"grid", {{"amplitudes", p.grid.amplitudes}, {"frequencies", p.grid.frequencies}}},
             {"model", p.model},
-            {"planar", planarSettingsToJson(p.planar)},
+            {"planar", planarSettingsToJson(p.planar, baseDir)},
             {"check", checkToJson(p.critical)},
             {"excitation", excitationToJson(p.record, baseDir)}};
 }
@@ -176,7 +176,7 @@ Project projectFromJson(const json& j, const std::string& baseDir) {
         }
         p.model = r.text("model", "slab1d");
         // Projects written before the planar model have no "planar" key: defaults.
-        if (auto pl = r.optionalObject("planar")) p.planar = planarSettingsFromJson(*pl);
+        if (auto pl = r.optionalObject("planar")) p.planar = planarSettingsFromJson(*pl, baseDir);
         if (auto c = r.optionalObject("check")) p.critical = checkFrom(*c);
         p.record = excitationFromJson(r, baseDir);
         if (const std::string e = validateProject(p); !e.empty()) throw ProjectError(e);

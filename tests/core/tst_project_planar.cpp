@@ -3,7 +3,11 @@
 
 #include "core/io/Project.h"
 
+#include <QDir>
+#include <QTemporaryDir>
 #include <QtTest>
+
+#include <fstream>
 
 using namespace kinstab;
 using nlohmann::json;
@@ -55,6 +59,24 @@ private slots:
         QCOMPARE(q.model, std::string("planar"));
         QVERIFY(q.planar == p.planar);
         QCOMPARE(q.planar.verticalPath, p.planar.verticalPath);
+    }
+
+    // A vertical record file beside the project moves with it: stored relative to the project's
+    // directory, resolved against it on load (as the excitation's record is).
+    void verticalFileRelativeToProject() {
+        QTemporaryDir tmp;
+        const std::string dir = tmp.path().toStdString();
+        Project p = paperExampleProject();
+        p.model = "planar";
+        p.planar.vertical = VerticalSource::File;
+        p.planar.verticalPath = dir + "/records/UP.AT2";
+        const std::string path = dir + "/projects/p.json";
+        QVERIFY(QDir().mkpath(QString::fromStdString(dir + "/projects")));
+        saveProject(p, path);
+        std::ifstream in(path);
+        QCOMPARE(json::parse(in)["planar"]["vertical"]["file"].get<std::string>(),
+                 std::string("../records/UP.AT2"));
+        QCOMPARE(loadProject(path).planar.verticalPath, p.planar.verticalPath);
     }
 
     // A project written before the planar model: model slab1d and the default settings
