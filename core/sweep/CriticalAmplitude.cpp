@@ -21,7 +21,9 @@ CriticalResult criticalAmplitude(const PointFunction& point, double frequencyHz,
     const double base = lo;
     double hi = lo;
     bool found = false;
-    const long steps = static_cast<long>(std::ceil((search.to - base) / search.scanStep));
+    // A limit on the scan grid within rounding ((0.65 - 0.6) / 0.01 = 5.000000000000004) is its
+    // last point, not one more step that the clamp below would only repeat.
+    const long steps = static_cast<long>(std::ceil((search.to - base) / search.scanStep - 1e-9));
     for (long k = 1; k <= steps; ++k) {
         hi = std::min(search.to, base + static_cast<double>(k) * search.scanStep);
         if (collapses(hi)) {
