@@ -1,5 +1,7 @@
 #include "ui/CriticalChart.h"
 
+#include "ui/DockedChart.h"
+
 #include <QLineSeries>
 #include <QValueAxis>
 
@@ -22,14 +24,11 @@ CriticalChart::CriticalChart(QWidget* parent)
     c->addAxis(m_y, Qt::AlignLeft);
     m_curve->attachAxis(m_x);
     m_curve->attachAxis(m_y);
-    c->legend()->setAlignment(Qt::AlignBottom);
     QFont small = c->legend()->font();
     small.setPointSizeF(small.pointSizeF() * 0.85);
     c->legend()->setFont(small);
-    c->setTitle(tr("Critical amplitude A_crit(f) and the code ratios"));
-    setChart(c);
-    setRenderHint(QPainter::Antialiasing);
-    setMinimumSize(240, 160);
+    installDockedChart(this, c, tr("Critical amplitude A_crit(f) and the code ratios"),
+                       Qt::AlignBottom);
 }
 
 void CriticalChart::setData(const SurfaceOverlays& o, double fMin, double fMax) {

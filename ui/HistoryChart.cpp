@@ -1,7 +1,8 @@
 #include "ui/HistoryChart.h"
 
+#include "ui/DockedChart.h"
+
 #include <QAreaSeries>
-#include <QLegendMarker>
 #include <QLineSeries>
 #include <QValueAxis>
 
@@ -52,15 +53,8 @@ HistoryChart::HistoryChart(QWidget* parent)
         s->attachAxis(m_x);
         s->attachAxis(m_yAccel);
     }
-    c->legend()->setAlignment(Qt::AlignTop);
-    // Series without a name (the lower envelope and -μ) stay out of the legend.
-    for (QLineSeries* s : {m_envDown, m_muDown})
-        for (auto* marker : c->legend()->markers(s))
-            marker->setVisible(false);
-    c->setTitle(tr("History of a picked point — click the surface"));
-    setChart(c);
-    setRenderHint(QPainter::Antialiasing);
-    setMinimumSize(240, 160);
+    installDockedChart(this, c, tr("History of a picked point — click the surface"));
+    hideFromLegend(c, {m_envDown, m_muDown}); // the lower envelope and -μ have no name
 }
 
 int HistoryChart::sampleCount() const {

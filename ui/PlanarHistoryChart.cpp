@@ -1,6 +1,7 @@
 #include "ui/PlanarHistoryChart.h"
 
-#include <QLegendMarker>
+#include "ui/DockedChart.h"
+
 #include <QLineSeries>
 #include <QValueAxis>
 
@@ -53,13 +54,8 @@ PlanarHistoryChart::PlanarHistoryChart(QWidget* parent)
     }
     m_dy->attachAxis(m_x);
     m_dy->attachAxis(m_yy);
-    c->legend()->setAlignment(Qt::AlignTop);
-    for (auto* marker : c->legend()->markers(m_limitDown))
-        marker->setVisible(false);
-    c->setTitle(tr("Planar history of a picked point — click the surface"));
-    setChart(c);
-    setRenderHint(QPainter::Antialiasing);
-    setMinimumSize(240, 160);
+    installDockedChart(this, c, tr("Planar history of a picked point — click the surface"));
+    hideFromLegend(c, {m_limitDown});
 }
 
 int PlanarHistoryChart::sampleCount() const {

@@ -1,5 +1,7 @@
 #include "ui/SliceChart.h"
 
+#include "ui/DockedChart.h"
+
 #include <QLineSeries>
 #include <QScatterSeries>
 #include <QValueAxis>
@@ -33,11 +35,7 @@ SliceChart::SliceChart(QWidget* parent)
     m_gamma->attachAxis(m_yGamma);
     m_tau->attachAxis(m_x);
     m_tau->attachAxis(m_yTau);
-    c->legend()->setAlignment(Qt::AlignTop);
-    c->setTitle(tr("γc and τc against A — select a point on the surface"));
-    setChart(c);
-    setRenderHint(QPainter::Antialiasing);
-    setMinimumSize(240, 160);
+    installDockedChart(this, c, tr("γc and τc against A — select a point on the surface"));
 }
 
 void SliceChart::setSlice(double f, const std::vector<double>& amplitudes,

@@ -1,0 +1,16 @@
+#pragma once
+// The frame the docked charts share (slice, histories, A_crit(f)): legend on one side, a title,
+// antialiasing, and a small minimum size so that their docks can shrink.
+
+#include <QChartView>
+
+#include <initializer_list>
+
+namespace kinstab::ui {
+
+void installDockedChart(QChartView* view, QChart* chart, const QString& title,
+                        Qt::Alignment legendSide = Qt::AlignTop);
+// Keeps series out of the legend (the unnamed second half of a ± pair).
+void hideFromLegend(QChart* chart, std::initializer_list<QAbstractSeries*> series);
+
+} // namespace kinstab::ui
