@@ -13,6 +13,13 @@ void installDockedChart(QChartView* view, QChart* chart, const QString& title,
     view->setMinimumSize(240, 160);
 }
 
+QLineSeries* chartLine(const QString& name, const QColor& color, qreal width, Qt::PenStyle style) {
+    auto* s = new QLineSeries;
+    s->setName(name);
+    s->setPen(QPen(color, width, style));
+    return s;
+}
+
 void hideFromLegend(QChart* chart, std::initializer_list<QAbstractSeries*> series) {
     for (QAbstractSeries* s : series)
         for (QLegendMarker* marker : chart->legend()->markers(s))

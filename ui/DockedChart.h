@@ -3,6 +3,7 @@
 // antialiasing, and a small minimum size so that their docks can shrink.
 
 #include <QChartView>
+#include <QLineSeries>
 
 #include <initializer_list>
 
@@ -10,6 +11,9 @@ namespace kinstab::ui {
 
 void installDockedChart(QChartView* view, QChart* chart, const QString& title,
                         Qt::Alignment legendSide = Qt::AlignTop);
+// A line series with its legend name and pen.
+QLineSeries* chartLine(const QString& name, const QColor& color, qreal width,
+                       Qt::PenStyle style = Qt::SolidLine);
 // Keeps series out of the legend (the unnamed second half of a ± pair).
 void hideFromLegend(QChart* chart, std::initializer_list<QAbstractSeries*> series);
 

@@ -11,25 +11,16 @@
 
 namespace kinstab::ui {
 
-namespace {
-QLineSeries* line(const QString& name, const QColor& color, qreal width,
-                  Qt::PenStyle style = Qt::SolidLine) {
-    auto* s = new QLineSeries;
-    s->setName(name);
-    s->setPen(QPen(color, width, style));
-    return s;
-}
-} // namespace
-
 HistoryChart::HistoryChart(QWidget* parent)
-    : QChartView(parent), m_delta(line(tr("δ / (d/2)"), QColor(20, 20, 20), 2)),
-      m_accel(line(tr("a (g)"), QColor(70, 130, 200), 1)),
-      m_envUp(line(tr("envelope"), QColor(230, 120, 30), 1.5)),
-      m_envDown(line(QString(), QColor(230, 120, 30), 1.5)),
-      m_muUp(line(tr("±μ"), QColor(120, 120, 120), 1, Qt::DashLine)),
-      m_muDown(line(QString(), QColor(120, 120, 120), 1, Qt::DashLine)), m_slipTop(new QLineSeries),
-      m_slipBase(new QLineSeries), m_slip(new QAreaSeries(m_slipTop, m_slipBase)),
-      m_x(new QValueAxis), m_yDelta(new QValueAxis), m_yAccel(new QValueAxis) {
+    : QChartView(parent), m_delta(chartLine(tr("δ / (d/2)"), QColor(20, 20, 20), 2)),
+      m_accel(chartLine(tr("a (g)"), QColor(70, 130, 200), 1)),
+      m_envUp(chartLine(tr("envelope"), QColor(230, 120, 30), 1.5)),
+      m_envDown(chartLine(QString(), QColor(230, 120, 30), 1.5)),
+      m_muUp(chartLine(tr("±μ"), QColor(120, 120, 120), 1, Qt::DashLine)),
+      m_muDown(chartLine(QString(), QColor(120, 120, 120), 1, Qt::DashLine)),
+      m_slipTop(new QLineSeries), m_slipBase(new QLineSeries),
+      m_slip(new QAreaSeries(m_slipTop, m_slipBase)), m_x(new QValueAxis), m_yDelta(new QValueAxis),
+      m_yAccel(new QValueAxis) {
     auto* c = new QChart;
     c->setAnimationOptions(QChart::NoAnimation);
     c->setMargins(QMargins(4, 4, 4, 4));

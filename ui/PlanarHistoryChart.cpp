@@ -11,14 +11,6 @@
 namespace kinstab::ui {
 
 namespace {
-QLineSeries* line(const QString& name, const QColor& color, qreal width,
-                  Qt::PenStyle style = Qt::SolidLine) {
-    auto* s = new QLineSeries;
-    s->setName(name);
-    s->setPen(QPen(color, width, style));
-    return s;
-}
-
 QString outcomeText(const PlanarPointRun& run) {
     const PlanarResult& r = run.result;
     if (r.slab.outcome != Outcome::Collapsed)
@@ -31,10 +23,10 @@ QString outcomeText(const PlanarPointRun& run) {
 } // namespace
 
 PlanarHistoryChart::PlanarHistoryChart(QWidget* parent)
-    : QChartView(parent), m_dx(line(tr("δx / (d/2), across"), QColor(20, 20, 20), 2)),
-      m_dy(line(tr("δy / (d/2), along"), QColor(40, 120, 200), 1.5)),
-      m_limitUp(line(tr("±limit (across)"), QColor(200, 40, 40), 1, Qt::DashLine)),
-      m_limitDown(line(QString(), QColor(200, 40, 40), 1, Qt::DashLine)), m_x(new QValueAxis),
+    : QChartView(parent), m_dx(chartLine(tr("δx / (d/2), across"), QColor(20, 20, 20), 2)),
+      m_dy(chartLine(tr("δy / (d/2), along"), QColor(40, 120, 200), 1.5)),
+      m_limitUp(chartLine(tr("±limit (across)"), QColor(200, 40, 40), 1, Qt::DashLine)),
+      m_limitDown(chartLine(QString(), QColor(200, 40, 40), 1, Qt::DashLine)), m_x(new QValueAxis),
       m_yx(new QValueAxis), m_yy(new QValueAxis) {
     auto* c = new QChart;
     c->setAnimationOptions(QChart::NoAnimation);

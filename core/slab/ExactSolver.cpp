@@ -24,16 +24,20 @@ private:
 
     // Slip state relative to (t_, x_, v_) with slip sign s_.
     // With accelAtTau, also a(tau), from the same closed-form evaluation.
+    // The slip state at tau from the base motion's changes dv, dx since t_.
+    double slipVelocity(double tau, double dv) const { return v_ - s_ * p_.mu * (tau - t_) - dv; }
+    double slipDisplacement(double tau, double dx) const {
+        const double h = tau - t_;
+        return x_ + v_ * h - 0.5 * s_ * p_.mu * h * h - dx;
+    }
     double velocityAt(double tau, double* accelAtTau = nullptr) {
         ++r_.work.accelEvaluations;
-        const double dv = accelAtTau ? a_.velocityChangeAndAccel(t_, tau, *accelAtTau)
-                                     : a_.velocityChange(t_, tau);
-        return v_ - s_ * p_.mu * (tau - t_) - dv;
+        return slipVelocity(tau, accelAtTau ? a_.velocityChangeAndAccel(t_, tau, *accelAtTau)
+                                            : a_.velocityChange(t_, tau));
     }
     double displacementAt(double tau) {
         ++r_.work.accelEvaluations;
-        const double h = tau - t_;
-        return x_ + v_ * h - 0.5 * s_ * p_.mu * h * h - a_.displacementChange(t_, tau);
+        return slipDisplacement(tau, a_.displacementChange(t_, tau));
     }
     // d(s v)/dtau = -mu - s a(tau) while slipping with sign s.
     double slipSlope(double tau) {
@@ -43,11 +47,10 @@ private:
     // velocityAt(tau), with displacementAt(tau) in x, from one closed-form evaluation.
     double velocityAndDisplacementAt(double tau, double& x) {
         ++r_.work.accelEvaluations;
-        const double h = tau - t_;
         double dx = 0.0;
         const double dv = a_.velocityAndDisplacementChange(t_, tau, dx);
-        x = x_ + v_ * h - 0.5 * s_ * p_.mu * h * h - dx;
-        return v_ - s_ * p_.mu * h - dv;
+        x = slipDisplacement(tau, dx);
+        return slipVelocity(tau, dv);
     }
     struct Cut {
         double tau = 0;

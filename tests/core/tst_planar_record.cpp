@@ -9,21 +9,15 @@
 #include "core/slab/PlanarRecordCase.h"
 #include "core/slab/RecordRun.h"
 
+#include "RecordMotions.h"
+
 #include <QtTest>
 
 #include <cmath>
 
 using namespace kinstab;
 
-namespace {
-const std::string kRecords = KINSTAB_SOURCE_DIR "/resources/records/";
-
-Accelerogram motionOf(const std::string& file, double floorPeriod) {
-    const Accelerogram ground = readRecord(kRecords + file);
-    if (floorPeriod <= 0.0) return ground;
-    return floorMotion(ground, FloorFilterParams{floorPeriod, 0.02, std::nullopt});
-}
-} // namespace
+using testing::motionOf;
 
 class TestPlanarRecord : public QObject {
     Q_OBJECT

@@ -11,6 +11,8 @@
 #include "core/slab/RecordRun.h"
 #include "core/sweep/CriticalRecordScale.h"
 
+#include "RecordMotions.h"
+
 #include <QtTest>
 
 #include <cmath>
@@ -19,13 +21,7 @@ using namespace kinstab;
 
 namespace {
 
-const std::string kRecords = KINSTAB_SOURCE_DIR "/resources/records/";
-
-Accelerogram motionOf(const std::string& file, double floorPeriod) {
-    const Accelerogram ground = readRecord(kRecords + file);
-    if (floorPeriod <= 0.0) return ground;
-    return floorMotion(ground, FloorFilterParams{floorPeriod, 0.02, std::nullopt});
-}
+using testing::motionOf;
 
 bool collapsesAt(const Accelerogram& m, const Slab1DCase& c, double peak) {
     return solveExact(RecordedMotion(m, c.tstar, peak), c.slab).outcome == Outcome::Collapsed;

@@ -2,6 +2,7 @@
 // Run, a cancelled sweep keeps its points, a finished sweep shows exactly what runSweep (and
 // kinstab-cli surface) computes, and picking a point shows that point's history.
 
+#include "WindowFields.h"
 #include "core/io/Project.h"
 #include "core/sweep/Sweep.h"
 #include "ui/BuildingPanel.h"
@@ -45,11 +46,7 @@ class TestMainWindow : public QObject {
     Q_OBJECT
 private:
     std::unique_ptr<MainWindow> w;
-    NumberField* field(const char* name) {
-        auto* f = w->findChild<NumberField*>(QString::fromLatin1(name));
-        if (!f) qFatal("no field %s", name);
-        return f;
-    }
+    NumberField* field(const char* name) { return testing::namedField(w.get(), name); }
     void setText(const char* name, const QString& text) {
         QLineEdit* e = field(name)->lineEdit();
         e->selectAll();

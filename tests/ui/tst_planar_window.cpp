@@ -4,6 +4,7 @@
 // source tree rather than the Qt resource); its A_crit and verdict come from the planar model;
 // picking shows the planar history; the project keeps the settings; a cancel stops the sweep.
 
+#include "WindowFields.h"
 #include "core/io/Project.h"
 #include "core/io/RecordReader.h"
 #include "core/sweep/CriticalAmplitude.h"
@@ -35,11 +36,7 @@ class TestPlanarWindow : public QObject {
     Q_OBJECT
 private:
     std::unique_ptr<MainWindow> w;
-    NumberField* field(const char* name) {
-        auto* f = w->findChild<NumberField*>(QString::fromLatin1(name));
-        if (!f) qFatal("no field %s", name);
-        return f;
-    }
+    NumberField* field(const char* name) { return testing::namedField(w.get(), name); }
     QComboBox* modelCombo() {
         return w->modelPanel()->findChild<QComboBox*>(QStringLiteral("model"));
     }
