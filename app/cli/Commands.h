@@ -19,6 +19,7 @@ int runCheck(const ArgList& args);
 int runReport(const ArgList& args);
 int runRecord(const ArgList& args);
 int runFriction(const ArgList& args);
+int runFloors(const ArgList& args);
 
 class Args;
 // simulate --record FILE (SimulateRecord.cpp), called by runSimulate.

@@ -27,6 +27,8 @@ commands:
   friction  --data FILE.csv [--bearing-area IN2] [--alpha 0|2] [--beta best|0|1/3] [--max-cp PSI]
             [--outlier-alpha A] [--outlier-min-runs N] [--keep-outliers] [-o FILE]
   report    --project FILE -o FILE.pdf [--page a4|letter] [--figure-grid N]
+  floors    --project FILE [--record FILE] [--stiffness uniform|weight] [--damping Z]
+            [--slab-level N] [--history-csv FILE] [--no-critical]
 
 LIST: comma-separated numbers or start:stop:step.
 model flags: --model slab1d --envelope fast|moderate|slow | --alpha X --beta Y
@@ -55,7 +57,7 @@ int main(int argc, char** argv) {
         {"simulate", runSimulate}, {"surface", runSurface},     {"critical", runCritical},
         {"bench", runBench},       {"precision", runPrecision}, {"record", runRecord},
         {"codes", runCodes},       {"check", runCheck},         {"friction", runFriction},
-        {"report", runReport},
+        {"report", runReport},     {"floors", runFloors},
     };
     if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
         std::cout << kUsage;

@@ -2,6 +2,7 @@
 
 #include "core/io/AtomicFile.h"
 #include "core/io/CodesJson.h"
+#include "core/io/FloorsJson.h"
 #include "core/io/JsonReader.h"
 #include "core/io/MotionJson.h"
 #include "core/io/PlanarJson.h"
@@ -48,6 +49,7 @@ std::string validateProject(const Project& p) {
     if (e.empty()) e = validateCriticalSearch(p.critical);
     if (e.empty()) e = validatePlanarSettings(p.planar);
     if (e.empty() && p.record) e = validateRecordExcitation(*p.record);
+    if (e.empty() && p.floors) e = validateFloorSettings(*p.floors, p.building.stories);
     return e;
 }
 
@@ -157,7 +159,8 @@ json projectToJson(const Project& p, const std::string& baseDir) {
             {"model", p.model},
             {"planar", planarSettingsToJson(p.planar, baseDir)},
             {"check", checkToJson(p.critical)},
-            {"excitation", excitationToJson(p.record, baseDir)}};
+            {"excitation", excitationToJson(p.record, baseDir)},
+            {"floors", p.floors ? floorSettingsToJson(*p.floors) : json()}};
 }
 
 Project projectFromJson(const json& j, const std::string& baseDir) {
@@ -179,6 +182,7 @@ Project projectFromJson(const json& j, const std::string& baseDir) {
         if (auto pl = r.optionalObject("planar")) p.planar = planarSettingsFromJson(*pl, baseDir);
         if (auto c = r.optionalObject("check")) p.critical = checkFrom(*c);
         p.record = excitationFromJson(r, baseDir);
+        if (auto f = r.optionalObject("floors")) p.floors = floorSettingsFromJson(*f);
         if (const std::string e = validateProject(p); !e.empty()) throw ProjectError(e);
         if (p.record) checkRecordFile(*p.record);
         return p;

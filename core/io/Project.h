@@ -5,6 +5,7 @@
 // the bad one ("building.height = -3: must be > 0 ..."); a truncated or corrupt file is a
 // ProjectError, never a crash. Saving is atomic (temporary file renamed into place).
 
+#include "core/building/FloorSettings.h"
 #include "core/codes/Building.h"
 #include "core/codes/CodeSet.h"
 #include "core/excitation/RecordExcitation.h"
@@ -40,6 +41,7 @@ struct Project {
     PlanarSettings planar;                  // the planar model's own inputs (core/io/PlanarJson.h)
     CriticalSearch critical;                // A_crit search of the design check
     std::optional<RecordExcitation> record; // a record drives the slab; none: the enveloped sine
+    std::optional<FloorSettings> floors;    // the floor-motion check; present: the report shows it
 };
 
 // The paper's 16-story building (chapter V) with the paper's slab, envelope and grid.

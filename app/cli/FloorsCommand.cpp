@@ -1,0 +1,91 @@
+// kinstab-cli floors: the building's own floor motions under a ground record (shear-building
+// model, all modes), the codes' floor-acceleration demands per level, the critical PGA at which
+// the slab on each level falls and the verdicts at the slab's level
+// (core/building/FloorAnalysis.h).
+
+#include "app/cli/Args.h"
+#include "app/cli/BuildingFlags.h"
+#include "app/cli/Commands.h"
+#include "app/cli/RecordFlags.h"
+#include "core/building/FloorAnalysis.h"
+#include "core/io/FloorsJson.h"
+#include "core/io/Project.h"
+
+#include <chrono>
+#include <iostream>
+
+namespace kinstab::cli {
+
+namespace {
+
+Accelerogram groundFrom(const Args& args, const Project& p) {
+    if (args.has("record")) return readRecordFromFlag(args, "record");
+    if (!p.record)
+        throw UsageError("--record: missing, and the project (--project " + args.text("project") +
+                         ") has no excitation.record");
+    try {
+        return readGroundRecord(*p.record); // its floor filter is the model's business here
+    } catch (const RecordError& e) {
+        throw UsageError("excitation.record.file = '" + p.record->file + "': " + e.what());
+    }
+}
+
+FloorSettings settingsFrom(const Args& args, const Project& p) {
+    FloorSettings s = p.floors.value_or(FloorSettings{});
+    if (args.has("stiffness"))
+        s.stiffness = *stiffnessFromName(args.choice("stiffness", {"uniform", "weight"}, ""));
+    if (args.has("damping")) {
+        s.damping = args.number("damping", s.damping);
+        if (!(s.damping >= 0.0 && s.damping < 1.0))
+            throw UsageError("--damping " + args.text("damping") +
+                             ": must be at least 0 and below 1");
+    }
+    if (args.has("slab-level")) {
+        s.slabLevel = args.integer("slab-level", 0);
+        if (*s.slabLevel < 1 || *s.slabLevel > p.building.stories)
+            throw UsageError("--slab-level " + args.text("slab-level") +
+                             ": must be between 1 and " + std::to_string(p.building.stories) +
+                             " (the roof)");
+    }
+    return s;
+}
+
+} // namespace
+
+int runFloors(const ArgList& argv) {
+    std::set<std::string> flags = recordReadFlagNames();
+    flags.insert({"project", "record", "stiffness", "damping", "slab-level", "history-csv"});
+    const Args args(argv, flags, {"no-critical"});
+    if (!args.has("project")) throw UsageError("missing required flag --project");
+    const Project p = projectFromFlag(args);
+    FloorAnalysisInput in;
+    in.building = p.building;
+    in.codes = p.codes;
+    in.settings = settingsFrom(args, p);
+    in.slab = p.slab;
+    in.search = p.critical;
+    in.ground = groundFrom(args, p);
+    in.critical = !args.has("no-critical");
+    const auto start = std::chrono::steady_clock::now();
+    FloorAnalysis a;
+    try {
+        a = analyseFloors(in);
+    } catch (const InputError& e) {
+        throw inputUsageError(e);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+    nlohmann::json j = floorAnalysisJson(a, p.building);
+    j["project"] = p.name;
+    j["record"] = accelerogramJson(in.ground);
+    j["stiffness"] = stiffnessName(in.settings.stiffness);
+    j["damping"] = in.settings.damping;
+    j["wall_time_s"] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (args.has("history-csv"))
+        writeOutput(args.text("history-csv"), floorHistoryCsv(a, in.ground));
+    std::cout << j.dump(2) << "\n";
+    return 0;
+}
+
+} // namespace kinstab::cli
