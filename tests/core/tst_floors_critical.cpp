@@ -5,6 +5,7 @@
 // Also: the analysis ties the verdicts to the slab's level.
 
 #include "core/building/FloorAnalysis.h"
+#include "core/io/Project.h"
 #include "core/io/RecordReader.h"
 #include "core/slab/RecordRun.h"
 
@@ -39,6 +40,7 @@ private slots:
     void searchMatchesBruteForceScan();
     void analysisVerdictsAtTheSlabLevel();
     void badInputNamesTheField();
+    void projectSettingsRoundTrip();
 };
 
 void TestFloorsCritical::searchMatchesBruteForceScan() {
@@ -111,6 +113,36 @@ void TestFloorsCritical::badInputNamesTheField() {
     in.ground.samples.assign(in.ground.size(), 0.0);
     QVERIFY(validateFloorAnalysis(in).find("record: all samples are zero") != std::string::npos);
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, analyseFloors(in));
+}
+
+void TestFloorsCritical::projectSettingsRoundTrip() {
+    Project p = paperExampleProject();
+    QVERIFY(projectToJson(p)["floors"].is_null()); // absent stays absent
+    QVERIFY(!projectFromJson(projectToJson(p)).floors);
+    p.floors = FloorSettings{7, StiffnessProfile::Weight, 0.03, 2.0, 0.2};
+    const Project back = projectFromJson(projectToJson(p));
+    QVERIFY(back.floors);
+    QCOMPARE(*back.floors->slabLevel, 7);
+    QCOMPARE(back.floors->stiffness, StiffnessProfile::Weight);
+    QCOMPARE(back.floors->damping, 0.03);
+    QCOMPARE(back.floors->omega0, 2.0);
+    QCOMPARE(*back.floors->ec8ElementPeriod, 0.2);
+    nlohmann::json j = projectToJson(p);
+    j["floors"]["stiffness"] = "soft";
+    try {
+        projectFromJson(j);
+        QFAIL("stiffness 'soft' was accepted");
+    } catch (const ProjectError& e) {
+        QVERIFY(QString(e.what()).contains("floors.stiffness"));
+    }
+    j["floors"]["stiffness"] = "uniform";
+    j["floors"]["slab_level"] = 20;
+    try {
+        projectFromJson(j);
+        QFAIL("slab level 20 of 16 was accepted");
+    } catch (const ProjectError& e) {
+        QVERIFY(QString(e.what()).contains("floors.slab_level = 20"));
+    }
 }
 
 QTEST_APPLESS_MAIN(TestFloorsCritical)
