@@ -1,5 +1,6 @@
 #include "ui/MainWindow.h"
 
+#include "ui/FloorsView.h"
 #include "ui/FrictionPanel.h"
 #include "ui/NumericsView.h"
 #include "ui/RecordsTab.h"
@@ -94,6 +95,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_centre->addTab(m_numerics, tr("Numerics"));
     m_friction = new FrictionPanel;
     m_centre->addTab(m_friction, tr("Friction"));
+    m_centre->addTab(new FloorsView([this] { return project(); }), tr("Floors"));
     setCentralWidget(m_centre);
     buildActions();
     buildDocks();
