@@ -6,7 +6,9 @@
 //    0.70421 g, EN 1998-1 rigid 0.71875 g);
 //  - per level, critical PGA = critical floor peak x PGA / PFA (the building is linear);
 //  - the example project with its "floors" settings; the history CSV under a German locale;
-//  - bad input: exit 2 with the flag and the value named.
+//  - bad input: exit 2 with the flag and the value named;
+//  - the report of the example project has the floor-motion section (read with pdftotext),
+//    the report of the plain paper project has none.
 
 #include "CliRun.h"
 
@@ -39,6 +41,7 @@ private slots:
     void exampleProjectAndHistoryCsv();
     void badInput_data();
     void badInput();
+    void reportHasTheSection();
 };
 
 void TestCliFloors::paperBuildingUnderPacoima() {
@@ -124,6 +127,20 @@ void TestCliFloors::badInput() {
     const Run r = cli(args);
     QCOMPARE(r.code, 2);
     QVERIFY2(QString(r.err).contains(message), r.err.constData());
+}
+
+void TestCliFloors::reportHasTheSection() {
+    QVERIFY2(run("pdftotext", {"-v"}).code == 0, "pdftotext missing: apt install poppler-utils");
+    QTemporaryDir dir;
+    const QString pdf = dir.filePath("floors.pdf"), plain = dir.filePath("plain.pdf");
+    QCOMPARE(cli({"report", "--project", kFloors, "-o", pdf, "--figure-grid", "5"}).code, 0);
+    const QString text = run("pdftotext", {"-layout", pdf, "-"}).out;
+    QVERIFY(text.contains("Floor motions and today"));
+    QVERIFY(text.contains("Verdicts at the slab's level"));
+    QVERIFY(text.contains("ASCE/SEI 7-22 §13.3.1, MCE_R level"));
+    QVERIFY(text.contains("0.704")); // ASCE design PFA at the roof (tst_floors_demand)
+    QCOMPARE(cli({"report", "--project", kPaper, "-o", plain, "--figure-grid", "5"}).code, 0);
+    QVERIFY(!QString(run("pdftotext", {"-layout", plain, "-"}).out).contains("Floor motions"));
 }
 
 QTEST_APPLESS_MAIN(TestCliFloors)

@@ -161,6 +161,7 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
             throw ProjectError(e.what());
         }
     }
+    a.floors = computeReportFloors(project, control);
     // The paper's RK4 solver is of the 1-DOF model only.
     if (options.crossCheck && c.solver == SolverKind::Exact && !planar)
         a.crossCheck = crossCheck(project, a.projectSweep, options.crossCheckSteps);

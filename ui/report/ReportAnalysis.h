@@ -4,6 +4,7 @@
 // frequency and a solver cross-check for the numerics section. The GUI can fill the same
 // struct from what it already computed; the CLI calls computeReportAnalysis.
 
+#include "core/building/FloorAnalysis.h"
 #include "core/codes/CodeResult.h"
 #include "core/codes/DesignCheck.h"
 #include "core/io/Project.h"
@@ -42,6 +43,7 @@ struct ReportAnalysis {
     std::optional<SolverCrossCheck> crossCheck;
     // The project's record, when it has one: single run, critical peak, its verdicts.
     std::optional<RecordAnalysis> record;
+    std::optional<FloorAnalysis> floors; // when the project has "floors" and a record
     double totalSeconds = 0;
 };
 
@@ -57,6 +59,10 @@ struct AnalysisOptions {
 // Throws kinstab::InputError / ProjectError on a bad project (nothing is computed then).
 ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptions& options = {},
                                      SweepControl* control = nullptr);
+
+// The floor-motion analysis of a project with "floors" and a record (FloorsSection.cpp);
+// none otherwise or after a cancel. Throws ProjectError on an unreadable record.
+std::optional<FloorAnalysis> computeReportFloors(const Project& p, SweepControl* control);
 
 // "UBC 1976", "ATC 3-06", ... for figure labels.
 QString shortCodeName(const std::string& key);

@@ -75,6 +75,7 @@ ReportDocument buildReportDocument(const ReportSource& s, const ReportAnalysis& 
     addCodeSections(doc, p, a);
     addExcitationSection(doc, p, a);
     addRecordSection(doc, p, a);
+    addFloorsSection(doc, p, a);
     addSurfaceSections(doc, p, a);
     if (!a.check.codes.empty()) {
         doc.addSection(QStringLiteral("Design check: which failure governs"));

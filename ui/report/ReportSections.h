@@ -38,5 +38,7 @@ void addRecordSection(ReportDocument& doc, const Project& p, const ReportAnalysi
 QString recordSummary(const ReportAnalysis& a);
 void addNumericsSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 void addReferences(ReportDocument& doc, const Project& p);
+// The floor-motion section (FloorsSection.cpp): only when the project has "floors" and a record.
+void addFloorsSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 
 } // namespace kinstab::ui::report
