@@ -35,6 +35,7 @@ void TestFloorsView::runsAndShowsTheProfile() {
     ui::FloorsView view([p] { return p; });
     view.resize(1280, 900);
     view.show(); // applies the project's record and floors settings
+    view.setRecordPath(":/records/RSN77_SFERN_PUL164.AT2"); // the same record, shipped
     QSignalSpy shown(&view, &ui::FloorsView::analysisShown);
     view.run();
     QVERIFY(view.isRunning() || shown.count() == 1);
