@@ -258,6 +258,16 @@ void FloorsView::showVerdicts() {
                      .arg(QString::fromStdString(v.title), QString::fromStdString(v.explanation),
                           QString::fromStdString(verdictText(v.verdict)),
                           v.margin ? tr(", margin %1").arg(*v.margin, 0, 'f', 2) : QString());
+    if (a.sineACrit && !a.sineVerdicts.empty())
+        lines << tr("Against the paper's A_crit(1/T) = %1 g of the enveloped sine: margins %2.")
+                     .arg(*a.sineACrit, 0, 'f', 3)
+                     .arg([&a] {
+                         QStringList m;
+                         for (const FloorVerdict& v : a.sineVerdicts)
+                             m << QString::fromStdString(v.code) + " " +
+                                      (v.margin ? QString::number(*v.margin, 'f', 2) : "—");
+                         return m.join(", ");
+                     }());
     if (a.demands.empty()) lines << tr("The project selects neither ASCE 7-22 nor EN 1998-1.");
     m_verdicts->setText(lines.join('\n'));
 }

@@ -4,6 +4,7 @@
 #include "core/codes/Ec8FloorDemand.h"
 #include "core/excitation/FloorFilter.h"
 #include "core/excitation/RecordedMotion.h"
+#include "core/sweep/Sweep.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -57,6 +58,12 @@ FloorAnalysis analyseFloors(const FloorAnalysisInput& in, SweepControl* control)
     const LevelCritical& atSlab = a.critical[static_cast<std::size_t>(a.slabLevel - 1)];
     for (const FloorDemand& d : a.demands)
         a.verdicts.push_back(judgeFloorDemand(d, atSlab.criticalFloorPeak, in.search.to));
+    const CriticalResult sine = criticalAmplitude(slab1DPoint(in.slab), 1.0 / a.building.period,
+                                                  in.slab.slab.mu, in.search);
+    a.sineACrit = sine.amplitude;
+    for (const FloorDemand& d : a.demands)
+        a.sineVerdicts.push_back(
+            judgeFloorDemand(d, a.sineACrit, in.search.to, "A_crit(1/T) of the enveloped sine"));
     return a;
 }
 

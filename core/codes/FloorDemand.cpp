@@ -5,7 +5,7 @@
 namespace kinstab {
 
 FloorVerdict judgeFloorDemand(const FloorDemand& d, std::optional<double> critical,
-                              double searchLimit) {
+                              double searchLimit, const std::string& what) {
     FloorVerdict v;
     v.code = d.code;
     v.title = d.title;
@@ -16,13 +16,12 @@ FloorVerdict judgeFloorDemand(const FloorDemand& d, std::optional<double> critic
     if (!critical) {
         v.verdict = d.slabPfa < searchLimit ? Verdict::OverstressGoverns
                                             : Verdict::KineticInstabilityGoverns;
-        s << "; no collapse up to a floor peak of " << searchLimit << " g";
+        s << "; " << what << ": no collapse up to " << searchLimit << " g";
     } else {
         if (d.slabPfa > 0) v.margin = *critical / d.slabPfa;
         v.verdict =
             d.slabPfa < *critical ? Verdict::OverstressGoverns : Verdict::KineticInstabilityGoverns;
-        s << (d.slabPfa < *critical ? " < " : " >= ") << "critical floor peak = " << *critical
-          << " g";
+        s << (d.slabPfa < *critical ? " < " : " >= ") << what << " = " << *critical << " g";
     }
     v.explanation = s.str();
     return v;

@@ -35,9 +35,10 @@ struct FloorVerdict {
     std::string explanation;
 };
 
-// searchLimit: the critical search's limit (g), the bound when nothing collapsed.
+// searchLimit: the critical search's limit (g), the bound when nothing collapsed; what: the
+// critical value's name in the explanation.
 FloorVerdict judgeFloorDemand(const FloorDemand& d, std::optional<double> critical,
-                              double searchLimit);
+                              double searchLimit, const std::string& what = "critical floor peak");
 
 // The level's height over the building's height, bottom first.
 std::vector<double> relativeLevelHeights(const Building& b);

@@ -59,7 +59,7 @@ json verdictJson(const FloorVerdict& v) {
     return {{"code", v.code},
             {"title", v.title},
             {"demand_g", v.demand},
-            {"critical_floor_peak_g", orNull(v.critical)},
+            {"critical_g", orNull(v.critical)},
             {"margin", orNull(v.margin)},
             {"verdict", verdictText(v.verdict)},
             {"explanation", v.explanation}};
@@ -95,11 +95,13 @@ json floorAnalysisJson(const FloorAnalysis& a, const Building& b) {
     json levels = json::array();
     for (std::size_t i = 0; i < a.pfa.size(); ++i)
         levels.push_back(levelJson(a, b, i));
-    json demands = json::array(), verdicts = json::array();
+    json demands = json::array(), verdicts = json::array(), sine = json::array();
     for (const FloorDemand& d : a.demands)
         demands.push_back(demandJson(d));
     for (const FloorVerdict& v : a.verdicts)
         verdicts.push_back(verdictJson(v));
+    for (const FloorVerdict& v : a.sineVerdicts)
+        sine.push_back(verdictJson(v));
     const FloorDemand* asce = demandOf(a, "asce7_22");
     long runs = 0;
     for (const LevelCritical& l : a.critical)
@@ -114,6 +116,8 @@ json floorAnalysisJson(const FloorAnalysis& a, const Building& b) {
             {"sdof_roof", {{"pfa_g", a.sdofRoofPeak}, {"pfa_over_pga", a.sdofRoofPeak / a.pga}}},
             {"demands", demands},
             {"verdicts", verdicts},
+            {"enveloped_sine_a_crit_g", orNull(a.sineACrit)},
+            {"enveloped_sine_verdicts", sine},
             {"runs", runs}};
 }
 

@@ -96,6 +96,9 @@ void TestFloorsCritical::analysisVerdictsAtTheSlabLevel() {
         QCOMPARE(a.verdicts[i].verdict,
                  stable ? Verdict::OverstressGoverns : Verdict::KineticInstabilityGoverns);
     }
+    QCOMPARE(a.sineVerdicts.size(), std::size_t(3));
+    QVERIFY(a.sineACrit);
+    QCOMPARE(a.sineVerdicts[2].critical, a.sineACrit);
     // The SDOF filter at T and the model's roof both respond to the same record.
     QVERIFY(a.sdofRoofPeak > 0.0 && a.pfa.back() > 0.0);
 }
