@@ -65,15 +65,18 @@ void fillProfileChart(QChart* chart, const FloorAnalysis& a, const std::vector<d
     model->insert(0, QPointF(a.pga, 0.0)); // the ground's own peak at the base
     model->setPointsVisible(true);
     attach(chart, model, x, y);
-    const QColor colours[] = {QColor(200, 60, 30), QColor(200, 60, 30), QColor(30, 140, 60)};
-    for (std::size_t k = 0; k < a.demands.size(); ++k) {
-        const FloorDemand& d = a.demands[k];
+    for (const FloorDemand& d : a.demands) {
+        const QColor colour = d.code == "ec8" ? QColor(30, 140, 60) : QColor(200, 60, 30);
         const QString name = d.code == "asce7_22"       ? QObject::tr("ASCE design")
                              : d.code == "asce7_22_mce" ? QObject::tr("ASCE MCE_R")
                                                         : QObject::tr("EC8 rigid");
-        const bool ec8WithPeriod = d.code == "ec8" && d.trail.size() > 5 && d.trail[5].value > 0;
+        // EN 1998-1 with an element period T_a > 0 is no longer the rigid element's demand.
+        const bool ec8WithPeriod =
+            d.code == "ec8" && std::any_of(d.trail.begin(), d.trail.end(), [](const TrailEntry& t) {
+                return t.symbol == "T_a" && t.value > 0.0;
+            });
         attach(chart,
-               profile(ec8WithPeriod ? QObject::tr("EC8") : name, colours[std::min(k, size_t(2))],
+               profile(ec8WithPeriod ? QObject::tr("EC8") : name, colour,
                        d.code == "asce7_22_mce" ? Qt::DashLine : Qt::SolidLine, d.pfa, heights),
                x, y);
     }
