@@ -67,6 +67,8 @@ void TestFloorsCritical::searchMatchesBruteForceScan() {
             if (runRecord1D(slab, motion, peak).outcome == Outcome::Collapsed) first = k * step;
         }
         QVERIFY(first);
+        qInfo("level %d: searched critical PGA %.6f g, scan's first collapse %.3f g", l.level,
+              *l.criticalPga, *first);
         QVERIFY2(*first >= *l.criticalPga - 1e-6 && *first < *l.criticalPga + step + 1e-6,
                  qPrintable(QString("level %1: scan %2, search %3")
                                 .arg(l.level)
