@@ -178,6 +178,7 @@ def simulate_record(
     scan_step: float = 0.01,
     tolerance: float = 1e-6,
     events: bool = False,
+    history_step: Optional[float] = None,
     case: Optional[SlabCase] = None,
     **case_keywords,
 ) -> dict:
@@ -185,10 +186,12 @@ def simulate_record(
     ``floor_period`` s when given), scaled to peak ``amplitude`` g or by ``scale_factor``.
     ``critical=True`` also searches the smallest peak that collapses the slab
     (``critical_peak``, NaN when none). Returns a dict: outcome, tau_c, gamma_c, tau_ref,
-    amplitude, scale_factor, ground and motion (:class:`Record`), work, events."""
+    amplitude, scale_factor, ground and motion (:class:`Record`, the motion unscaled), work,
+    events and, with ``history_step``, the sampled history (arrays tau, accel, delta, ...)."""
     c = _case(case, case_keywords)
     return _core._simulate_record(c, path, amplitude, scale_factor, floor_period, damping,
-                                  critical, max_amplitude, scan_step, tolerance, events)
+                                  critical, max_amplitude, scan_step, tolerance, events,
+                                  history_step)
 
 
 def codes(building: dict, **code_inputs: dict) -> dict:

@@ -168,6 +168,7 @@ def _simulate_record(
     scan_step: float = 0.01,
     tolerance: float = 1e-6,
     events: bool = False,
+    history_step: Optional[float] = None,
 ) -> dict: ...
 def _codes_json(building: str, codes: str) -> str: ...
 def _calibrate_json(

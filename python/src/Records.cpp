@@ -4,6 +4,7 @@
 #include "core/excitation/FloorFilter.h"
 #include "core/excitation/RecordedMotion.h"
 #include "core/io/RecordReader.h"
+#include "core/slab/History.h"
 #include "core/sweep/RecordAnalysis.h"
 #include "python/src/Arguments.h"
 #include "python/src/Arrays.h"
@@ -115,7 +116,7 @@ void bindRecord(py::module_& m) {
 py::dict recordRun(const Slab1DCase& c, const std::string& path, std::optional<double> amplitude,
                    std::optional<double> scaleFactor, std::optional<double> floorPeriod, double damping,
                    bool critical, double maxAmplitude, double scanStep, double tolerance,
-                   bool events) {
+                   bool events, std::optional<double> historyStep) {
     RecordAnalysisInput in;
     in.slab = c;
     if (c.solver != SolverKind::Exact)
@@ -137,11 +138,20 @@ py::dict recordRun(const Slab1DCase& c, const std::string& path, std::optional<d
         badArgument("scale_factor", in.record.scaleFactor, "must be > 0 and at most 1e6");
     in.critical = critical;
     in.search = searchFrom(maxAmplitude, scanStep, tolerance);
-    in.events = events;
+    if (historyStep) {
+        finite("history_step", *historyStep);
+        if (!(*historyStep > 0.0)) badArgument("history_step", *historyStep, "must be > 0");
+    }
+    in.events = events || historyStep;
     RecordAnalysis a;
+    std::optional<History> history;
     try {
         py::gil_scoped_release unlocked;
         a = analyseRecord(in);
+        if (historyStep) {
+            const RecordedMotion motion(a.motion, c.tstar, a.peak);
+            history = sampleHistory(motion, c.slab.mu, a.run.events, a.run.tauEnd, *historyStep);
+        }
     } catch (const RecordError& e) {
         badArgument("path='" + path + "': " + e.what());
     } catch (const std::invalid_argument& e) {
@@ -163,6 +173,7 @@ py::dict recordRun(const Slab1DCase& c, const std::string& path, std::optional<d
     d["critical_peak"] = a.critical && a.critical->peak ? *a.critical->peak : std::nan("");
     d["work"] = workDict(a.run.work);
     d["events"] = events ? py::object(slabEventArrays(a.run.events)) : py::none();
+    d["history"] = history ? py::object(historyArrays(*history)) : py::none();
     return d;
 }
 
@@ -174,7 +185,8 @@ void bindRecords(py::module_& m) {
           py::arg("amplitude") = py::none(), py::arg("scale_factor") = py::none(),
           py::arg("floor_period") = py::none(), py::arg("damping") = 0.02,
           py::arg("critical") = false, py::arg("max_amplitude") = 5.0,
-          py::arg("scan_step") = 0.01, py::arg("tolerance") = 1e-6, py::arg("events") = false);
+          py::arg("scan_step") = 0.01, py::arg("tolerance") = 1e-6, py::arg("events") = false,
+          py::arg("history_step") = py::none());
 }
 
 } // namespace kinstab::python

@@ -37,17 +37,6 @@ py::list kindNames(const std::vector<SlabEvent>& events) {
     return kinds;
 }
 
-py::dict historyArrays(const History& h) {
-    const auto& s = h.samples;
-    py::dict d;
-    d["tau"] = column<double>(s, [](const HistorySample& x) { return x.tau; });
-    d["accel"] = column<double>(s, [](const HistorySample& x) { return x.accel; });
-    d["delta"] = column<double>(s, [](const HistorySample& x) { return x.delta; });
-    d["velocity"] = column<double>(s, [](const HistorySample& x) { return x.velocity; });
-    d["state"] = column<std::int8_t>(s, [](const HistorySample& x) { return x.state; });
-    return d;
-}
-
 py::dict planarEventArrays(const std::vector<PlanarEvent>& ev) {
     py::dict d;
     d["tau"] = column<double>(ev, [](const PlanarEvent& e) { return e.tau; });
@@ -105,6 +94,17 @@ py::dict slabEventArrays(const std::vector<SlabEvent>& events) {
     d["delta"] = column<double>(events, [](const SlabEvent& e) { return e.delta; });
     d["velocity"] = column<double>(events, [](const SlabEvent& e) { return e.velocity; });
     d["direction"] = column<std::int8_t>(events, [](const SlabEvent& e) { return e.direction; });
+    return d;
+}
+
+py::dict historyArrays(const History& h) {
+    const auto& s = h.samples;
+    py::dict d;
+    d["tau"] = column<double>(s, [](const HistorySample& x) { return x.tau; });
+    d["accel"] = column<double>(s, [](const HistorySample& x) { return x.accel; });
+    d["delta"] = column<double>(s, [](const HistorySample& x) { return x.delta; });
+    d["velocity"] = column<double>(s, [](const HistorySample& x) { return x.velocity; });
+    d["state"] = column<std::int8_t>(s, [](const HistorySample& x) { return x.state; });
     return d;
 }
 

@@ -33,6 +33,7 @@ double collapseTau(const SlabResult& r);
 double gammaC(const SlabResult& r, double tauRef);
 pybind11::dict workDict(const SolverWork& w);
 pybind11::dict slabEventArrays(const std::vector<SlabEvent>& events);
+pybind11::dict historyArrays(const History& h);
 
 void bindRunResults(pybind11::module_& m);
 

@@ -12,7 +12,10 @@
 
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <cmath>
+#include <stdexcept>
+#include <vector>
 
 namespace py = pybind11;
 
@@ -70,6 +73,25 @@ PlanarRun simulatePlanar(const PlanarCase& c, double amplitude, double frequency
     return run;
 }
 
+// The core's own time for runSlab1D, call by call in a C++ loop (for
+// examples/python/bench_overhead.py: the overhead of a Python call is the difference).
+std::vector<double> coreSeconds(const Slab1DCase& c, double amplitude, double frequency,
+                                int repeats) {
+    checkAmplitudeFrequency(amplitude, frequency);
+    if (repeats < 1 || repeats > 1000000)
+        badArgument("repeats=" + std::to_string(repeats) + ": must be 1 to 1000000");
+    std::vector<double> seconds(static_cast<std::size_t>(repeats));
+    py::gil_scoped_release unlocked;
+    for (double& s : seconds) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const SlabResult r = runSlab1D(c, amplitude, frequency);
+        const auto t1 = std::chrono::steady_clock::now();
+        if (r.outcome == Outcome::Failed) throw std::runtime_error("benchmark run failed");
+        s = std::chrono::duration<double>(t1 - t0).count();
+    }
+    return seconds;
+}
+
 } // namespace
 
 void bindSimulate(py::module_& m) {
@@ -83,6 +105,8 @@ void bindSimulate(py::module_& m) {
           py::arg("frequency"), py::kw_only(), py::arg("events") = false,
           py::arg("path") = false,
           "One run of the planar slab (A_x = amplitude g at frequency Hz across the walls).");
+    m.def("_core_seconds", &coreSeconds, py::arg("case"), py::arg("amplitude"),
+          py::arg("frequency"), py::arg("repeats"));
 }
 
 } // namespace kinstab::python

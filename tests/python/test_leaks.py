@@ -1,0 +1,24 @@
+"""No memory grows over 10^4 calls (resident set size, after a warm-up)."""
+
+import kinstab
+
+
+def rss_kib():
+    with open("/proc/self/status") as f:
+        for line in f:
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1])
+    raise RuntimeError("no VmRSS")
+
+
+def test_no_leak_over_ten_thousand_calls():
+    case = kinstab.SlabCase(envelope="fast")
+    for _ in range(1000):
+        kinstab.simulate(0.9, 1.0, case=case, events=True, history=True, history_step=1.0)
+    before = rss_kib()
+    for _ in range(10_000):
+        r = kinstab.simulate(0.9, 1.0, case=case, events=True, history=True, history_step=1.0)
+        r.events, r.history, r.work  # build the arrays and dicts every time
+    grown = rss_kib() - before
+    # One leaked history (~100 samples x 5 arrays) per call would be > 10 MiB.
+    assert grown < 2048, f"RSS grew by {grown} KiB"
