@@ -29,7 +29,8 @@ Envelope envelopeFrom(const py::object& e) {
 }
 
 void bindEnvelope(py::module_& m) {
-    py::class_<Envelope>(m, "Envelope", R"(The floor-motion envelope e(t) = exp(-alpha t) - exp(-beta t)
+    py::class_<Envelope>(m, "Envelope",
+                         R"(The floor-motion envelope e(t) = exp(-alpha t) - exp(-beta t)
 (Furgerson 1980, ch. IV). Envelope(alpha, beta) in 1/s, or a preset: Envelope.preset("fast"),
 "moderate" or "slow".)")
         .def(py::init(&customEnvelope), py::arg("alpha"), py::arg("beta"))
@@ -88,8 +89,7 @@ frequency. Checked when made: a bad value raises ValueError naming the keyword.)
         .def_readonly("tstar", &Slab1DCase::tstar, "s")
         .def_property_readonly("mu", [](const Slab1DCase& c) { return c.slab.mu; })
         .def_property_readonly("limit", [](const Slab1DCase& c) { return c.slab.limit; })
-        .def_property_readonly("duration",
-                               [](const Slab1DCase& c) { return c.slab.duration; })
+        .def_property_readonly("duration", [](const Slab1DCase& c) { return c.slab.duration; })
         .def_property_readonly("scale", [](const Slab1DCase& c) { return tauScaleName(c.scale); })
         .def_property_readonly("solver", [](const Slab1DCase& c) { return solverName(c.solver); })
         .def_readonly("paper_steps", &Slab1DCase::paperStepsPerPeriod)
@@ -115,9 +115,10 @@ void bindPlanarCase(py::module_& m) {
         .def_property_readonly("mu", [](const PlanarCase& c) { return c.slab.mu; })
         .def_property_readonly("limit", [](const PlanarCase& c) { return c.slab.limit; })
         .def_readonly("tstar", &PlanarCase::tstar)
-        .def_property_readonly("normalization",
-                               [](const PlanarCase& c) { return normalizationName(c.normalization); })
-        .def_property_readonly("has_vertical", [](const PlanarCase& c) { return c.vertical != nullptr; })
+        .def_property_readonly(
+            "normalization", [](const PlanarCase& c) { return normalizationName(c.normalization); })
+        .def_property_readonly("has_vertical",
+                               [](const PlanarCase& c) { return c.vertical != nullptr; })
         .def_property_readonly("tau_ref", &PlanarCase::tauRef);
 }
 

@@ -20,8 +20,9 @@ std::string codesJson(const std::string& buildingText, const std::string& codesT
         const nlohmann::json c = nlohmann::json::parse(codesText);
         const Building building = buildingFromJson(JsonReader(b, "building"));
         const CodeSelection codes = codesFromJson(JsonReader(c, "codes"));
-        if (codes.empty()) badArgument("codes: no code selected (give ubc1976, atc306, ubc1997, "
-                                       "asce7_22 or ec8 inputs)");
+        if (codes.empty())
+            badArgument("codes: no code selected (give ubc1976, atc306, ubc1997, "
+                        "asce7_22 or ec8 inputs)");
         return codeResultsJson(runCodes(building, codes)).dump();
     } catch (const JsonFieldError& e) {
         badArgument(e.what());

@@ -41,8 +41,7 @@ py::array_t<double> critical(const py::object& model, const py::object& frequenc
 
 void bindCritical(py::module_& m) {
     m.def("_critical", &critical, py::arg("case"), py::arg("frequencies"),
-          py::arg("max_amplitude") = 5.0, py::arg("scan_step") = 0.01,
-          py::arg("tolerance") = 1e-6);
+          py::arg("max_amplitude") = 5.0, py::arg("scan_step") = 0.01, py::arg("tolerance") = 1e-6);
 }
 
 } // namespace kinstab::python

@@ -38,17 +38,16 @@ CalibrationOptions calibrationOptions(std::optional<double> bearingArea, double 
         badArgument("outlier_alpha", outlierAlpha, "must be in (0, 0.5)");
     o.outlierMinRuns = outlierMinRuns;
     if (outlierMinRuns < 3)
-        badArgument("outlier_min_runs=" + std::to_string(outlierMinRuns) +
-                    ": must be at least 3");
+        badArgument("outlier_min_runs=" + std::to_string(outlierMinRuns) + ": must be at least 3");
     o.excludeOutliers = !keepOutliers;
     return o;
 }
 
-std::string calibrateJson(const std::string& path, std::optional<double> bearingArea,
-                          double alpha, const std::string& beta, double maxCp,
-                          double outlierAlpha, int outlierMinRuns, bool keepOutliers) {
-    const CalibrationOptions o = calibrationOptions(bearingArea, alpha, beta, maxCp,
-                                                    outlierAlpha, outlierMinRuns, keepOutliers);
+std::string calibrateJson(const std::string& path, std::optional<double> bearingArea, double alpha,
+                          const std::string& beta, double maxCp, double outlierAlpha,
+                          int outlierMinRuns, bool keepOutliers) {
+    const CalibrationOptions o = calibrationOptions(bearingArea, alpha, beta, maxCp, outlierAlpha,
+                                                    outlierMinRuns, keepOutliers);
     try {
         const std::vector<TripletCurve> runs = readTripletCsv(path);
         nlohmann::json j = frictionCalibrationJson(calibrateFriction(runs, o));

@@ -14,7 +14,8 @@ bool isPlanar(const py::handle& model) {
 }
 
 ModelPoint modelPointOf(const py::handle& model) {
-    if (py::isinstance<Slab1DCase>(model)) return modelPoint(model.cast<Slab1DCase>(), std::nullopt);
+    if (py::isinstance<Slab1DCase>(model))
+        return modelPoint(model.cast<Slab1DCase>(), std::nullopt);
     if (isPlanar(model)) return modelPoint(Slab1DCase{}, model.cast<PlanarCase>());
     badArgument("case: expected a SlabCase or a PlanarCase, got " +
                 py::repr(model).cast<std::string>());

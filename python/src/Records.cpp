@@ -26,8 +26,8 @@ namespace {
 RecordReadOptions readOptions(const std::string& format, std::optional<double> dt,
                               std::optional<std::string> unit, const std::string& channel) {
     RecordReadOptions o;
-    o.format = *recordFormatFromName(
-        choice("format", format, "at2|auto|cosmos|csmip|time-accel|values"));
+    o.format =
+        *recordFormatFromName(choice("format", format, "at2|auto|cosmos|csmip|time-accel|values"));
     if (dt) {
         if (!(*dt > 0.0 && *dt <= 10.0)) badArgument("dt", *dt, "must be > 0 and at most 10 s");
         o.dt = *dt;
@@ -83,8 +83,8 @@ py::array_t<double> sampleTimes(const Accelerogram& a) {
 void bindRecord(py::module_& m) {
     py::class_<Accelerogram>(m, "Record", "An accelerogram: equally spaced samples in g.")
         .def_readonly("dt", &Accelerogram::dt, "s")
-        .def_property_readonly("samples",
-                               [](const Accelerogram& a) { return toArray(a.samples); }, "g")
+        .def_property_readonly(
+            "samples", [](const Accelerogram& a) { return toArray(a.samples); }, "g")
         .def_property_readonly("time", &sampleTimes, "s, from the first sample")
         .def_readonly("name", &Accelerogram::name)
         .def_readonly("station", &Accelerogram::station)
@@ -95,8 +95,9 @@ void bindRecord(py::module_& m) {
                                [](const Accelerogram& a) { return accelUnitName(a.fileUnit); })
         .def_readonly("header_peak", &Accelerogram::headerPeak, "g, when the header states one")
         .def_property_readonly("duration", &Accelerogram::duration, "s")
-        .def_property_readonly("peak", [](const Accelerogram& a) { return a.peak().value; },
-                               "the signed sample of largest |a|, g")
+        .def_property_readonly(
+            "peak", [](const Accelerogram& a) { return a.peak().value; },
+            "the signed sample of largest |a|, g")
         .def_property_readonly("peak_time", [](const Accelerogram& a) { return a.peak().time; })
         .def("__len__", &Accelerogram::size)
         .def("__repr__", [](const Accelerogram& a) {
@@ -114,9 +115,9 @@ void bindRecord(py::module_& m) {
 }
 
 py::dict recordRun(const Slab1DCase& c, const std::string& path, std::optional<double> amplitude,
-                   std::optional<double> scaleFactor, std::optional<double> floorPeriod, double damping,
-                   bool critical, double maxAmplitude, double scanStep, double tolerance,
-                   bool events, std::optional<double> historyStep) {
+                   std::optional<double> scaleFactor, std::optional<double> floorPeriod,
+                   double damping, bool critical, double maxAmplitude, double scanStep,
+                   double tolerance, bool events, std::optional<double> historyStep) {
     RecordAnalysisInput in;
     in.slab = c;
     if (c.solver != SolverKind::Exact)
@@ -125,8 +126,7 @@ py::dict recordRun(const Slab1DCase& c, const std::string& path, std::optional<d
     in.record.file = path;
     if (floorPeriod) in.record.floor = floorParams(*floorPeriod, damping, std::nullopt);
     if (amplitude && scaleFactor)
-        badArgument("scale_factor", *scaleFactor,
-                    "amplitude and scale_factor exclude each other");
+        badArgument("scale_factor", *scaleFactor, "amplitude and scale_factor exclude each other");
     if (amplitude) {
         finite("amplitude", *amplitude);
         if (!(*amplitude > 0.0 && *amplitude <= 1000.0))
@@ -184,8 +184,8 @@ void bindRecords(py::module_& m) {
     m.def("_simulate_record", &recordRun, py::arg("case"), py::arg("path"),
           py::arg("amplitude") = py::none(), py::arg("scale_factor") = py::none(),
           py::arg("floor_period") = py::none(), py::arg("damping") = 0.02,
-          py::arg("critical") = false, py::arg("max_amplitude") = 5.0,
-          py::arg("scan_step") = 0.01, py::arg("tolerance") = 1e-6, py::arg("events") = false,
+          py::arg("critical") = false, py::arg("max_amplitude") = 5.0, py::arg("scan_step") = 0.01,
+          py::arg("tolerance") = 1e-6, py::arg("events") = false,
           py::arg("history_step") = py::none());
 }
 

@@ -66,11 +66,12 @@ py::dict pathArrays(const std::vector<PlanarSample>& p) {
 template <typename Run, typename Get> void defineCommon(py::class_<Run>& c, Get slab) {
     c.def_property_readonly("outcome",
                             [slab](const Run& r) { return outcomeName(slab(r).outcome); })
-        .def_property_readonly("tau_c", [slab](const Run& r) { return collapseTau(slab(r)); },
-                               "collapse time tau_c = t_c / t* (NaN when not collapsed)")
-        .def_property_readonly("gamma_c",
-                               [slab](const Run& r) { return gammaC(slab(r), r.tauRef); },
-                               "tau_ref / tau_c (0 when not collapsed)")
+        .def_property_readonly(
+            "tau_c", [slab](const Run& r) { return collapseTau(slab(r)); },
+            "collapse time tau_c = t_c / t* (NaN when not collapsed)")
+        .def_property_readonly(
+            "gamma_c", [slab](const Run& r) { return gammaC(slab(r), r.tauRef); },
+            "tau_ref / tau_c (0 when not collapsed)")
         .def_readonly("tau_ref", &Run::tauRef)
         .def_readonly("amplitude", &Run::amplitude)
         .def_readonly("frequency", &Run::frequency)
@@ -138,13 +139,14 @@ void bindRunResults(py::module_& m) {
     planar
         .def_property_readonly("exit_side",
                                [](const PlanarRun& r) { return exitSideName(r.result.exitSide); })
-        .def_property_readonly("tau_lift_off", [](const PlanarRun& r) { return r.result.tauLiftOff; })
+        .def_property_readonly("tau_lift_off",
+                               [](const PlanarRun& r) { return r.result.tauLiftOff; })
         .def_property_readonly("max_abs_delta_y",
                                [](const PlanarRun& r) { return r.result.maxAbsDeltaY; })
         .def_property_readonly("residual_delta_y",
                                [](const PlanarRun& r) { return r.result.residualDeltaY; })
-        .def_property_readonly("events",
-                               [](const PlanarRun& r) { return planarEventArrays(r.result.events); })
+        .def_property_readonly(
+            "events", [](const PlanarRun& r) { return planarEventArrays(r.result.events); })
         .def_property_readonly("path",
                                [](const PlanarRun& r) { return pathArrays(r.result.path); });
 }

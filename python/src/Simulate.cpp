@@ -32,8 +32,8 @@ void checkAmplitudeFrequency(double amplitude, double frequency) {
         badArgument("frequency", frequency, "must be > 0 and at most 1000 Hz");
 }
 
-SlabRun simulate(const Slab1DCase& c, double amplitude, double frequency, bool events,
-                 bool history, double historyStep) {
+SlabRun simulate(const Slab1DCase& c, double amplitude, double frequency, bool events, bool history,
+                 double historyStep) {
     checkAmplitudeFrequency(amplitude, frequency);
     finite("history_step", historyStep);
     if (!(historyStep > 0.0)) badArgument("history_step", historyStep, "must be > 0");
@@ -102,8 +102,7 @@ void bindSimulate(py::module_& m) {
           "One run of the 1-DOF slab under A e(t) sin(2 pi f t) (amplitude in g, frequency in "
           "Hz). The GIL is released while it runs.");
     m.def("simulate_planar", &simulatePlanar, py::arg("case"), py::arg("amplitude"),
-          py::arg("frequency"), py::kw_only(), py::arg("events") = false,
-          py::arg("path") = false,
+          py::arg("frequency"), py::kw_only(), py::arg("events") = false, py::arg("path") = false,
           "One run of the planar slab (A_x = amplitude g at frequency Hz across the walls).");
     m.def("_core_seconds", &coreSeconds, py::arg("case"), py::arg("amplitude"),
           py::arg("frequency"), py::arg("repeats"));

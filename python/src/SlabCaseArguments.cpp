@@ -44,8 +44,7 @@ Slab1DCase slabCaseFrom(const SlabCaseArguments& a) {
     c.slab.limit = a.limit;
     if (!(a.limit > 0.0 && a.limit <= 1e6)) badArgument("limit", a.limit, "must be > 0");
     if (a.duration) {
-        if (!(*a.duration > 0.0))
-            badArgument("duration", *a.duration, "must be > 0");
+        if (!(*a.duration > 0.0)) badArgument("duration", *a.duration, "must be > 0");
         c.slab.duration = *a.duration;
     }
     c.scale = *tauScaleFromName(choice("scale", a.scale, "one|tau_dur|tau_max|tau_rise"));

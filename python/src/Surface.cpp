@@ -26,8 +26,8 @@ bool sweepInterruptibly(const SweepGrid& grid, const PointFunction& point, int t
     SweepControl control;
     bool interrupted = false;
     py::gil_scoped_release unlocked;
-    auto work = std::async(std::launch::async,
-                           [&] { return runSweep(grid, point, &control, threads); });
+    auto work =
+        std::async(std::launch::async, [&] { return runSweep(grid, point, &control, threads); });
     while (work.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
         py::gil_scoped_acquire locked;
         if (!interrupted && PyErr_CheckSignals() != 0) {
@@ -90,9 +90,9 @@ void bindSurface(py::module_& m) {
     m.attr("OUTCOMES") =
         py::make_tuple(outcomeName(Outcome::Collapsed), outcomeName(Outcome::Stable),
                        outcomeName(Outcome::LiftOff), outcomeName(Outcome::Failed));
-    m.attr("EXIT_SIDES") = py::make_tuple(exitSideName(ExitSide::None),
-                                          exitSideName(ExitSide::Across),
-                                          exitSideName(ExitSide::Along));
+    m.attr("EXIT_SIDES") =
+        py::make_tuple(exitSideName(ExitSide::None), exitSideName(ExitSide::Across),
+                       exitSideName(ExitSide::Along));
 }
 
 } // namespace kinstab::python

@@ -9,7 +9,7 @@ import pytest
 
 import kinstab
 
-GRID = ("0.6:1.6:0.01", "0.25:4:0.05")  # 101 x 76 points: seconds of work
+GRID = ("0.6:1.6:0.005", "0.25:4:0.025")  # 201 x 151 points: about a second of work
 
 
 def test_surface_lets_other_threads_run():
@@ -27,7 +27,7 @@ def test_surface_lets_other_threads_run():
         ticks += 1
         time.sleep(0.001)
     t.join()
-    # The sweep takes well over 0.1 s (7676 points); with the GIL held we would count ~0.
+    # The sweep takes well over 0.1 s (30351 points); with the GIL held we would count ~0.
     assert ticks > 50
 
 
@@ -36,6 +36,6 @@ def test_ctrl_c_cancels_surface():
     start = time.monotonic()
     timer.start()
     with pytest.raises(KeyboardInterrupt):
-        kinstab.surface("0.6:1.6:0.002", "0.25:4:0.01", threads=1)  # minutes of work
+        kinstab.surface("0.6:1.6:0.002", "0.25:4:0.01", threads=1)  # 501 x 376 points: several seconds
     timer.join()
     assert time.monotonic() - start < 10
