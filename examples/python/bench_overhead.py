@@ -19,9 +19,10 @@ import kinstab
 from kinstab import _core
 
 CASES = [  # (label, amplitude g, frequency Hz, keywords)
-    ("stable, below mu", 0.5, 1.0, {}),
-    ("collapse, moderate", 0.9, 1.0, {}),
-    ("slip without collapse", 0.7, 3.0, {"envelope": "fast"}),
+    ("below mu: no slip", 0.5, 1.0, {}),
+    ("slips, stays", 0.9, 1.0, {}),
+    ("collapses", 1.1, 0.625, {}),
+    ("slips long, fast env.", 0.7, 3.0, {"envelope": "fast"}),
 ]
 
 
@@ -47,7 +48,7 @@ def main():
         bound = median_seconds(lambda: _core.simulate(case, a, f), repeats)
         public = median_seconds(lambda: kinstab.simulate(a, f, **kw), repeats)
         print(f"{label:24} {core * 1e6:9.2f} {bound * 1e6:9.2f} {public * 1e6:9.2f} "
-              f"{(bound - core) * 1e6:9.2f} {(public - core) * 1e6:9.2f}   ({r.outcome})")
+              f"{(bound - core) * 1e6:9.2f} {(public - core) * 1e6:9.2f}   ({r.outcome}, {r.slip_intervals} slips)")
 
 
 if __name__ == "__main__":
