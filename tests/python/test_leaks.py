@@ -20,5 +20,7 @@ def test_no_leak_over_ten_thousand_calls():
         r = kinstab.simulate(0.9, 1.0, case=case, events=True, history=True, history_step=1.0)
         r.events, r.history, r.work  # build the arrays and dicts every time
     grown = rss_kib() - before
-    # One leaked history (~100 samples x 5 arrays) per call would be > 10 MiB.
-    assert grown < 2048, f"RSS grew by {grown} KiB"
+    # A call builds ~600 history samples and ~170 events (~25 KiB of arrays); leaking them
+    # would grow the RSS by ~250 MiB, and leaking as little as 100 bytes a call reaches the bound
+    # (measured here: 24 KiB, the allocator's own slack).
+    assert grown < 1024, f"RSS grew by {grown} KiB"
