@@ -105,3 +105,27 @@ def test_friction_equals_cli(cli, source_dir):
     data = source_dir / "resources" / "data" / "furgerson1980" / "table1_triplet_tests.csv"
     j = cli("friction", "--data", data, "--bearing-area", "65.7")
     assert kinstab.friction.calibrate(str(data), bearing_area=65.7) == j
+
+
+def test_read_record_and_floor_filter_equal_cli(cli, source_dir):
+    path = source_dir / "resources" / "records" / "RSN77_SFERN_PUL164.AT2"
+    j = cli("record", "--file", path, "--floor-period", "1", "--damping", "0.02")
+    ground = kinstab.read_record(str(path))
+    assert len(ground) == j["record"]["npts"] and ground.dt == j["record"]["dt"]
+    assert ground.peak == j["record"]["peak_g"]
+    assert ground.peak_time == j["record"]["peak_time_s"]
+    floor = kinstab.floor_filter(ground, 1.0, damping=0.02)
+    assert len(floor) == j["floor"]["npts"]
+    assert floor.peak == j["floor"]["peak_g"] and floor.peak_time == j["floor"]["peak_time_s"]
+
+
+def test_planar_surface_equals_cli(cli):
+    j = cli("surface", "--model", "planar", "--fy", "0.5", "--amplitudes", "0.9,1.2",
+            "--frequencies", "0.5,1,2")
+    s = kinstab.surface([0.9, 1.2], [0.5, 1, 2], planar=kinstab.Planar(fy=0.5))
+    names = s.outcome_names()
+    for i in range(2):
+        for k in range(3):
+            assert same(float(s.tau_c[i, k]), j["tau_c"][i][k])
+            assert s.gamma_c[i, k] == j["gamma_c"][i][k]
+            assert names[i, k] == j["outcome"][i][k]
