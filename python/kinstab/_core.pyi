@@ -181,3 +181,6 @@ def _calibrate_json(
     outlier_min_runs: int = 5,
     keep_outliers: bool = False,
 ) -> str: ...
+def _core_seconds(
+    case: SlabCase, amplitude: float, frequency: float, repeats: int
+) -> list[float]: ...
