@@ -1,0 +1,204 @@
+"""kinstab: can a floor slab held by friction slide off its walls in an earthquake?
+
+The engine of kinstab (Furgerson 1980 stick-slip model) in Python::
+
+    import kinstab
+    r = kinstab.simulate(0.9, 1.0, envelope="moderate")
+    print(r.outcome, r.tau_c, r.gamma_c)
+
+Every run takes the same case keywords as ``kinstab-cli``'s model flags: ``envelope`` (a preset
+name or an :class:`Envelope`), ``tstar`` or ``wall_width_in``, ``mu``, ``limit``, ``duration``,
+``scale``, ``solver``, ``paper_steps``; ``planar=Planar(fy=...)`` selects the planar slab of
+ch. VI. A bad value raises ``ValueError`` with the command line's message.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from typing import Optional, Sequence, Union
+
+import numpy as np
+
+from . import _core
+from ._core import (  # noqa: F401  (re-exported)
+    EXIT_SIDES,
+    OUTCOMES,
+    Envelope,
+    PlanarCase,
+    PlanarResult,
+    Record,
+    SimulationResult,
+    SlabCase,
+    floor_filter,
+    read_record,
+)
+from . import friction  # noqa: F401
+
+__version__: str = _core.__version__
+
+Axis = Union[Sequence[float], np.ndarray, str]
+
+
+@dataclass(frozen=True)
+class Planar:
+    """The planar model's own inputs (Furgerson 1980, ch. VI): frequency along the walls
+    ``fy`` (Hz), ``ay_ratio`` = A_y / A_x, the along-wall limit ``theta`` (2 wall length / wall
+    width), ``normalization`` ('product' or 'envelope') and an optional ``vertical`` record file
+    (upward base acceleration; None: gravity only)."""
+
+    fy: float
+    ay_ratio: float = 0.9
+    theta: float = 20.0
+    normalization: str = "product"
+    vertical: Optional[str] = None
+
+
+def slab_case(
+    *,
+    envelope: Union[str, Envelope] = "moderate",
+    tstar: Optional[float] = None,
+    wall_width_in: Optional[float] = None,
+    mu: float = 0.6,
+    limit: float = 1.0,
+    duration: Optional[float] = None,
+    scale: str = "tau_max",
+    solver: str = "exact",
+    paper_steps: float = 16.0,
+    planar: Optional[Planar] = None,
+) -> Union[SlabCase, PlanarCase]:
+    """The checked case of a run: a SlabCase, or a PlanarCase when ``planar`` is given.
+    ``tstar`` defaults to 0.099 s (the paper's 8 inch wall)."""
+    common = SlabCase(envelope=envelope, tstar=tstar, wall_width_in=wall_width_in, mu=mu,
+                      limit=limit, duration=duration, scale=scale, solver=solver,
+                      paper_steps=paper_steps)
+    if planar is None:
+        return common
+    return PlanarCase(common, fy=planar.fy, ay_ratio=planar.ay_ratio, theta=planar.theta,
+                      normalization=planar.normalization, vertical=planar.vertical)
+
+
+def _case(case: Optional[Union[SlabCase, PlanarCase]], keywords: dict) -> Union[SlabCase, PlanarCase]:
+    if case is not None:
+        if keywords:
+            raise ValueError("case: give either case= or case keywords, not both ("
+                             + ", ".join(sorted(keywords)) + ")")
+        return case
+    return slab_case(**keywords)
+
+
+def simulate(
+    amplitude: float,
+    frequency: float,
+    *,
+    case: Optional[Union[SlabCase, PlanarCase]] = None,
+    events: bool = False,
+    history: bool = False,
+    history_step: float = 0.05,
+    **case_keywords,
+) -> Union[SimulationResult, PlanarResult]:
+    """One run under A e(t) sin(2 pi f t): ``amplitude`` in g, ``frequency`` in Hz.
+
+    ``events=True`` keeps the event list, ``history=True`` the sampled history (every
+    ``history_step`` in tau and at every event; planar: the solver's path), as NumPy arrays.
+    """
+    c = _case(case, case_keywords)
+    if isinstance(c, PlanarCase):
+        if history_step != 0.05:
+            raise ValueError("history_step: with the planar model the history lists the "
+                             "solver's own steps and events")
+        return _core.simulate_planar(c, amplitude, frequency, events=events, path=history)
+    return _core.simulate(c, amplitude, frequency, events=events, history=history,
+                          history_step=history_step)
+
+
+@dataclass(frozen=True)
+class Surface:
+    """A swept (A, f) grid. 2-D arrays are indexed [amplitude, frequency].
+
+    ``tau_c`` is NaN where the slab did not collapse, ``gamma_c`` = tau_ref / tau_c is 0 there;
+    ``outcome`` holds indices into :data:`OUTCOMES` (-1: not run); ``exit_side`` (planar only)
+    indices into :data:`EXIT_SIDES`."""
+
+    amplitudes: np.ndarray
+    frequencies: np.ndarray
+    tau_c: np.ndarray
+    gamma_c: np.ndarray
+    outcome: np.ndarray
+    exit_side: Optional[np.ndarray]
+    tau_ref: float
+    wall_time_s: float
+
+    def outcome_names(self) -> np.ndarray:
+        """The outcome array as names ('collapsed', 'stable', ..., 'not_run')."""
+        names = np.array(list(OUTCOMES) + ["not_run"], dtype=object)
+        return names[self.outcome]
+
+
+def surface(
+    amplitudes: Axis,
+    frequencies: Axis,
+    *,
+    case: Optional[Union[SlabCase, PlanarCase]] = None,
+    threads: int = 0,
+    **case_keywords,
+) -> Surface:
+    """Sweeps every (A, f) of the grid on ``threads`` threads (0: all cores) with the GIL
+    released; Ctrl+C cancels it (KeyboardInterrupt). Axes are sequences of numbers or the
+    command line's LIST text ("0.7:1.15:0.05")."""
+    c = _case(case, case_keywords)
+    return Surface(**_core._surface(c, amplitudes, frequencies, threads))
+
+
+def critical(
+    frequencies: Axis,
+    *,
+    case: Optional[Union[SlabCase, PlanarCase]] = None,
+    max_amplitude: float = 5.0,
+    scan_step: float = 0.01,
+    tolerance: float = 1e-6,
+    **case_keywords,
+) -> np.ndarray:
+    """A_crit(f) in g: the smallest amplitude that collapses the slab at each frequency (a fine
+    scan from where slip can start, then bisection); NaN where nothing up to ``max_amplitude``
+    collapses."""
+    c = _case(case, case_keywords)
+    return _core._critical(c, frequencies, max_amplitude, scan_step, tolerance)
+
+
+def simulate_record(
+    path: str,
+    *,
+    amplitude: Optional[float] = None,
+    scale_factor: Optional[float] = None,
+    floor_period: Optional[float] = None,
+    damping: float = 0.02,
+    critical: bool = False,
+    max_amplitude: float = 5.0,
+    scan_step: float = 0.01,
+    tolerance: float = 1e-6,
+    events: bool = False,
+    history_step: Optional[float] = None,
+    case: Optional[SlabCase] = None,
+    **case_keywords,
+) -> dict:
+    """The 1-DOF slab under a recorded motion (through the floor filter of period
+    ``floor_period`` s when given), scaled to peak ``amplitude`` g or by ``scale_factor``.
+    ``critical=True`` also searches the smallest peak that collapses the slab
+    (``critical_peak``, NaN when none). Returns a dict: outcome, tau_c, gamma_c, tau_ref,
+    amplitude, scale_factor, ground and motion (:class:`Record`, the motion unscaled), work,
+    events and, with ``history_step``, the sampled history (arrays tau, accel, delta, ...)."""
+    c = _case(case, case_keywords)
+    return _core._simulate_record(c, path, amplitude, scale_factor, floor_period, damping,
+                                  critical, max_amplitude, scan_step, tolerance, events,
+                                  history_step)
+
+
+def codes(building: dict, **code_inputs: dict) -> dict:
+    """Lateral force ratios of the building codes for one building.
+
+    ``building`` and each code's inputs are the project file's objects (keys as in
+    resources/examples/paper-16-story.json): ``codes(building, ubc1976={"zone": 4, "k": 0.8},
+    ec8={...})``. Returns one dict per code: base shear coefficient, period, top ratio, story
+    forces and the ``trail`` of every coefficient with its clause."""
+    return json.loads(_core._codes_json(json.dumps(building), json.dumps(code_inputs)))

@@ -1,0 +1,40 @@
+#pragma once
+// The results of one run as Python sees them: SimulationResult (1-DOF) and PlanarResult.
+
+#include "core/slab/History.h"
+#include "core/slab/PlanarSolver.h"
+#include "core/slab/SlabTypes.h"
+
+#include <pybind11/pybind11.h>
+
+#include <optional>
+
+namespace kinstab::python {
+
+struct SlabRun {
+    SlabResult result;
+    double tauRef = 1;
+    double amplitude = 0;
+    double frequency = 0;
+    bool keepEvents = false;
+    std::optional<History> history;
+};
+
+struct PlanarRun {
+    PlanarResult result;
+    double tauRef = 1;
+    double amplitude = 0;
+    double frequency = 0;
+};
+
+// tau_c where the slab collapsed, NaN otherwise; gamma_c = tau_ref / tau_c, 0 otherwise (the
+// CLI's JSON: null and 0).
+double collapseTau(const SlabResult& r);
+double gammaC(const SlabResult& r, double tauRef);
+pybind11::dict workDict(const SolverWork& w);
+pybind11::dict slabEventArrays(const std::vector<SlabEvent>& events);
+pybind11::dict historyArrays(const History& h);
+
+void bindRunResults(pybind11::module_& m);
+
+} // namespace kinstab::python

@@ -1,0 +1,21 @@
+#include "python/src/SearchArguments.h"
+
+#include "python/src/Arguments.h"
+
+namespace kinstab::python {
+
+CriticalSearch searchFrom(double maxAmplitude, double scanStep, double tolerance) {
+    CriticalSearch s;
+    s.to = finite("max_amplitude", maxAmplitude);
+    s.scanStep = finite("scan_step", scanStep);
+    s.tolerance = finite("tolerance", tolerance);
+    if (!(s.to > 0.0 && s.to <= 1000.0))
+        badArgument("max_amplitude", s.to, "must be > 0 and at most 1000");
+    if (!(s.scanStep > 0.0 && s.scanStep <= s.to))
+        badArgument("scan_step", s.scanStep, "must be > 0 and below --max-amplitude");
+    if (!(s.tolerance > 0.0 && s.tolerance <= s.scanStep))
+        badArgument("tolerance", s.tolerance, "must be > 0 and at most --scan-step");
+    return s;
+}
+
+} // namespace kinstab::python

@@ -1,0 +1,111 @@
+// simulate and simulate_planar: one run under the enveloped sine, with its events and sampled
+// history as NumPy arrays when asked.
+
+#include "core/excitation/EnvelopedSine.h"
+#include "core/slab/History.h"
+#include "core/slab/PlanarCase.h"
+#include "core/slab/Slab1DCase.h"
+#include "python/src/Arguments.h"
+#include "python/src/Arrays.h"
+#include "python/src/Bindings.h"
+#include "python/src/RunResults.h"
+
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace py = pybind11;
+
+namespace kinstab::python {
+
+namespace {
+
+void checkAmplitudeFrequency(double amplitude, double frequency) {
+    finite("amplitude", amplitude);
+    finite("frequency", frequency);
+    if (!(amplitude >= 0.0 && amplitude <= 1000.0))
+        badArgument("amplitude", amplitude, "must be between 0 and 1000 g");
+    if (!(frequency > 0.0 && frequency <= 1000.0))
+        badArgument("frequency", frequency, "must be > 0 and at most 1000 Hz");
+}
+
+SlabRun simulate(const Slab1DCase& c, double amplitude, double frequency, bool events, bool history,
+                 double historyStep) {
+    checkAmplitudeFrequency(amplitude, frequency);
+    finite("history_step", historyStep);
+    if (!(historyStep > 0.0)) badArgument("history_step", historyStep, "must be > 0");
+    SlabRun run;
+    run.tauRef = c.tauRef();
+    run.amplitude = amplitude;
+    run.frequency = frequency;
+    run.keepEvents = events;
+    RunOptions options;
+    options.recordEvents = events || history;
+    {
+        py::gil_scoped_release unlocked;
+        run.result = runSlab1D(c, amplitude, frequency, options);
+        if (history) {
+            const EnvelopedSine a(c.envelope, amplitude, frequency, c.tstar);
+            run.history =
+                sampleHistory(a, c.slab.mu, run.result.events, run.result.tauEnd, historyStep);
+        }
+    }
+    if (!events) run.result.events.clear();
+    return run;
+}
+
+PlanarRun simulatePlanar(const PlanarCase& c, double amplitude, double frequency, bool events,
+                         bool path) {
+    checkAmplitudeFrequency(amplitude, frequency);
+    PlanarRun run;
+    run.tauRef = c.tauRef();
+    run.amplitude = amplitude;
+    run.frequency = frequency;
+    PlanarOptions options = c.solver;
+    options.recordEvents = events;
+    options.recordPath = path;
+    py::gil_scoped_release unlocked;
+    const SlabModel2D model = planarModel(c, amplitude, frequency);
+    run.result = solvePlanar(model, options);
+    return run;
+}
+
+// The core's own time for runSlab1D, call by call in a C++ loop (for
+// examples/python/bench_overhead.py: the overhead of a Python call is the difference).
+std::vector<double> coreSeconds(const Slab1DCase& c, double amplitude, double frequency,
+                                int repeats) {
+    checkAmplitudeFrequency(amplitude, frequency);
+    if (repeats < 1 || repeats > 1000000)
+        badArgument("repeats=" + std::to_string(repeats) + ": must be 1 to 1000000");
+    std::vector<double> seconds(static_cast<std::size_t>(repeats));
+    py::gil_scoped_release unlocked;
+    for (double& s : seconds) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const SlabResult r = runSlab1D(c, amplitude, frequency);
+        const auto t1 = std::chrono::steady_clock::now();
+        if (r.outcome == Outcome::Failed) throw std::runtime_error("benchmark run failed");
+        s = std::chrono::duration<double>(t1 - t0).count();
+    }
+    return seconds;
+}
+
+} // namespace
+
+void bindSimulate(py::module_& m) {
+    bindRunResults(m);
+    m.def("simulate", &simulate, py::arg("case"), py::arg("amplitude"), py::arg("frequency"),
+          py::kw_only(), py::arg("events") = false, py::arg("history") = false,
+          py::arg("history_step") = 0.05,
+          "One run of the 1-DOF slab under A e(t) sin(2 pi f t) (amplitude in g, frequency in "
+          "Hz). The GIL is released while it runs.");
+    m.def("simulate_planar", &simulatePlanar, py::arg("case"), py::arg("amplitude"),
+          py::arg("frequency"), py::kw_only(), py::arg("events") = false, py::arg("path") = false,
+          "One run of the planar slab (A_x = amplitude g at frequency Hz across the walls).");
+    m.def("_core_seconds", &coreSeconds, py::arg("case"), py::arg("amplitude"),
+          py::arg("frequency"), py::arg("repeats"));
+}
+
+} // namespace kinstab::python

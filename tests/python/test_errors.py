@@ -1,0 +1,78 @@
+"""Bad arguments raise ValueError with kinstab-cli's message for the same value: the CLI's
+"--mu 11: friction coefficient must be between 0 and 10" is "mu=11.0: friction coefficient must
+be between 0 and 10" in Python. Each case runs both and compares the text after the name."""
+
+import pytest
+
+import kinstab
+
+# (python call, cli arguments, python prefix)
+CASES = [
+    (lambda: kinstab.simulate(0.9, 1.0, mu=11), ["simulate", "--amplitude", "0.9", "--frequency", "1", "--mu", "11"], "mu=11"),
+    (lambda: kinstab.simulate(0.9, 1.0, mu=-0.5), ["simulate", "--amplitude", "0.9", "--frequency", "1", "--mu", "-0.5"], "mu=-0.5"),
+    (lambda: kinstab.simulate(1200, 1.0), ["simulate", "--amplitude", "1200", "--frequency", "1"], "amplitude=1200"),
+    (lambda: kinstab.simulate(0.9, 0), ["simulate", "--amplitude", "0.9", "--frequency", "0"], "frequency=0"),
+    (lambda: kinstab.simulate(0.9, 1.0, tstar=0), ["simulate", "--amplitude", "0.9", "--frequency", "1", "--tstar", "0"], "tstar=0"),
+    (lambda: kinstab.simulate(0.9, 1.0, wall_width_in=2000), ["simulate", "--amplitude", "0.9", "--frequency", "1", "--wall-width-in", "2000"], "wall_width_in=2000"),
+    (lambda: kinstab.simulate(0.9, 1.0, limit=0), ["simulate", "--amplitude", "0.9", "--frequency", "1", "--limit", "0"], "limit=0"),
+    (lambda: kinstab.simulate(0.9, 1.0, duration=-1), ["simulate", "--amplitude", "0.9", "--frequency", "1", "--duration", "-1"], "duration=-1"),
+    (lambda: kinstab.simulate(0.9, 1.0, solver="paper", paper_steps=2), ["simulate", "--amplitude", "0.9", "--frequency", "1", "--solver", "paper", "--paper-steps", "2"], "paper_steps=2"),
+    (lambda: kinstab.simulate(0.9, 1.0, history=True, history_step=0), ["simulate", "--amplitude", "0.9", "--frequency", "1", "--history", "/dev/null", "--history-step", "0"], "history_step=0"),
+    (lambda: kinstab.Envelope(0.5, 0.2), ["simulate", "--amplitude", "0.9", "--frequency", "1", "--alpha", "0.5", "--beta", "0.2"], "alpha/beta"),
+    (lambda: kinstab.surface([0.5, -1], [1.0]), ["surface", "--amplitudes", "0.5,-1", "--frequencies", "1"], "amplitudes"),
+    (lambda: kinstab.surface("1:0:0.1", [1.0]), ["surface", "--amplitudes", "1:0:0.1", "--frequencies", "1"], "amplitudes"),
+    (lambda: kinstab.critical([1.0], scan_step=6), ["critical", "--frequencies", "1", "--scan-step", "6"], "scan_step=6"),
+    (lambda: kinstab.critical([1.0], tolerance=0.1), ["critical", "--frequencies", "1", "--tolerance", "0.1"], "tolerance=0.1"),
+    (lambda: kinstab.simulate(0.9, 1.0, planar=kinstab.Planar(fy=-1)), ["simulate", "--model", "planar", "--amplitude", "0.9", "--frequency", "1", "--fy", "-1"], "fy=-1"),
+    (lambda: kinstab.simulate(0.9, 1.0, planar=kinstab.Planar(fy=1, ay_ratio=200)), ["simulate", "--model", "planar", "--amplitude", "0.9", "--frequency", "1", "--fy", "1", "--ay-ratio", "200"], "ay_ratio=200"),
+    (lambda: kinstab.simulate(0.9, 1.0, planar=kinstab.Planar(fy=1, theta=0)), ["simulate", "--model", "planar", "--amplitude", "0.9", "--frequency", "1", "--fy", "1", "--theta", "0"], "theta=0"),
+]
+
+
+def tail(message):
+    """The message after its "name value" part."""
+    return message.split(": ", 1)[1]
+
+
+@pytest.mark.parametrize("call,cli_args,prefix", CASES)
+def test_message_as_cli(cli, call, cli_args, prefix):
+    code, stderr = cli(*cli_args, expect_ok=False)
+    assert code == 2, stderr
+    cli_message = stderr.split(": error: ", 1)[1]
+    with pytest.raises(ValueError) as e:
+        call()
+    assert str(e.value).startswith(prefix), str(e.value)
+    assert tail(str(e.value)) == tail(cli_message)
+
+
+def test_choice_names_allowed_words():
+    with pytest.raises(ValueError, match=r"^envelope='quick' must be one of fast\|moderate\|slow$"):
+        kinstab.simulate(0.9, 1.0, envelope="quick")
+    with pytest.raises(ValueError, match=r"^scale='max' must be one of one\|tau_dur\|tau_max\|tau_rise$"):
+        kinstab.simulate(0.9, 1.0, scale="max")
+
+
+def test_not_finite_named():
+    with pytest.raises(ValueError, match=r"^mu=nan is not a finite number$"):
+        kinstab.simulate(0.9, 1.0, mu=float("nan"))
+    with pytest.raises(ValueError, match=r"^amplitude=inf is not a finite number$"):
+        kinstab.simulate(float("inf"), 1.0)
+
+
+def test_record_errors_name_the_file(tmp_path):
+    missing = tmp_path / "none.AT2"
+    with pytest.raises(ValueError, match=r"^path='.*none\.AT2': "):
+        kinstab.read_record(str(missing))
+    with pytest.raises(ValueError, match=r"^format='values': needs dt"):
+        kinstab.read_record(str(missing), format="values")
+
+
+def test_codes_errors_name_the_field():
+    with pytest.raises(ValueError, match=r"building\.stories"):
+        kinstab.codes({"stories": -3, "height": 100, "plan_dimension": 50},
+                      ubc1976={"zone": 4, "k": 0.8})
+
+
+def test_case_and_keywords_exclude_each_other():
+    with pytest.raises(ValueError, match="either case= or case keywords"):
+        kinstab.simulate(0.9, 1.0, case=kinstab.SlabCase(), mu=0.5)
