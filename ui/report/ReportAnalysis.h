@@ -7,6 +7,7 @@
 #include "core/codes/CodeResult.h"
 #include "core/codes/DesignCheck.h"
 #include "core/io/Project.h"
+#include "core/slab/PlanarSolver.h"
 #include "core/sweep/RecordAnalysis.h"
 #include "core/sweep/Sweep.h"
 #include "ui/report/FigureData.h"
@@ -40,6 +41,8 @@ struct ReportAnalysis {
     long critRuns = 0;
     SliceData slice;
     std::optional<SolverCrossCheck> crossCheck;
+    // The planar model's integrator settings when the planar model ran (none: the 1-DOF slab).
+    std::optional<PlanarOptions> planarSolver;
     // The project's record, when it has one: single run, critical peak, its verdicts.
     std::optional<RecordAnalysis> record;
     double totalSeconds = 0;
