@@ -37,7 +37,12 @@ QString pdfText(const QString& pdf, int first, int last) {
     return QString::fromUtf8(p.readAllStandardOutput());
 }
 
+// One line of words, with the ligatures poppler keeps from the PDF's fonts spelled out.
 QString flat(QString s) {
+    const std::pair<const char*, const char*> ligatures[] = {
+        {"ﬃ", "ffi"}, {"ﬄ", "ffl"}, {"ﬀ", "ff"}, {"ﬁ", "fi"}, {"ﬂ", "fl"}};
+    for (const auto& [from, to] : ligatures)
+        s.replace(QString::fromUtf8(from), QLatin1String(to));
     return s.simplified();
 }
 
