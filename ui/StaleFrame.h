@@ -4,7 +4,6 @@
 
 #include <QWidget>
 
-class QGraphicsOpacityEffect;
 class QLabel;
 
 namespace kinstab::ui {
@@ -25,7 +24,7 @@ public:
 private:
     QWidget* m_view;
     QLabel* m_line;
-    QGraphicsOpacityEffect* m_dim;
+    QWidget* m_veil; // a translucent white sheet over the view (mouse events pass through)
     bool m_stale = false;
 };
 

@@ -182,6 +182,11 @@ void SurfaceView::setData(const GammaGrid& g) {
         return;
     }
     m_3d->graph->axisY()->setTitle(g.gammaTitle);
+    // A wireframe over thousands of cells is a black sheet that hides the colours.
+    const auto mode = g.gamma.size() > 2500 ? QSurface3DSeries::DrawSurface
+                                            : QSurface3DSeries::DrawSurfaceAndWireframe;
+    m_3d->surface->setDrawMode(mode);
+    m_3d->notComputed->setDrawMode(mode);
     std::vector<float> xs(g.amplitudes.begin(), g.amplitudes.end());
     std::vector<float> zs(g.frequencies.begin(), g.frequencies.end());
     const float nan = std::numeric_limits<float>::quiet_NaN();
