@@ -81,6 +81,7 @@ void MainWindow::showStaleness() {
     const bool recordStale = m_results.recordRun() && m_results.recordRun()->history &&
                              !m_results.picked() && m_results.recordStale();
     m_historyFrame->setStale(pickStale || recordStale);
+    m_excitation->recordInput()->setResultStale(m_results.recordStale());
     m_verdictFrame->setStale(m_results.checkStale());
 }
 

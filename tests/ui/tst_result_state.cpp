@@ -6,12 +6,15 @@
 #include "WindowFields.h"
 #include "core/codes/CodeSet.h"
 #include "core/io/Project.h"
+#include "core/sweep/RecordAnalysis.h"
 #include "ui/CodesPanel.h"
+#include "ui/ExcitationPanel.h"
 #include "ui/GridPanel.h"
 #include "ui/HeatMapView.h"
 #include "ui/HistoryChart.h"
 #include "ui/MainWindow.h"
 #include "ui/NumberField.h"
+#include "ui/RecordInput.h"
 #include "ui/SlabPanel.h"
 #include "ui/StaleFrame.h"
 #include "ui/SurfaceView.h"
@@ -172,6 +175,37 @@ private slots:
         QVERIFY(!w->surfaceView()->isStale());
         QVERIFY(!w->verdictFrame()->isStale());
         QCOMPARE(w->lastCheck()->codes.size(), std::size_t(4));
+    }
+
+    // The record example: its critical peak serves every code (one peak for the record), so a
+    // code-only change re-judges at once; a slab change makes the record run stale.
+    void recordVerdictFollowsCodeInputs() {
+        QVERIFY(w->openProject(KINSTAB_SOURCE_DIR "/resources/examples/paper-16-story-record.json",
+                               true));
+        QSignalSpy spy(w.get(), &MainWindow::recordRunFinished);
+        w->runAction()->trigger();
+        QVERIFY(spy.wait(120000));
+        QVERIFY(w->lastRecordRun() && w->lastRecordRun()->analysis);
+        const RecordAnalysis& a = *w->lastRecordRun()->analysis;
+        QVERIFY(a.critical && a.critical->peak);
+        QVERIFY(w->lastCheck().has_value());
+
+        ubcZone()->setCurrentText("3");
+        const Project p = w->project();
+        const std::vector<CodeResult> codes = runCodes(p.building, p.codes);
+        QVERIFY(!w->results().checkStale());
+        QVERIFY(!w->results().recordStale());
+        const CodeVerdict& ubc = w->lastCheck()->codes.front();
+        QCOMPARE(ubc.ratio, codes.front().topRatio);
+        QCOMPARE(ubc.aCrit, a.critical->peak);
+        QCOMPARE_LE(std::abs(*ubc.margin - *a.critical->peak / codes.front().topRatio), 1e-12);
+
+        setText("mu", "0.5");
+        QVERIFY(w->results().recordStale());
+        QVERIFY(w->results().checkStale());
+        QVERIFY(w->historyFrame()->isStale());
+        QVERIFY(
+            w->excitationPanel()->recordInput()->resultText().startsWith(StaleFrame::staleText()));
     }
 
     void cancelDrawsNotComputedPoints() {
