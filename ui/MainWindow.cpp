@@ -313,7 +313,7 @@ void MainWindow::showProgress(qint64 done, qint64 total, double secondsLeft) {
 }
 
 void MainWindow::showPartial(const SweepResult& r) {
-    if (!m_results.surface()) return;
+    if (!m_results.awaits(ResultState::Run::Sweep) || !m_results.surface()) return;
     const SurfaceResult& s = *m_results.surface();
     GammaGrid g = gammaGrid(r, s.planar ? s.planar->tauRef() : s.slabCase.tauRef());
     g.gammaTitle = gammaTitle(s.slabCase.scale) + modelTitle();
@@ -323,6 +323,12 @@ void MainWindow::showPartial(const SweepResult& r) {
 }
 
 void MainWindow::showFinished(const SweepOutput& out) {
+    if (!m_results.awaits(ResultState::Run::Sweep)) { // a run of the project closed by Open/New
+        m_progress->hide();
+        updateRunState();
+        emit sweepFinished();
+        return;
+    }
     showPartial(out.sweep);
     m_overlays.aCrit.clear();
     for (std::size_t j = 0; j < out.aCrit.size(); ++j)
@@ -332,6 +338,7 @@ void MainWindow::showFinished(const SweepOutput& out) {
     refreshOverlays();
     if (out.check)
         m_results.setCheck(*out.check, {CheckBasis::Source::Sine, m_project.critical.to, {}, {}});
+    m_results.runEnded();
     inputsChanged(); // code inputs changed while it ran: re-judge now
     if (!out.check && !out.checkError.empty())
         m_verdict->setError(QString::fromStdString(out.checkError));

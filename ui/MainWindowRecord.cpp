@@ -72,8 +72,14 @@ void MainWindow::runRecord() {
 }
 
 void MainWindow::showRecordFinished(const RecordOutput& out) {
-    m_results.setRecordRun(out);
     m_progress->hide();
+    if (!m_results.awaits(ResultState::Run::Record)) { // a run of the project closed by Open/New
+        updateRunState();
+        emit recordRunFinished();
+        return;
+    }
+    m_results.runEnded();
+    m_results.setRecordRun(out);
     RecordInput* input = m_excitation->recordInput();
     if (!out.analysis) {
         input->setResult(QString::fromStdString(out.error), true);

@@ -30,6 +30,9 @@ const std::optional<PlanarCase>& MainWindow::sweepPlanarCase() const {
 }
 
 void MainWindow::clearResults() {
+    // A run still going belongs to the previous inputs: stopped, and its end is not shown.
+    m_runner->cancel();
+    m_recordRunner->cancel();
     m_results.clear();
     m_overlays.aCrit.clear();
     m_selA = m_selF = -1;

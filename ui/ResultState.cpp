@@ -36,6 +36,7 @@ std::optional<DesignCheckResult> rejudge(const DesignCheckResult& kept, const Ch
 }
 
 void ResultState::clear() {
+    m_pending = Run::None;
     m_surface.reset();
     m_picked.reset();
     m_pickedPlanar.reset();
@@ -60,6 +61,7 @@ bool ResultState::setInputs(const std::optional<InputFingerprint>& now,
 
 void ResultState::startSweep(const Slab1DCase& c, const std::optional<PlanarCase>& planar) {
     m_runKey = m_now.value_or(InputFingerprint{});
+    m_pending = Run::Sweep;
     m_surface = SurfaceResult{c, planar, {}, {}, {}};
     m_surfaceKey = m_runKey.sweep;
     m_picked.reset();
@@ -90,6 +92,7 @@ void ResultState::setPicked(std::optional<PointRun> run, std::optional<PlanarPoi
 
 void ResultState::startRecordRun() {
     m_runKey = m_now.value_or(InputFingerprint{});
+    m_pending = Run::Record;
     m_record.reset();
     m_check.reset();
     m_picked.reset(); // the history chart shows the record's run from now on

@@ -68,6 +68,12 @@ public:
     bool setInputs(const std::optional<InputFingerprint>& now,
                    const std::vector<CodeResult>& codes);
 
+    // The run whose results are awaited: after New/Open none is, so a run still ending from the
+    // previous project is dropped instead of shown under the new one.
+    enum class Run { None, Sweep, Record };
+    bool awaits(Run r) const { return m_pending == r; }
+    void runEnded() { m_pending = Run::None; }
+
     // A sweep started with the current inputs: the old surface, curve, history and check go.
     void startSweep(const Slab1DCase& c, const std::optional<PlanarCase>& planar);
     void setSweepProgress(const SweepResult& r, const GammaGrid& g);
@@ -94,6 +100,7 @@ public:
 private:
     std::optional<InputFingerprint> m_now;
     InputFingerprint m_runKey; // inputs of the run in progress or last run
+    Run m_pending = Run::None;
 
     std::optional<SurfaceResult> m_surface;
     std::string m_surfaceKey;

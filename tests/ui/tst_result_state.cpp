@@ -108,6 +108,25 @@ private slots:
         QVERIFY(!w->criticalFrame()->isStale());
     }
 
+    // Open while a sweep runs: the sweep stops, and what it had computed is not shown under the
+    // project just opened.
+    void openingDuringSweepDropsItsResults() {
+        w->gridPanel()->setRanges(GridRanges{0.6, 1.5, 0.01, 10.0, 30.0, 0.1}); // seconds of work
+        QSignalSpy spy(w.get(), &MainWindow::sweepFinished);
+        w->runAction()->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(w->runner()->snapshot().completed > 20, 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(!w->surfaceView()->data().empty(), 5000); // partial surface
+        const QString path = dir_.filePath("opened-while-running.json");
+        saveProject(w->project(), path.toStdString());
+        QVERIFY(w->openProject(path, true));
+        QVERIFY(spy.count() > 0 || spy.wait(10000));
+        QTest::qWait(2 * SweepRunner::updateIntervalMs); // no late partial result either
+        QVERIFY(w->surfaceView()->data().empty());
+        QCOMPARE(w->lastSweep().grid.size(), std::size_t(0));
+        QVERIFY(!w->lastCheck().has_value());
+        QVERIFY(w->runAction()->isEnabled());
+    }
+
     void codeOnlyChangeKeepsACritAndUpdatesVerdict() {
         runSmallSweep();
         const CodeVerdict before = w->lastCheck()->codes.front(); // UBC 1976
