@@ -178,6 +178,11 @@ void addExcitationSection(ReportDocument& doc, const Project& p, const ReportAna
     const Slab1DCase& c = p.slab;
     const Envelope& e = c.envelope;
     doc.addSection(QStringLiteral("Excitation"));
+    if (p.record)
+        doc.addParagraph(QStringLiteral(
+            "The project's excitation is a record (section \"Recorded excitation\"), on which the "
+            "verdict rests. The enveloped sine below gives the γc surfaces, A_crit(f) and the "
+            "secondary design check, for comparison."));
     doc.addParagraph(
         QStringLiteral(
             "Enveloped sine floor acceleration (Furgerson 1980, ch. IV): a(τ) = (A / S_max) · "

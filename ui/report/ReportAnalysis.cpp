@@ -112,6 +112,7 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
         planar ? std::optional(projectPlanarCase(c, project.planar)) : std::nullopt;
     const ModelPoint model = modelPoint(c, planarCase);
     if (planarCase) a.planarSolver = planarCase->solver;
+    a.scanFrom = model.scanFrom;
     a.codes = runCodes(project.building, project.codes);
     auto t = std::chrono::steady_clock::now();
     a.check = designCheck(a.codes, c, project.critical, model.point, model.scanFrom);

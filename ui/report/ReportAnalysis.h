@@ -43,6 +43,9 @@ struct ReportAnalysis {
     std::optional<SolverCrossCheck> crossCheck;
     // The planar model's integrator settings when the planar model ran (none: the 1-DOF slab).
     std::optional<PlanarOptions> planarSolver;
+    // Where every A_crit scan started, below which nothing slips: μ for the 1-DOF slab, the
+    // planar no-slip amplitude for the planar model.
+    double scanFrom = 0;
     // The project's record, when it has one: single run, critical peak, its verdicts.
     std::optional<RecordAnalysis> record;
     double totalSeconds = 0;

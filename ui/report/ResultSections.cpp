@@ -161,8 +161,12 @@ void addNumericsSection(ReportDocument& doc, const Project& p, const ReportAnaly
     t.rows.push_back({"solver", solverDescription(p, a)});
     t.rows.push_back(
         {"A_crit search",
-         QStringLiteral("scan from max(μ, %1) in steps of %2 g up to %3 g, then bisection to %4 g")
-             .arg(num(p.critical.from, 2), num(p.critical.scanStep, 4), num(p.critical.to, 2),
+         QStringLiteral("scan from max(%1, %2) g (%3) in steps of %4 g up to %5 g, then "
+                        "bisection to %6 g")
+             .arg(num(a.scanFrom, 4), num(p.critical.from, 2),
+                  a.planarSolver ? QStringLiteral("below the first: no slip in the planar model")
+                                 : QStringLiteral("the first is μ: below it nothing slips"),
+                  num(p.critical.scanStep, 4), num(p.critical.to, 2),
                   num(p.critical.tolerance, 6))});
     if (a.crossCheck) {
         const SolverCrossCheck& x = *a.crossCheck;
