@@ -13,6 +13,7 @@
 #include "ui/HeatMapView.h"
 #include "ui/HistoryChart.h"
 #include "ui/MainWindow.h"
+#include "ui/ModelPanel.h"
 #include "ui/NumberField.h"
 #include "ui/RecordInput.h"
 #include "ui/SlabPanel.h"
@@ -187,6 +188,14 @@ private slots:
         QVERIFY(!w->results().surfaceStale());
         QVERIFY(!w->historyFrame()->isStale());
         QVERIFY(!lineShown(w->surfaceView()));
+
+        // Switching the model is a sweep input too (the issue: results stayed under it).
+        const Project p = w->project();
+        w->modelPanel()->load("planar", p.planar);
+        QVERIFY(w->results().surfaceStale());
+        QVERIFY(w->surfaceView()->isStale());
+        w->modelPanel()->load("slab1d", p.planar);
+        QVERIFY(!w->results().surfaceStale());
 
         setText("mu", "0.5");
         QVERIFY(w->results().surfaceStale());
