@@ -103,7 +103,7 @@ private slots:
         QVERIFY(!w->pickedRun().has_value());
         QCOMPARE(w->historyChart()->sampleCount(), 0);
         // The verdict asks for a run; nothing is dimmed, since nothing is shown.
-        QCOMPARE(w->verdictPanel()->verdictText(0), QStringLiteral("run the sweep"));
+        QCOMPARE(w->verdictPanel()->verdictText(0), QStringLiteral("press Run"));
         QVERIFY(!w->surfaceView()->isStale());
         QVERIFY(!w->verdictFrame()->isStale());
         QVERIFY(!w->criticalFrame()->isStale());
