@@ -1,6 +1,10 @@
 #include "ui/AutoScreenshot.h"
 
+#include "ui/CodesPanel.h"
+#include "ui/GridPanel.h"
 #include "ui/MainWindow.h"
+#include "ui/NumberField.h"
+#include "ui/SlabPanel.h"
 #include "ui/SurfaceView.h"
 
 #include <QApplication>
@@ -8,6 +12,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 namespace kinstab::ui {
 
@@ -18,7 +23,60 @@ int nearest(const std::vector<double>& v, double x) {
         if (std::abs(v[i] - x) < std::abs(v[best] - x)) best = i;
     return static_cast<int>(best);
 }
+void saveAndQuit(MainWindow& window, const QString& path) {
+    // After the charts and the 3D view have repainted.
+    QTimer::singleShot(1500, &window, [&window, path] {
+        const bool ok = window.screenshot().save(path);
+        std::fprintf(stderr, "%s %s\n", ok ? "wrote" : "could not write", qPrintable(path));
+        QApplication::exit(ok ? 0 : 1);
+    });
+}
+
+void pickFig35(MainWindow& window) {
+    const SweepGrid& g = window.lastSweep().grid;
+    if (!g.amplitudes.empty() && !g.frequencies.empty())
+        window.surfaceView()->selectPoint(nearest(g.amplitudes, 1.0),
+                                          nearest(g.frequencies, 1.125));
+}
+
+// The step after the first sweep: changes inputs through the panels, as a user would.
+void applyStep(MainWindow& window, const QString& step) {
+    if (step.startsWith(QLatin1String("open:"))) {
+        window.openProject(step.mid(5), true);
+    } else if (step == QLatin1String("codes")) {
+        CodeSelection c = window.codesPanel()->codes();
+        if (c.ubc1976) c.ubc1976->zone = 3;
+        window.codesPanel()->setCodes(c);
+    } else if (step == QLatin1String("mu")) {
+        if (auto* mu = window.slabPanel()->findChild<NumberField*>(QStringLiteral("mu")))
+            mu->setValue(window.currentCase().slab.mu + 0.05);
+    }
+}
+
 } // namespace
+
+QString screenshotScenario(MainWindow& window, const QString& step, const QString& path) {
+    const bool known = step.startsWith(QLatin1String("open:")) || step == QLatin1String("codes") ||
+                       step == QLatin1String("mu") || step == QLatin1String("cancel");
+    if (!known)
+        return QStringLiteral("--scenario %1: must be open:PROJECT, codes, mu or cancel").arg(step);
+    window.resize(1280, 800);
+    auto once = std::make_shared<bool>(false);
+    QObject::connect(&window, &MainWindow::sweepFinished, &window, [&window, step, path, once] {
+        if (*once) return;
+        *once = true;
+        pickFig35(window);
+        if (step != QLatin1String("cancel")) applyStep(window, step);
+        saveAndQuit(window, path);
+    });
+    if (step == QLatin1String("cancel")) {
+        // Long enough that the cancel comes first (tests/ui/tst_mainwindow: seconds of work).
+        window.gridPanel()->setRanges(GridRanges{0.6, 1.5, 0.01, 10.0, 30.0, 0.1});
+        QTimer::singleShot(2000, &window, &MainWindow::cancelSweep);
+    }
+    QTimer::singleShot(500, &window, &MainWindow::runSweep);
+    return {};
+}
 
 void screenshotAfterSweep(MainWindow& window, const QString& path) {
     const auto grab = [&window, path] {

@@ -11,4 +11,13 @@ class MainWindow;
 
 void screenshotAfterSweep(MainWindow& window, const QString& path);
 
+// `kinstab --screenshot FILE --scenario STEP`: the sweep as above, then one step before the
+// image, to show how results follow their inputs (ui/ResultState.h):
+//   open:PROJECT  open a second project (every result cleared);
+//   codes         a code input only (UBC 1976 zone 4 -> 3): A_crit kept, verdict re-judged;
+//   mu            a sweep input (the slab's mu + 0.05): every result dimmed as stale;
+//   cancel        a sweep at 10-30 Hz cancelled after 1.5 s: points not computed in grey.
+// Returns an error message for an unknown step (empty when it starts).
+QString screenshotScenario(MainWindow& window, const QString& step, const QString& path);
+
 } // namespace kinstab::ui

@@ -22,6 +22,10 @@ QColor gammaColor(double t) {
                   mix(stops[i].blue(), stops[i + 1].blue()));
 }
 
+QColor notComputedColor() {
+    return QColor(205, 205, 205);
+}
+
 HeatMapView::HeatMapView(QWidget* parent) : QWidget(parent) {
     setMinimumSize(300, 250);
     setToolTip(tr("γc(A, f) as a colour map (OpenGL is not available for the 3D view). Click a "
@@ -37,6 +41,11 @@ void HeatMapView::setData(const GammaGrid& g) {
 void HeatMapView::setOverlays(const SurfaceOverlays& o) {
     m_overlays = o;
     updateRanges();
+    update();
+}
+
+void HeatMapView::setStale(bool stale) {
+    m_stale = stale;
     update();
 }
 
@@ -87,6 +96,7 @@ void HeatMapView::paintEvent(QPaintEvent*) {
     paintCells(p);
     paintOverlays(p);
     paintAxes(p);
+    if (m_stale) p.fillRect(rect(), QColor(255, 255, 255, 165)); // dimmed, still readable
 }
 
 void HeatMapView::paintCells(QPainter& p) const {
@@ -98,7 +108,7 @@ void HeatMapView::paintCells(QPainter& p) const {
     for (std::size_t i = 0; i < as.size(); ++i)
         for (std::size_t j = 0; j < fs.size(); ++j) {
             const double g = m_grid.at(i, j);
-            const QColor c = std::isfinite(g) ? gammaColor(g / m_gMax) : QColor(200, 200, 200);
+            const QColor c = std::isfinite(g) ? gammaColor(g / m_gMax) : notComputedColor();
             cells.setPixel(static_cast<int>(i), static_cast<int>(fs.size() - 1 - j), c.rgb());
         }
     // Cell edges half a step beyond the first and last grid values (uniform grids).

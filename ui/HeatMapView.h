@@ -16,6 +16,8 @@ public:
     void setData(const GammaGrid& g);
     void setOverlays(const SurfaceOverlays& o);
     void setSelected(int ai, int fi);
+    // Dims the map: it was computed with other inputs than the panels now show.
+    void setStale(bool stale);
     QSize sizeHint() const override { return {500, 400}; }
 
 signals:
@@ -38,9 +40,12 @@ private:
     SurfaceOverlays m_overlays;
     double m_aMin = 0, m_aMax = 1, m_fMin = 0, m_fMax = 1, m_gMax = 1;
     int m_selA = -1, m_selF = -1;
+    bool m_stale = false;
 };
 
 // Colour of γc / γmax in [0, 1] (the 3D surface uses the same stops).
 QColor gammaColor(double t);
+// Colour of a point not computed (a cancelled or running sweep): light grey, unlike any γc.
+QColor notComputedColor();
 
 } // namespace kinstab::ui

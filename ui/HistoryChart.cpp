@@ -104,4 +104,11 @@ void HistoryChart::setRun(const PointRun& run) {
         tr("%1: %2, %3 slip intervals (cf. Fig. 35)").arg(drive, outcome).arg(r.slipIntervals));
 }
 
+void HistoryChart::clearRun() {
+    for (QLineSeries* s :
+         {m_delta, m_accel, m_envUp, m_envDown, m_muUp, m_muDown, m_slipTop, m_slipBase})
+        s->clear();
+    chart()->setTitle(tr("History of a picked point — click the surface"));
+}
+
 } // namespace kinstab::ui

@@ -17,6 +17,7 @@ class HistoryChart : public QChartView {
 public:
     explicit HistoryChart(QWidget* parent = nullptr);
     void setRun(const PointRun& run);
+    void clearRun();         // no picked point (New/Open)
     int sampleCount() const; // points in the δ(τ) series (tests)
 
 private:

@@ -19,6 +19,7 @@
 #include "ui/RecentFiles.h"
 #include "ui/SlabPanel.h"
 #include "ui/SliceChart.h"
+#include "ui/StaleFrame.h"
 #include "ui/SurfaceView.h"
 #include "ui/VerdictPanel.h"
 #include "ui/report/ReportExport.h"
@@ -111,6 +112,10 @@ MainWindow::MainWindow(QWidget* parent)
         connect(p, &InputPanel::changed, this, &MainWindow::updateRunState);
     for (InputPanel* p : std::initializer_list<InputPanel*>{m_building, m_codesPanel})
         connect(p, &InputPanel::changed, this, &MainWindow::updateCodes);
+    // After updateCodes: results are judged against the code ratios of the new inputs.
+    for (InputPanel* p : std::initializer_list<InputPanel*>{
+             m_building, m_codesPanel, m_slabPanel, m_modelPanel, m_excitation, m_gridPanel})
+        connect(p, &InputPanel::changed, this, &MainWindow::inputsChanged);
     connect(m_building, &BuildingPanel::unitsChanged, m_slabPanel, &SlabPanel::setMetric);
     connect(m_modelPanel, &InputPanel::changed, this, &MainWindow::updateTitle);
     connect(m_slabPanel, &InputPanel::changed, this, [this] {
@@ -204,18 +209,24 @@ void MainWindow::buildDocks() {
     // Verdict under the inputs first, then the other inputs tabbed with the first.
     for (const auto& [title, w] : inputs)
         m_inputDocks.push_back(addPanelDock(title, scrollable(w), Qt::LeftDockWidgetArea));
-    QDockWidget* verdict = addPanelDock(tr("Verdict"), m_verdict, Qt::LeftDockWidgetArea);
+    m_verdictFrame = new StaleFrame(m_verdict);
+    QDockWidget* verdict = addPanelDock(tr("Verdict"), m_verdictFrame, Qt::LeftDockWidgetArea);
     splitDockWidget(m_inputDocks.front(), verdict, Qt::Vertical);
     for (std::size_t i = 1; i < m_inputDocks.size(); ++i)
         tabifyDockWidget(m_inputDocks.front(), m_inputDocks[i]);
     m_inputDocks.front()->raise();
     resizeDocks({verdict}, {200}, Qt::Vertical);
-    QDockWidget* slice = addPanelDock(tr("γc, τc against A"), m_slice, Qt::BottomDockWidgetArea);
+    m_sliceFrame = new StaleFrame(m_slice);
+    QDockWidget* slice =
+        addPanelDock(tr("γc, τc against A"), m_sliceFrame, Qt::BottomDockWidgetArea);
     m_historyStack = new QStackedWidget;
     m_historyStack->addWidget(m_history);
     m_historyStack->addWidget(m_planarHistory);
-    QDockWidget* history = addPanelDock(tr("History"), m_historyStack, Qt::BottomDockWidgetArea);
-    QDockWidget* critical = addPanelDock(tr("A_crit(f)"), m_critical, Qt::BottomDockWidgetArea);
+    m_historyFrame = new StaleFrame(m_historyStack);
+    QDockWidget* history = addPanelDock(tr("History"), m_historyFrame, Qt::BottomDockWidgetArea);
+    m_criticalFrame = new StaleFrame(m_critical);
+    QDockWidget* critical =
+        addPanelDock(tr("A_crit(f)"), m_criticalFrame, Qt::BottomDockWidgetArea);
     splitDockWidget(slice, history, Qt::Horizontal);
     splitDockWidget(history, critical, Qt::Horizontal);
     resizeDocks({slice, history, critical}, {300, 300, 300}, Qt::Vertical);
@@ -272,9 +283,13 @@ void MainWindow::runSweep() {
         return;
     }
     if (!preparePlanar(job)) return;
-    m_sweepCase = job.slabCase;
-    m_sweepPlanar = job.planar;
+    // The old surface, curve, history and verdicts go: the new run replaces them.
+    m_results.startSweep(job.slabCase, job.planar);
     m_overlays.aCrit.clear();
+    m_history->clearRun();
+    m_planarHistory->clearRun();
+    showVerdict();
+    showStaleness();
     m_runner->start(job);
     m_progress->setRange(0, 1000);
     m_progress->setValue(0);
@@ -300,24 +315,34 @@ void MainWindow::showProgress(qint64 done, qint64 total, double secondsLeft) {
 }
 
 void MainWindow::showPartial(const SweepResult& r) {
-    m_sweep = r;
-    m_gamma = gammaGrid(r, m_sweepPlanar ? m_sweepPlanar->tauRef() : m_sweepCase.tauRef());
-    m_gamma.gammaTitle = gammaTitle(m_sweepCase.scale) + modelTitle();
-    m_surface->setData(m_gamma);
+    if (!m_results.awaits(ResultState::Run::Sweep) || !m_results.surface()) return;
+    const SurfaceResult& s = *m_results.surface();
+    GammaGrid g = gammaGrid(r, s.planar ? s.planar->tauRef() : s.slabCase.tauRef());
+    g.gammaTitle = gammaTitle(s.slabCase.scale) + modelTitle();
+    m_results.setSweepProgress(r, g);
+    m_surface->setData(g);
     updateSlice();
 }
 
 void MainWindow::showFinished(const SweepOutput& out) {
+    if (!m_results.awaits(ResultState::Run::Sweep)) { // a run of the project closed by Open/New
+        m_progress->hide();
+        updateRunState();
+        emit sweepFinished();
+        return;
+    }
     showPartial(out.sweep);
     m_overlays.aCrit.clear();
     for (std::size_t j = 0; j < out.aCrit.size(); ++j)
         if (out.aCrit[j])
             m_overlays.aCrit.emplace_back(out.sweep.grid.frequencies[j], *out.aCrit[j]);
+    m_results.setACrit(m_overlays.aCrit);
     refreshOverlays();
-    m_check = out.check;
     if (out.check)
-        m_verdict->setCheck(*out.check);
-    else if (!out.checkError.empty())
+        m_results.setCheck(*out.check, {CheckBasis::Source::Sine, m_project.critical.to, {}, {}});
+    m_results.runEnded();
+    inputsChanged(); // code inputs changed while it ran: re-judge now
+    if (!out.check && !out.checkError.empty())
         m_verdict->setError(QString::fromStdString(out.checkError));
     m_progress->hide();
     m_status->setText(out.cancelled ? tr("Cancelled: %1 of %2 points computed and shown (%3 s)")
@@ -333,48 +358,55 @@ void MainWindow::showFinished(const SweepOutput& out) {
 
 void MainWindow::refreshOverlays() {
     m_surface->setOverlays(m_overlays);
-    if (!m_gamma.empty())
-        m_critical->setData(m_overlays, m_gamma.frequencies.front(), m_gamma.frequencies.back());
+    const GammaGrid& g = m_surface->data();
+    if (!g.empty()) m_critical->setData(m_overlays, g.frequencies.front(), g.frequencies.back());
 }
 
 void MainWindow::pickPoint(int ai, int fi) {
-    if (m_gamma.empty() || ai < 0 || fi < 0) return;
+    const std::optional<SurfaceResult>& s = m_results.surface();
+    if (!s || s->gamma.empty() || ai < 0 || fi < 0) return;
     m_selA = ai;
     m_selF = fi;
     updateSlice();
-    const double a = m_gamma.amplitudes[static_cast<std::size_t>(ai)];
-    const double f = m_gamma.frequencies[static_cast<std::size_t>(fi)];
+    const double a = s->gamma.amplitudes[static_cast<std::size_t>(ai)];
+    const double f = s->gamma.frequencies[static_cast<std::size_t>(fi)];
     m_teaching->showPoint(a, f); // the teaching tab follows the pick
-    if (m_sweepPlanar) {
+    if (s->planar) {
         pickPlanar(a, f);
         return;
     }
     m_historyStack->setCurrentWidget(m_history);
-    m_picked = runPoint(m_sweepCase, a, f);
-    m_history->setRun(*m_picked);
+    // Run with the inputs the surface was made with, so the history matches the surface.
+    m_results.setPicked(runPoint(s->slabCase, a, f), std::nullopt);
+    m_history->setRun(*m_results.picked());
 }
 
 void MainWindow::updateSlice() {
-    if (m_selF < 0 || m_gamma.empty() ||
-        static_cast<std::size_t>(m_selF) >= m_gamma.frequencies.size())
+    if (!m_results.surface()) return;
+    const GammaGrid& gamma = m_results.surface()->gamma;
+    const SweepResult& sweep = m_results.surface()->sweep;
+    if (m_selF < 0 || gamma.empty() || static_cast<std::size_t>(m_selF) >= gamma.frequencies.size())
         return;
     const auto fi = static_cast<std::size_t>(m_selF);
     std::vector<double> g, t;
-    for (std::size_t i = 0; i < m_gamma.amplitudes.size(); ++i) {
-        g.push_back(m_gamma.at(i, fi));
-        const std::size_t k = i * m_gamma.frequencies.size() + fi;
-        t.push_back(m_sweep.done[k] && m_sweep.points[k].outcome == Outcome::Collapsed
-                        ? m_sweep.points[k].tauC
+    for (std::size_t i = 0; i < gamma.amplitudes.size(); ++i) {
+        g.push_back(gamma.at(i, fi));
+        const std::size_t k = i * gamma.frequencies.size() + fi;
+        t.push_back(sweep.done[k] && sweep.points[k].outcome == Outcome::Collapsed
+                        ? sweep.points[k].tauC
                         : std::nan(""));
     }
-    m_slice->setSlice(m_gamma.frequencies[fi], m_gamma.amplitudes, g, t, m_gamma.gammaTitle);
+    m_slice->setSlice(gamma.frequencies[fi], gamma.amplitudes, g, t, gamma.gammaTitle);
 }
 
 void MainWindow::exportSurface() {
-    if (m_gamma.empty()) {
+    if (!m_results.surface() || m_results.surface()->gamma.empty()) {
         m_status->setText(tr("Nothing to export: run a sweep first"));
         return;
     }
+    const SweepResult& sweep = m_results.surface()->sweep; // with the inputs it was run with
+    const Slab1DCase& sweepCase = m_results.surface()->slabCase;
+    const std::optional<PlanarCase>& sweepPlanar = m_results.surface()->planar;
     const QString path =
         QFileDialog::getSaveFileName(this, tr("Export surface"), QStringLiteral("surface.csv"),
                                      tr("CSV (*.csv);;JSON (*.json)"));
@@ -382,18 +414,18 @@ void MainWindow::exportSurface() {
     std::string text;
     if (path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive)) {
         using nlohmann::json;
-        json j = sweepJson(m_sweep, m_sweepCase.tauRef());
+        json j = sweepJson(sweep, sweepCase.tauRef());
         j["model"] = "slab1d";
-        j["solver"] = solverName(m_sweepCase.solver);
-        j["envelope"] = {{"name", m_sweepCase.envelope.name()},
-                         {"alpha", m_sweepCase.envelope.alpha},
-                         {"beta", m_sweepCase.envelope.beta},
-                         {"scale", tauScaleName(m_sweepCase.scale)}};
-        j["mu"] = m_sweepCase.slab.mu;
-        j["tstar"] = m_sweepCase.tstar;
-        j["limit"] = m_sweepCase.slab.limit;
-        if (m_sweepPlanar) {
-            const PlanarCase& c = *m_sweepPlanar;
+        j["solver"] = solverName(sweepCase.solver);
+        j["envelope"] = {{"name", sweepCase.envelope.name()},
+                         {"alpha", sweepCase.envelope.alpha},
+                         {"beta", sweepCase.envelope.beta},
+                         {"scale", tauScaleName(sweepCase.scale)}};
+        j["mu"] = sweepCase.slab.mu;
+        j["tstar"] = sweepCase.tstar;
+        j["limit"] = sweepCase.slab.limit;
+        if (sweepPlanar) {
+            const PlanarCase& c = *sweepPlanar;
             j.update({{"model", "planar"},
                       {"solver", "dopri5"},
                       {"fy", c.fyHz},
@@ -404,7 +436,7 @@ void MainWindow::exportSurface() {
         }
         text = j.dump(1) + "\n";
     } else {
-        text = sweepCsv(m_sweep, m_sweepCase.tauRef());
+        text = sweepCsv(sweep, sweepCase.tauRef());
     }
     QSaveFile f(path); // atomic: a failed write leaves the old file alone
     if (!f.open(QIODevice::WriteOnly) ||

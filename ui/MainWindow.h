@@ -7,6 +7,7 @@
 #include "ui/PlanarPointRun.h"
 #include "ui/PointRun.h"
 #include "ui/RecordRunner.h"
+#include "ui/ResultState.h"
 #include "ui/SurfaceData.h"
 #include "ui/SweepRunner.h"
 
@@ -41,6 +42,7 @@ class TeachingView;
 class RecordsTab;
 class NumericsView;
 class FrictionPanel;
+class StaleFrame;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -74,8 +76,10 @@ public:
     ModelPanel* modelPanel() const { return m_modelPanel; }
     PlanarHistoryChart* planarHistoryChart() const { return m_planarHistory; }
     // The planar case the surface was computed with (none: the 1-DOF model).
-    const std::optional<PlanarCase>& sweepPlanarCase() const { return m_sweepPlanar; }
-    const std::optional<PlanarPointRun>& pickedPlanarRun() const { return m_pickedPlanar; }
+    const std::optional<PlanarCase>& sweepPlanarCase() const;
+    const std::optional<PlanarPointRun>& pickedPlanarRun() const {
+        return m_results.pickedPlanar();
+    }
     ExcitationPanel* excitationPanel() const { return m_excitation; }
     GridPanel* gridPanel() const { return m_gridPanel; }
     BuildingPanel* buildingPanel() const { return m_building; }
@@ -83,12 +87,19 @@ public:
     VerdictPanel* verdictPanel() const { return m_verdict; }
     TeachingView* teachingView() const { return m_teaching; }
     const QString& projectPath() const { return m_path; }
-    const SweepResult& lastSweep() const { return m_sweep; }
-    const std::optional<PointRun>& pickedRun() const { return m_picked; }
-    const std::optional<DesignCheckResult>& lastCheck() const { return m_check; }
+    // Every shown result with the inputs it was made with (ui/ResultState.h).
+    const ResultState& results() const { return m_results; }
+    const SweepResult& lastSweep() const; // empty when there is no surface
+    const std::optional<PointRun>& pickedRun() const { return m_results.picked(); }
+    const std::optional<DesignCheckResult>& lastCheck() const { return m_results.check(); }
     RecordRunner* recordRunner() const { return m_recordRunner; }
     // The last record run (MainWindowRecord.cpp): single run, critical scale, verdicts.
-    const std::optional<RecordOutput>& lastRecordRun() const { return m_recordRun; }
+    const std::optional<RecordOutput>& lastRecordRun() const { return m_results.recordRun(); }
+    // The result frames (dimmed with "inputs changed — Run to update" while stale).
+    StaleFrame* sliceFrame() const { return m_sliceFrame; }
+    StaleFrame* historyFrame() const { return m_historyFrame; }
+    StaleFrame* criticalFrame() const { return m_criticalFrame; }
+    StaleFrame* verdictFrame() const { return m_verdictFrame; }
 
 public slots:
     void runSweep();
@@ -118,6 +129,12 @@ private:
     void pickPoint(int ai, int fi);
     void updateSlice();
     void refreshOverlays();
+    // Results against the inputs now shown (MainWindowResults.cpp): New/Open clear them, an
+    // input change re-judges what it can and marks the rest stale.
+    void clearResults();
+    void inputsChanged();
+    void showStaleness();
+    void showVerdict();
     void exportSurface();
     void exportChart(QChartView* view, const QString& name);
     // The planar model (MainWindowPlanar.cpp).
@@ -152,7 +169,6 @@ private:
     RecentFiles* m_recent = nullptr;
     SweepRunner* m_runner;
     RecordRunner* m_recordRunner = nullptr;
-    std::optional<RecordOutput> m_recordRun;
     QAction* m_run = nullptr;
     QAction* m_cancel = nullptr;
     QMenu* m_viewMenu = nullptr;
@@ -164,15 +180,12 @@ private:
     QString m_path;
     std::vector<CodeResult> m_codeResults;
 
-    // What the surface shows, and the case it was computed with.
-    Slab1DCase m_sweepCase;
-    SweepResult m_sweep;
-    GammaGrid m_gamma;
-    SurfaceOverlays m_overlays;
-    std::optional<PointRun> m_picked;
-    std::optional<PlanarCase> m_sweepPlanar;
-    std::optional<PlanarPointRun> m_pickedPlanar;
-    std::optional<DesignCheckResult> m_check;
+    ResultState m_results;
+    SurfaceOverlays m_overlays; // code ratios and building frequency (inputs), A_crit (result)
+    StaleFrame* m_sliceFrame = nullptr;
+    StaleFrame* m_historyFrame = nullptr;
+    StaleFrame* m_criticalFrame = nullptr;
+    StaleFrame* m_verdictFrame = nullptr;
     int m_selA = -1, m_selF = -1;
 };
 

@@ -29,13 +29,13 @@ bool MainWindow::preparePlanar(SweepJob& job) {
 }
 
 QString MainWindow::modelTitle() const {
-    return m_sweepPlanar ? tr(" (planar)") : QString();
+    return m_results.surface() && m_results.surface()->planar ? tr(" (planar)") : QString();
 }
 
 void MainWindow::pickPlanar(double amplitude, double frequency) {
-    m_picked.reset();
-    m_pickedPlanar = runPlanarPoint(*m_sweepPlanar, amplitude, frequency);
-    m_planarHistory->setRun(*m_pickedPlanar);
+    m_results.setPicked(std::nullopt,
+                        runPlanarPoint(*m_results.surface()->planar, amplitude, frequency));
+    m_planarHistory->setRun(*m_results.pickedPlanar());
     m_historyStack->setCurrentWidget(m_planarHistory);
 }
 

@@ -60,6 +60,7 @@ Project MainWindow::project() const {
 }
 
 void MainWindow::showProject(const Project& p) {
+    clearResults(); // no result of the previous project may stand under this one's title
     m_project = p;
     m_building->setBuilding(p.building);
     m_codesPanel->setCodes(p.codes);
@@ -76,6 +77,7 @@ void MainWindow::showProject(const Project& p) {
     updateCodes();
     updateRunState();
     updateTitle();
+    inputsChanged();
 }
 
 void MainWindow::updateCodes() {

@@ -53,6 +53,10 @@ void MainWindow::runRecord() {
     in.record = *m_excitation->record();
     in.search = m_project.critical;
     in.codes = m_codeResults;
+    m_results.startRecordRun(); // the old run and verdicts go: the new run replaces them
+    m_history->clearRun();
+    showVerdict();
+    showStaleness();
     m_recordRunner->start(in);
     m_progress->setRange(0, 1000);
     m_progress->setValue(0);
@@ -68,8 +72,14 @@ void MainWindow::runRecord() {
 }
 
 void MainWindow::showRecordFinished(const RecordOutput& out) {
-    m_recordRun = out;
     m_progress->hide();
+    if (!m_results.awaits(ResultState::Run::Record)) { // a run of the project closed by Open/New
+        updateRunState();
+        emit recordRunFinished();
+        return;
+    }
+    m_results.runEnded();
+    m_results.setRecordRun(out);
     RecordInput* input = m_excitation->recordInput();
     if (!out.analysis) {
         input->setResult(QString::fromStdString(out.error), true);
@@ -77,10 +87,10 @@ void MainWindow::showRecordFinished(const RecordOutput& out) {
     } else {
         const RecordAnalysis& a = *out.analysis;
         if (out.history) m_history->setRun(*out.history);
-        if (a.critical) {
-            m_check = DesignCheckResult{a.verdicts, a.critical->runs};
-            m_verdict->setCheck(*m_check);
-        }
+        if (a.critical)
+            m_results.setCheck(DesignCheckResult{a.verdicts, a.critical->runs},
+                               {CheckBasis::Source::Record, m_project.critical.to, *a.critical,
+                                m_project.critical});
         const QString summary = runSummary(a, currentCase().tstar);
         // The result is shown under the record's inputs: bring their dock to the front.
         for (QWidget* w = m_excitation; w; w = w->parentWidget())
@@ -91,6 +101,7 @@ void MainWindow::showRecordFinished(const RecordOutput& out) {
                 ? tr("Cancelled: %1").arg(summary)
                 : tr("%1 (%2 s)").arg(summary).arg(a.runSeconds + a.criticalSeconds, 0, 'f', 2));
     }
+    inputsChanged(); // code inputs changed while it ran: re-judge now
     updateRunState();
     emit recordRunFinished();
 }

@@ -82,4 +82,10 @@ void PlanarHistoryChart::setRun(const PlanarPointRun& run) {
                           .arg(outcomeText(run)));
 }
 
+void PlanarHistoryChart::clearRun() {
+    for (QLineSeries* s : {m_dx, m_dy, m_limitUp, m_limitDown})
+        s->clear();
+    chart()->setTitle(tr("Planar history of a picked point — click the surface"));
+}
+
 } // namespace kinstab::ui

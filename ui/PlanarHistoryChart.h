@@ -17,6 +17,7 @@ class PlanarHistoryChart : public QChartView {
 public:
     explicit PlanarHistoryChart(QWidget* parent = nullptr);
     void setRun(const PlanarPointRun& run);
+    void clearRun();         // no picked point (New/Open)
     int sampleCount() const; // points in the δx series (tests)
 
 private:

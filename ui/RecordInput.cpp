@@ -2,6 +2,7 @@
 
 #include "ui/NumberField.h"
 #include "ui/RecordPreview.h"
+#include "ui/StaleFrame.h"
 
 #include <QFileDialog>
 #include <QFormLayout>
@@ -72,8 +73,23 @@ bool RecordInput::loadFile(const QString& path) {
 }
 
 void RecordInput::setResult(const QString& text, bool error) {
-    m_result->setStyleSheet(error ? QStringLiteral("color: #b00020") : QString());
-    m_result->setText(text);
+    m_resultText = text;
+    m_resultError = error;
+    showResult();
+}
+
+void RecordInput::setResultStale(bool stale) {
+    m_resultStale = stale;
+    showResult();
+}
+
+void RecordInput::showResult() {
+    const bool stale = m_resultStale && !m_resultText.isEmpty();
+    m_result->setStyleSheet(m_resultError ? QStringLiteral("color: #b00020")
+                            : stale       ? QStringLiteral("color: #8a8a8a")
+                                          : QString());
+    m_result->setText(stale ? StaleFrame::staleText() + QLatin1Char('\n') + m_resultText
+                            : m_resultText);
 }
 
 QString RecordInput::resultText() const {

@@ -36,6 +36,8 @@ public:
     // The last run's result (or why it failed, in red) under the inputs.
     void setResult(const QString& text, bool error);
     QString resultText() const;
+    // Greys the result with "inputs changed — Run to update" above it (ui/ResultState.h).
+    void setResultStale(bool stale);
 
     NumberField* peakField() const { return m_peak; }
     RecordPreview* preview() const { return m_preview; }
@@ -50,11 +52,15 @@ signals:
 
 private:
     void showError(const QString& text);
+    void showResult();
 
     QLineEdit* m_file;
     QPushButton* m_browse;
     QLabel* m_message;
     QLabel* m_result;
+    QString m_resultText;
+    bool m_resultError = false;
+    bool m_resultStale = false;
     NumberField* m_peak;
     RecordPreview* m_preview;
     RecordReadOptions m_read; // the hints of the loaded project (headerless text)

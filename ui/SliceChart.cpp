@@ -66,6 +66,7 @@ void SliceChart::setSlice(double f, const std::vector<double>& amplitudes,
 void SliceChart::clearSlice() {
     m_gamma->clear();
     m_tau->clear();
+    chart()->setTitle(tr("γc and τc against A — select a point on the surface"));
 }
 
 } // namespace kinstab::ui

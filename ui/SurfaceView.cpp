@@ -1,6 +1,7 @@
 #include "ui/SurfaceView.h"
 
 #include "ui/HeatMapView.h"
+#include "ui/StaleFrame.h"
 
 #include <QGuiApplication>
 #include <QLabel>
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace kinstab::ui {
 
@@ -22,6 +24,7 @@ struct SurfaceView::Graph3D {
     Q3DSurface* graph = nullptr; // owned by the window container
     QWidget* container = nullptr;
     QSurface3DSeries* surface = nullptr;
+    QSurface3DSeries* notComputed = nullptr; // grey patches at γc = 0 where no point was run
     std::vector<QSurface3DSeries*> overlays;
 };
 
@@ -60,6 +63,18 @@ QSurfaceDataArray* makeArray(const std::vector<float>& zs, const std::vector<flo
     return array;
 }
 
+QLinearGradient surfaceGradient(bool faded) {
+    QLinearGradient gradient;
+    for (double t : {0.0, 1.0 / 3, 2.0 / 3, 1.0}) {
+        const QColor c = gammaColor(t);
+        // Faded: two thirds of the way to white, so a stale surface cannot pass for a result.
+        gradient.setColorAt(t, faded ? QColor((c.red() + 2 * 255) / 3, (c.green() + 2 * 255) / 3,
+                                              (c.blue() + 2 * 255) / 3)
+                                     : c);
+    }
+    return gradient;
+}
+
 QSurface3DSeries* makeOverlay(const QColor& color) {
     auto* s = new QSurface3DSeries;
     s->setDrawMode(QSurface3DSeries::DrawSurface);
@@ -73,7 +88,8 @@ QSurface3DSeries* makeOverlay(const QColor& color) {
 } // namespace
 
 SurfaceView::SurfaceView(QWidget* parent)
-    : QWidget(parent), m_legend(new QLabel(this)), m_notice(new QLabel(this)) {
+    : QWidget(parent), m_legend(new QLabel(this)), m_notice(new QLabel(this)),
+      m_staleLine(new QLabel(StaleFrame::staleText(), this)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     m_notice->setWordWrap(true);
@@ -81,6 +97,10 @@ SurfaceView::SurfaceView(QWidget* parent)
     m_notice->setStyleSheet(QStringLiteral("background: #fff4d6; color: #5a4300;"));
     m_notice->hide();
     layout->addWidget(m_notice);
+    m_staleLine->setContentsMargins(8, 3, 8, 3);
+    m_staleLine->setStyleSheet(StaleFrame::staleStyle());
+    m_staleLine->hide();
+    layout->addWidget(m_staleLine);
     if (Q3DSurface* g = makeGraph()) {
         m_3d = std::make_unique<Graph3D>();
         m_3d->graph = g;
@@ -101,15 +121,16 @@ SurfaceView::SurfaceView(QWidget* parent)
         m_3d->surface->setDrawMode(QSurface3DSeries::DrawSurfaceAndWireframe);
         m_3d->surface->setWireframeColor(QColor(0, 0, 0, 90));
         m_3d->surface->setFlatShadingEnabled(false);
-        QLinearGradient gradient;
-        for (double t : {0.0, 1.0 / 3, 2.0 / 3, 1.0})
-            gradient.setColorAt(t, gammaColor(t));
-        m_3d->surface->setBaseGradient(gradient);
+        m_3d->surface->setBaseGradient(surfaceGradient(false));
         m_3d->surface->setColorStyle(Q3DTheme::ColorStyleRangeGradient);
         m_3d->surface->setItemLabelVisible(false); // the linked charts name the picked point
         m_3d->surface->setItemLabelFormat(
             QStringLiteral("A = @xLabel g, f = @zLabel Hz, γc = @yLabel"));
         g->addSeries(m_3d->surface);
+        m_3d->notComputed = makeOverlay(notComputedColor());
+        m_3d->notComputed->setDrawMode(QSurface3DSeries::DrawSurfaceAndWireframe);
+        m_3d->notComputed->setWireframeColor(QColor(120, 120, 120));
+        g->addSeries(m_3d->notComputed);
         connect(m_3d->surface, &QSurface3DSeries::selectedPointChanged, this,
                 [this](const QPoint& p) {
                     if (p == QSurface3DSeries::invalidSelectionPosition()) return;
@@ -150,16 +171,36 @@ void SurfaceView::setData(const GammaGrid& g) {
     m_grid = g;
     if (m_map) {
         m_map->setData(g);
+        updateLegend();
         return;
     }
-    if (g.empty()) return;
+    if (g.empty()) { // New/Open: nothing computed for these inputs
+        m_3d->surface->dataProxy()->resetArray(new QSurfaceDataArray);
+        m_3d->notComputed->dataProxy()->resetArray(new QSurfaceDataArray);
+        rebuildOverlays();
+        updateLegend();
+        return;
+    }
     m_3d->graph->axisY()->setTitle(g.gammaTitle);
+    // A wireframe over thousands of cells is a black sheet that hides the colours.
+    const auto mode = g.gamma.size() > 2500 ? QSurface3DSeries::DrawSurface
+                                            : QSurface3DSeries::DrawSurfaceAndWireframe;
+    m_3d->surface->setDrawMode(mode);
+    m_3d->notComputed->setDrawMode(mode);
     std::vector<float> xs(g.amplitudes.begin(), g.amplitudes.end());
     std::vector<float> zs(g.frequencies.begin(), g.frequencies.end());
+    const float nan = std::numeric_limits<float>::quiet_NaN();
     m_3d->surface->dataProxy()->resetArray(makeArray(zs, xs, [&](std::size_t r, std::size_t c) {
         return static_cast<float>(g.at(c, r)); // NaN (not yet computed) renders as a hole
     }));
+    // The holes filled with a grey patch at 0, so "not computed" is seen, unlike stable.
+    m_3d->notComputed->dataProxy()->resetArray(
+        notComputedCount() == 0 ? new QSurfaceDataArray
+                                : makeArray(zs, xs, [&](std::size_t r, std::size_t c) {
+                                      return std::isfinite(g.at(c, r)) ? nan : 0.0f;
+                                  }));
     rebuildOverlays();
+    updateLegend();
     if (m_selected.x() >= 0)
         m_3d->surface->setSelectedPoint(QPoint(m_selected.y(), m_selected.x()));
 }
@@ -297,6 +338,8 @@ void SurfaceView::updateLegend() {
     };
     QString html = swatch(gammaColor(0.0), tr("stable (γc = 0)")) +
                    swatch(gammaColor(1.0), tr("fastest collapse (largest γc)"));
+    if (const int n = notComputedCount(); n > 0)
+        html += swatch(notComputedColor(), tr("not computed (%1 points)").arg(n));
     if (m_overlays.buildingFrequency)
         html +=
             swatch(Qt::black,
@@ -307,6 +350,26 @@ void SurfaceView::updateLegend() {
     for (const CodeRatio& c : m_overlays.codes)
         html += swatch(c.color, tr("%1 %2 g").arg(c.name).arg(c.ratio, 0, 'f', 3));
     m_legend->setText(html);
+}
+
+int SurfaceView::notComputedCount() const {
+    int n = 0;
+    for (double v : m_grid.gamma)
+        n += !std::isfinite(v);
+    return n;
+}
+
+QString SurfaceView::legendText() const {
+    return m_legend->text();
+}
+
+void SurfaceView::setStale(bool stale) {
+    m_stale = stale;
+    m_staleLine->setVisible(stale);
+    if (m_map)
+        m_map->setStale(stale);
+    else
+        m_3d->surface->setBaseGradient(surfaceGradient(stale));
 }
 
 void SurfaceView::setNotice(const QString& text) {

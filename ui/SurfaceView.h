@@ -38,6 +38,12 @@ public:
     // empty hides it.
     void setNotice(const QString& text);
     QString notice() const;
+    // Marks the shown surface as computed with other inputs: dimmed, with a line saying so.
+    void setStale(bool stale);
+    bool isStale() const { return m_stale; }
+    // Grid points shown as "not computed" (NaN γc after a Cancel), distinct from stable.
+    int notComputedCount() const;
+    QString legendText() const;
 
 signals:
     void pointSelected(int ai, int fi);
@@ -51,6 +57,8 @@ private:
     HeatMapView* m_map = nullptr;
     QLabel* m_legend;
     QLabel* m_notice;
+    QLabel* m_staleLine;
+    bool m_stale = false;
     GammaGrid m_grid;
     SurfaceOverlays m_overlays;
     QPoint m_selected{-1, -1};

@@ -72,7 +72,7 @@ void VerdictPanel::setCodeResults(const std::vector<CodeResult>& results) {
     for (int i = 0; i < static_cast<int>(results.size()); ++i) {
         const CodeResult& r = results[static_cast<std::size_t>(i)];
         setRow(i, QString::fromStdString(r.title), r.periodSeconds, r.topRatio, tr("…"), tr("…"),
-               tr("run the sweep"), palette().color(QPalette::PlaceholderText));
+               tr("press Run"), palette().color(QPalette::PlaceholderText));
         if (r.topRatioWithoutFt)
             notes << tr("%1: %2 with F_t, %3 without (the paper's).")
                          .arg(QString::fromStdString(r.title))

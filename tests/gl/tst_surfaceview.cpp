@@ -3,14 +3,19 @@
 // the rendered surface (a plain grab() of the GL window would be blank).
 
 #include "ui/GridPanel.h"
+#include "ui/HeatMapView.h"
 #include "ui/MainWindow.h"
 #include "ui/SurfaceView.h"
 
 #include <QAction>
+#include <QGuiApplication>
 #include <QSet>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTest>
+#include <QtDataVisualization/Q3DSurface>
+#include <QtDataVisualization/QSurface3DSeries>
+#include <QtDataVisualization/QSurfaceDataProxy>
 
 #include <cmath>
 
@@ -34,6 +39,33 @@ GammaGrid testGrid() {
         for (double f : g.frequencies)
             g.gamma.push_back(a * f);
     return g;
+}
+// Pixels of a neutral mid grey (the shaded "not computed" patch; the theme's background and
+// the γc colours are not grey in that range).
+long greyPixels(const QImage& img) {
+    long n = 0;
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+            const QColor c(img.pixel(x, y));
+            n += std::abs(c.red() - c.green()) < 8 && std::abs(c.green() - c.blue()) < 8 &&
+                 c.red() > 110 && c.red() < 225;
+        }
+    return n;
+}
+// The stable half computed (γc = 0), the other half not: a cancelled sweep.
+GammaGrid halfCancelled() {
+    GammaGrid g = testGrid();
+    for (std::size_t k = 0; k < g.gamma.size(); ++k)
+        g.gamma[k] = k < g.gamma.size() / 2 ? 0.0 : std::nan("");
+    return g;
+}
+// The "not computed" series of the 3D graph: finite points only where γc is NaN.
+QSurface3DSeries* notComputedSeries() {
+    for (QWindow* win : QGuiApplication::allWindows())
+        if (auto* graph = qobject_cast<Q3DSurface*>(win))
+            for (QSurface3DSeries* s : graph->seriesList())
+                if (s->baseColor() == notComputedColor()) return s;
+    return nullptr;
 }
 } // namespace
 
@@ -66,6 +98,43 @@ private slots:
         const QImage img = view.renderImage(QSize(400, 300));
         QCOMPARE(img.size(), QSize(400, 300));
         QVERIFY(distinctColours(img, img.rect()) > 50); // a rendered scene, not a blank
+    }
+
+    // After Cancel: points never computed are a grey patch named in the legend, distinct from
+    // stable (γc = 0, dark blue), not a hole or a stable-looking floor.
+    void notComputedIsDrawnDistinctFromStable() {
+        SurfaceView view;
+        if (!view.is3D()) QSKIP("no OpenGL context");
+        view.resize(640, 480);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        GammaGrid all = halfCancelled();
+        for (double& g : all.gamma)
+            g = 0.0; // everything computed and stable
+        view.setData(all);
+        QCOMPARE(view.notComputedCount(), 0);
+        QVERIFY(!view.legendText().contains("not computed"));
+        const long greyAllStable = greyPixels(view.renderImage(QSize(400, 300)));
+
+        const GammaGrid half = halfCancelled();
+        view.setData(half);
+        QCOMPARE(view.notComputedCount(), 6);
+        QVERIFY(view.legendText().contains("not computed (6 points)"));
+        QSurface3DSeries* s = notComputedSeries();
+        QVERIFY(s);
+        int patch = 0;
+        const QSurfaceDataArray& rows = *s->dataProxy()->array();
+        for (qsizetype r = 0; r < rows.size(); ++r)
+            for (qsizetype c = 0; c < rows[r]->size(); ++c) {
+                const float y = rows[r]->at(c).y();
+                const bool missing = std::isnan(half.at(std::size_t(c), std::size_t(r)));
+                QCOMPARE(std::isfinite(y), missing);
+                patch += missing;
+            }
+        QCOMPARE(patch, 6);
+        const long greyHalf = greyPixels(view.renderImage(QSize(400, 300)));
+        QVERIFY2(greyHalf > greyAllStable + 500,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(greyHalf).arg(greyAllStable)));
     }
 
     void screenshotAfterSweepShowsTheSurface() {

@@ -63,7 +63,7 @@ QString codeInputsText(const nlohmann::json& j) {
 
 } // namespace
 
-void addInputSections(ReportDocument& doc, const Project& p) {
+void addInputSections(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {
     const Building& b = p.building;
     const QString u = qs(unitName(b.unit));
     doc.addSection(QStringLiteral("Inputs"));
@@ -119,7 +119,13 @@ void addInputSections(ReportDocument& doc, const Project& p) {
         {"bearing length / (d/2): collapse limit", "|δ| >", num(s.slab.limit, 3), ""});
     sl.rows.push_back({"earthquake duration cap", "τ_out",
                        s.slab.duration ? num(*s.slab.duration, 1) : QStringLiteral("none"), ""});
-    sl.rows.push_back({"solver", "", qs(solverName(s.solver)), ""});
+    // The solver that ran: the planar model is integrated numerically whatever slab.solver says.
+    sl.rows.push_back({"solver", "",
+                       a.planarSolver
+                           ? QStringLiteral("numerical (Dormand–Prince 5(4), tolerance %1)")
+                                 .arg(QString::number(a.planarSolver->relTol, 'g', 3))
+                           : qs(solverName(s.solver)),
+                       ""});
     sl.rows.push_back({"collapse-factor scaling", "τ_ref",
                        qs(tauScaleName(s.scale)) + " = " + num(s.tauRef(), 2), ""});
     sl.rows.push_back({"sweep amplitudes", "A", listText(p.grid.amplitudes, "g"), ""});
@@ -172,6 +178,11 @@ void addExcitationSection(ReportDocument& doc, const Project& p, const ReportAna
     const Slab1DCase& c = p.slab;
     const Envelope& e = c.envelope;
     doc.addSection(QStringLiteral("Excitation"));
+    if (p.record)
+        doc.addParagraph(QStringLiteral(
+            "The project's excitation is a record (section \"Recorded excitation\"), on which the "
+            "verdict rests. The enveloped sine below gives the γc surfaces, A_crit(f) and the "
+            "secondary design check, for comparison."));
     doc.addParagraph(
         QStringLiteral(
             "Enveloped sine floor acceleration (Furgerson 1980, ch. IV): a(τ) = (A / S_max) · "

@@ -108,8 +108,11 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
     const Slab1DCase& c = project.slab;
     const bool planar = project.model == "planar";
     // Every sweep, A_crit search and the check below run the project's model (SPEC §10).
-    const ModelPoint model =
-        modelPoint(c, planar ? std::optional(projectPlanarCase(c, project.planar)) : std::nullopt);
+    const std::optional<PlanarCase> planarCase =
+        planar ? std::optional(projectPlanarCase(c, project.planar)) : std::nullopt;
+    const ModelPoint model = modelPoint(c, planarCase);
+    if (planarCase) a.planarSolver = planarCase->solver;
+    a.scanFrom = model.scanFrom;
     a.codes = runCodes(project.building, project.codes);
     auto t = std::chrono::steady_clock::now();
     a.check = designCheck(a.codes, c, project.critical, model.point, model.scanFrom);

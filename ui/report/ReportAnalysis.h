@@ -8,6 +8,7 @@
 #include "core/codes/CodeResult.h"
 #include "core/codes/DesignCheck.h"
 #include "core/io/Project.h"
+#include "core/slab/PlanarSolver.h"
 #include "core/sweep/RecordAnalysis.h"
 #include "core/sweep/Sweep.h"
 #include "ui/report/FigureData.h"
@@ -41,6 +42,11 @@ struct ReportAnalysis {
     long critRuns = 0;
     SliceData slice;
     std::optional<SolverCrossCheck> crossCheck;
+    // The planar model's integrator settings when the planar model ran (none: the 1-DOF slab).
+    std::optional<PlanarOptions> planarSolver;
+    // Where every A_crit scan started, below which nothing slips: μ for the 1-DOF slab, the
+    // planar no-slip amplitude for the planar model.
+    double scanFrom = 0;
     // The project's record, when it has one: single run, critical peak, its verdicts.
     std::optional<RecordAnalysis> record;
     std::optional<FloorAnalysis> floors; // when the project has "floors" and a record

@@ -32,30 +32,6 @@ TitleBlock titleBlock(const ReportSource& s, const ReportAnalysis& a) {
     return t;
 }
 
-QString summaryText(const ReportAnalysis& a) {
-    if (a.check.codes.empty())
-        return QStringLiteral("No building code was selected, so no design check was made.");
-    int kinetic = 0;
-    for (const CodeVerdict& v : a.check.codes)
-        kinetic += v.verdict == Verdict::KineticInstabilityGoverns;
-    const QString outcome =
-        kinetic == 0
-            ? QStringLiteral(
-                  "For every code selected, the required top-floor ratio lies below the "
-                  "critical amplitude A_crit: member overstress governs, the slab does not "
-                  "slide off before the structure reaches its code strength.")
-            : QStringLiteral(
-                  "For %1 of %2 codes the required top-floor ratio reaches A_crit: kinetic "
-                  "instability governs there, and the slab seating must be checked.")
-                  .arg(kinetic)
-                  .arg(a.check.codes.size());
-    return QStringLiteral("The check compares, for each code, the top-floor force ratio "
-                          "F_top/w_top with A_crit(f), the smallest peak floor acceleration "
-                          "(in g) that slides the slab off its walls at the building frequency "
-                          "f = 1/T. ") +
-           outcome;
-}
-
 } // namespace
 
 ReportDocument buildReportDocument(const ReportSource& s, const ReportAnalysis& a) {
@@ -65,20 +41,21 @@ ReportDocument buildReportDocument(const ReportSource& s, const ReportAnalysis& 
     doc.footnote = QStringLiteral("kinstab " KINSTAB_VERSION ", ") +
                    s.created.toUTC().toString(QStringLiteral("yyyy-MM-dd"));
     doc.addTitle(titleBlock(s, a));
-    if (!a.check.codes.empty()) {
-        doc.addHeading(QStringLiteral("Summary"));
-        doc.addParagraph(summaryText(a));
-        addVerdictTable(doc, a);
-        if (const QString r = recordSummary(a); !r.isEmpty()) doc.addParagraph(r);
-    }
-    addInputSections(doc, p);
+    addSummary(doc, p, a);
+    addInputSections(doc, p, a);
     addCodeSections(doc, p, a);
     addExcitationSection(doc, p, a);
     addRecordSection(doc, p, a);
     addFloorsSection(doc, p, a);
     addSurfaceSections(doc, p, a);
     if (!a.check.codes.empty()) {
-        doc.addSection(QStringLiteral("Design check: which failure governs"));
+        const bool secondary = recordGoverns(p, a);
+        doc.addSection(secondary ? QStringLiteral("Design check with the enveloped sine")
+                                 : QStringLiteral("Design check: which failure governs"));
+        if (secondary)
+            doc.addParagraph(QStringLiteral(
+                "For comparison only: the verdict of this report rests on the project's record "
+                "(Summary). Here the same rule is applied to A_crit of the enveloped sine."));
         doc.addParagraph(QStringLiteral(
             "Chapter V of the source report: below A_crit the structure reaches its code "
             "strength first (member overstress governs); at or above it the slab slides off "

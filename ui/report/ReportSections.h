@@ -19,7 +19,14 @@ inline QString qs(const std::string& s) {
 }
 QString gammaLabel(const Slab1DCase& c); // "γc = τmax/τc"
 
-void addInputSections(ReportDocument& doc, const Project& p);
+// Page 1: the one verdict and the excitation it rests on (SummarySection.cpp).
+void addSummary(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
+// True when the project's record, not the enveloped sine, gives the report's verdict.
+bool recordGoverns(const Project& p, const ReportAnalysis& a);
+// "event-driven exact solver ..." or "numerically integrated planar model ..., tolerance ...":
+// the solver that actually ran the sweeps and the check.
+QString solverDescription(const Project& p, const ReportAnalysis& a);
+void addInputSections(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 // "1-DOF friction-held slab ..." or "planar 2-DOF slab ..." (PlanarSection.cpp).
 QString modelName(const Project& p);
 void addPlanarInputs(ReportDocument& doc, const Project& p); // planar projects only
@@ -34,8 +41,6 @@ void addVerdictTable(ReportDocument& doc, const std::vector<CodeVerdict>& codes,
 // filter, the time histories and Fourier spectra of ground and floor (Figs. 25-27), the single
 // run and the critical peak against the code ratios. Only when the analysis has a record.
 void addRecordSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
-// One sentence for the summary: what governs with the record.
-QString recordSummary(const ReportAnalysis& a);
 void addNumericsSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 void addReferences(ReportDocument& doc, const Project& p);
 // The floor-motion section (FloorsSection.cpp): only when the project has "floors" and a record.

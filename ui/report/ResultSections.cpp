@@ -136,6 +136,20 @@ void addVerdictTable(ReportDocument& doc, const std::vector<CodeVerdict>& codes,
             true);
 }
 
+QString solverDescription(const Project& p, const ReportAnalysis& a) {
+    if (a.planarSolver)
+        return QStringLiteral("numerically integrated planar model: adaptive Dormand–Prince 5(4) "
+                              "steps, events located on brackets; tolerance %1 relative, %2 "
+                              "absolute")
+            .arg(QString::number(a.planarSolver->relTol, 'g', 3),
+                 QString::number(a.planarSolver->absTol, 'g', 3));
+    if (p.slab.solver == SolverKind::Exact)
+        return QStringLiteral("event-driven exact solver: closed-form motion between events, "
+                              "events located to ~1e-13 by bracketing and a safeguarded root "
+                              "finder");
+    return QStringLiteral("paper's RK4 solver, H = T/%1").arg(num(p.slab.paperStepsPerPeriod, 0));
+}
+
 void addNumericsSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {
     doc.addSection(QStringLiteral("Numerics"));
     const SweepResult& r = a.projectSweep;
@@ -144,17 +158,15 @@ void addNumericsSection(ReportDocument& doc, const Project& p, const ReportAnaly
         if (r.done[k]) ++count[r.points[k].outcome];
     const std::size_t other = count[Outcome::LiftOff] + count[Outcome::Failed];
     Table t{{"item", "value"}, {}, {2.2, 3}, {}, {}};
-    t.rows.push_back(
-        {"solver", p.slab.solver == SolverKind::Exact
-                       ? QStringLiteral(
-                             "event-driven exact solver: closed-form motion between events, events "
-                             "located to ~1e-13 by bracketing and a safeguarded root finder")
-                       : QStringLiteral("paper's RK4 solver, H = T/%1")
-                             .arg(num(p.slab.paperStepsPerPeriod, 0))});
+    t.rows.push_back({"solver", solverDescription(p, a)});
     t.rows.push_back(
         {"A_crit search",
-         QStringLiteral("scan from max(μ, %1) in steps of %2 g up to %3 g, then bisection to %4 g")
-             .arg(num(p.critical.from, 2), num(p.critical.scanStep, 4), num(p.critical.to, 2),
+         QStringLiteral("scan from max(%1, %2) g (%3) in steps of %4 g up to %5 g, then "
+                        "bisection to %6 g")
+             .arg(num(a.scanFrom, 4), num(p.critical.from, 2),
+                  a.planarSolver ? QStringLiteral("below the first: no slip in the planar model")
+                                 : QStringLiteral("the first is μ: below it nothing slips"),
+                  num(p.critical.scanStep, 4), num(p.critical.to, 2),
                   num(p.critical.tolerance, 6))});
     if (a.crossCheck) {
         const SolverCrossCheck& x = *a.crossCheck;

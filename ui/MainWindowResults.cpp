@@ -1,0 +1,91 @@
+// MainWindow, continued: the shown results against the inputs now on the panels
+// (ui/ResultState.h). New and Open clear every result; an input change re-judges the verdicts
+// where the kept A_crit serves and dims every result made with other inputs, with the line
+// "inputs changed — Run to update", until a run with the new inputs replaces it.
+
+#include "ui/CriticalChart.h"
+#include "ui/ExcitationPanel.h"
+#include "ui/GridPanel.h"
+#include "ui/HistoryChart.h"
+#include "ui/MainWindow.h"
+#include "ui/PlanarHistoryChart.h"
+#include "ui/RecordInput.h"
+#include "ui/SliceChart.h"
+#include "ui/StaleFrame.h"
+#include "ui/SurfaceView.h"
+#include "ui/VerdictPanel.h"
+
+#include <QStackedWidget>
+
+namespace kinstab::ui {
+
+const SweepResult& MainWindow::lastSweep() const {
+    static const SweepResult none;
+    return m_results.surface() ? m_results.surface()->sweep : none;
+}
+
+const std::optional<PlanarCase>& MainWindow::sweepPlanarCase() const {
+    static const std::optional<PlanarCase> none;
+    return m_results.surface() ? m_results.surface()->planar : none;
+}
+
+void MainWindow::clearResults() {
+    // A run still going belongs to the previous inputs: stopped, and its end is not shown.
+    m_runner->cancel();
+    m_recordRunner->cancel();
+    m_results.clear();
+    m_overlays.aCrit.clear();
+    m_selA = m_selF = -1;
+    m_surface->setData(GammaGrid{});
+    m_slice->clearSlice();
+    m_history->clearRun();
+    m_planarHistory->clearRun();
+    m_historyStack->setCurrentWidget(m_history);
+    const SweepGrid grid = m_gridPanel->grid();
+    if (!grid.frequencies.empty())
+        m_critical->setData(m_overlays, grid.frequencies.front(), grid.frequencies.back());
+    m_excitation->recordInput()->setResult(QString(), false);
+    refreshOverlays();
+    showVerdict();
+    showStaleness();
+}
+
+void MainWindow::inputsChanged() {
+    std::optional<InputFingerprint> now;
+    if (inputsValid()) {
+        try {
+            now = fingerprintOf(project());
+        } catch (const std::exception&) {
+            now.reset(); // inputs that cannot be written are not the inputs of any result
+        }
+    }
+    m_results.setInputs(now, m_codeResults);
+    // A kept check is shown (re-judged, or dimmed when stale) unless the codes failed: then
+    // updateCodes' message naming the bad input stays.
+    if (m_results.check() && !(m_results.checkStale() && m_codeResults.empty()))
+        m_verdict->setCheck(*m_results.check());
+    showStaleness();
+}
+
+void MainWindow::showVerdict() {
+    if (m_results.check())
+        m_verdict->setCheck(*m_results.check());
+    else
+        m_verdict->setCodeResults(m_codeResults);
+}
+
+void MainWindow::showStaleness() {
+    const bool surface = m_results.surfaceStale();
+    m_surface->setStale(surface);
+    m_sliceFrame->setStale(surface);
+    m_criticalFrame->setStale(surface);
+    const bool pickStale =
+        (m_results.picked() || m_results.pickedPlanar()) && m_results.surfaceStale();
+    const bool recordStale = m_results.recordRun() && m_results.recordRun()->history &&
+                             !m_results.picked() && m_results.recordStale();
+    m_historyFrame->setStale(pickStale || recordStale);
+    m_excitation->recordInput()->setResultStale(m_results.recordStale());
+    m_verdictFrame->setStale(m_results.checkStale());
+}
+
+} // namespace kinstab::ui
