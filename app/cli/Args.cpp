@@ -1,5 +1,6 @@
 #include "app/cli/Args.h"
 
+#include "core/io/TextInput.h"
 #include "core/sweep/Grid.h"
 
 #include <cmath>
@@ -34,6 +35,7 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
             value = argv[++i];
         }
         if (values_.count(name)) throw UsageError("flag --" + name + " given twice");
+        if (name == "o" && value.empty()) throw UsageError("-o: needs a file name, got ''");
         values_[name] = value;
     }
 }
@@ -56,16 +58,11 @@ std::optional<std::string> Args::optionalText(const std::string& flag) const {
 std::optional<double> Args::optionalNumber(const std::string& flag) const {
     const auto it = values_.find(flag);
     if (it == values_.end()) return std::nullopt;
-    std::size_t used = 0;
-    double v = 0;
-    try {
-        v = std::stod(it->second, &used);
-    } catch (...) {
-        used = 0;
-    }
-    if (used == 0 || used != it->second.size() || !std::isfinite(v))
-        throw UsageError("--" + flag + " '" + it->second + "' is not a finite number");
-    return v;
+    // std::from_chars: the C locale's syntax whatever the process locale.
+    const std::optional<double> v = parseDouble(it->second);
+    if (!v || !std::isfinite(*v))
+        throw UsageError("--" + flag + " " + quotedToken(it->second) + " is not a finite number");
+    return *v;
 }
 
 double Args::number(const std::string& flag, double fallback) const {
