@@ -23,8 +23,8 @@ std::optional<NptsLine> findNptsLine(const RecordText& text) {
     static const std::regex valuesFirst(R"(^\s*(\S+)\s+(\S+)\s+NPTS\s*,?\s*DT)", std::regex::icase);
     for (std::size_t i = 0; i < std::min(text.size(), kMaxHeaderLines); ++i) {
         std::smatch m;
-        if (std::regex_search(text.line(i), m, labelled) ||
-            std::regex_search(text.line(i), m, valuesFirst))
+        const std::string l = text.header(i);
+        if (std::regex_search(l, m, labelled) || std::regex_search(l, m, valuesFirst))
             return NptsLine{i, m[1].str(), m[2].str()};
     }
     return std::nullopt;
@@ -33,7 +33,7 @@ std::optional<NptsLine> findNptsLine(const RecordText& text) {
 // "ACCELERATION TIME SERIES IN UNITS OF G", "The units are (g)"; g when nothing is said.
 AccelUnit headerUnit(const RecordText& text, std::size_t nptsLine) {
     for (std::size_t i = 0; i < nptsLine; ++i) {
-        const std::string l = lowerCase(text.line(i));
+        const std::string l = lowerCase(text.header(i));
         const std::size_t at = l.find("units");
         if (at == std::string::npos) continue;
         const std::string rest = l.substr(at);

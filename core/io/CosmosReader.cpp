@@ -17,7 +17,8 @@ std::size_t countAt(const RecordText& text, std::size_t i, const std::string& to
                     const char* what) {
     const auto n = parseCount(token, limits::kMaxRecordSamples);
     if (!n)
-        text.fail(i, std::string(what) + " " + quotedToken(token) + " is not a count of at most " +
+        text.fail(i, std::string(what) + " " + quotedToken(token) +
+                         ": expected a whole number within the limit of " +
                          std::to_string(limits::kMaxRecordSamples));
     return *n;
 }
@@ -30,7 +31,8 @@ std::pair<std::size_t, std::size_t> blockSize(const RecordText& text, std::size_
     std::smatch m;
     if (i >= text.size())
         text.fail(text.size() - 1, std::string("file ends before the ") + what + " header block");
-    if (!std::regex_search(text.line(i), m, re))
+    const std::string l = text.header(i);
+    if (!std::regex_search(l, m, re))
         text.fail(i, std::string("expected the ") + what +
                          " header line '... values follow on ... lines'");
     return {countAt(text, i, m[1].str(), "header value count"),
@@ -53,7 +55,7 @@ void describe(Accelerogram& a, const RecordText& text, std::size_t textLines) {
                                  std::regex::icase);
     a.name = trimmed(text.line(std::min<std::size_t>(1, textLines - 1)));
     for (std::size_t i = 0; i < textLines; ++i) {
-        const std::string& l = text.line(i);
+        const std::string l = text.header(i);
         std::smatch m;
         if (l.rfind("Statn No:", 0) == 0)
             a.station = trimmed(l.substr(9));
@@ -70,7 +72,8 @@ Accelerogram parseCosmos(const RecordText& text) {
     static const std::regex first(R"(\(Format\s+v\S*\s+with\s+(\d+)\s+text lines\))",
                                   std::regex::icase);
     std::smatch m;
-    if (!std::regex_search(text.line(0), m, first))
+    const std::string line0 = text.header(0);
+    if (!std::regex_search(line0, m, first))
         text.fail(0, "not a COSMOS header: expected '(Format v01.20 with 13 text lines)'");
     const std::size_t textLines = countAt(text, 0, m[1].str(), "text line count");
     if (textLines < 1 || textLines + 3 > text.size())
@@ -85,12 +88,14 @@ Accelerogram parseCosmos(const RecordText& text) {
     i += 1 + blockSize(text, i, "integer").second;
     const std::vector<double> real = realHeader(text, i);
     static const std::regex comments(R"(^\s*(\d+)\s+Comment line)", std::regex::icase);
-    if (i < text.size() && std::regex_search(text.line(i), m, comments))
+    const std::string commentLine = i < text.size() ? text.header(i) : std::string();
+    if (std::regex_search(commentLine, m, comments))
         i += 1 + countAt(text, i, m[1].str(), "comment line count");
     static const std::regex data(R"(^\s*(\d+)\s+(\S+)\s+pts.*units\s*=\s*([^(,]*))",
                                  std::regex::icase);
     if (i >= text.size()) text.fail(text.size() - 1, "file ends before the data header line");
-    if (!std::regex_search(text.line(i), m, data))
+    const std::string dataLine = text.header(i);
+    if (!std::regex_search(dataLine, m, data))
         text.fail(i, "expected the data header 'N acceleration pts, ..., units=..., Format=(...)'");
     if (m[2].str().rfind("accel", 0) != 0)
         text.fail(i,

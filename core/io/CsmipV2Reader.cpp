@@ -41,7 +41,8 @@ std::optional<double> headerPeak(const RecordText& text, std::size_t from, std::
     static const std::regex re(R"(peak\s+acceleration\s*=\s*(\S+)\s+(\S+))", std::regex::icase);
     for (std::size_t i = from; i < to; ++i) {
         std::smatch m;
-        if (!std::regex_search(text.line(i), m, re)) continue;
+        const std::string l = text.header(i);
+        if (!std::regex_search(l, m, re)) continue;
         const auto value = parseNumber(m[1].str());
         const auto unit = accelUnitFromName(m[2].str());
         if (value && unit) return *value * gPerUnit(*unit);
@@ -57,8 +58,8 @@ std::vector<CsmipChannel> csmipChannels(const RecordText& text) {
     for (std::size_t i = 0; i < text.size(); ++i) {
         if (!startsChannel(text.line(i))) continue;
         std::smatch m;
-        if (!std::regex_search(text.line(i), m, chan))
-            text.fail(i, "channel header without 'CHAN n: NAME'");
+        const std::string l = text.header(i);
+        if (!std::regex_search(l, m, chan)) text.fail(i, "channel header without 'CHAN n: NAME'");
         const auto number = parseCount(m[1].str(), 1'000'000);
         if (!number) text.fail(i, "channel number " + quotedToken(m[1].str()) + " is too large");
         out.push_back({static_cast<int>(*number), m[2].str(), i});
@@ -82,7 +83,7 @@ Accelerogram parseCsmipV2(const RecordText& text, const std::string& channel) {
     static const std::regex units(R"((?:units:\s*|\bin\s+)([a-z/0-9]+))", std::regex::icase);
     for (std::size_t i = c.firstLine; i < end; ++i) {
         std::smatch m;
-        const std::string& l = text.line(i);
+        const std::string l = text.header(i);
         if (!std::regex_search(l, m, block)) continue;
         Accelerogram a;
         a.sourceFile = text.source();

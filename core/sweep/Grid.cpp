@@ -97,9 +97,9 @@ std::string validateGrid(const SweepGrid& g) {
             return "frequencies: " + formatDouble(f) + " Hz is out of range (> 0, at most 1000)";
     // Each axis may be long; the product is what a sweep computes and stores.
     if (g.amplitudes.size() > limits::kMaxGridPoints / g.frequencies.size())
-        return "the grid has " + std::to_string(g.amplitudes.size()) + " amplitudes x " +
+        return "amplitudes: " + std::to_string(g.amplitudes.size()) + " amplitudes x " +
                std::to_string(g.frequencies.size()) + " frequencies, more than the limit of " +
-               std::to_string(limits::kMaxGridPoints) + " points";
+               std::to_string(limits::kMaxGridPoints) + " points in a grid";
     return {};
 }
 
