@@ -17,7 +17,7 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
         else if (a.rfind("--", 0) == 0)
             name = a.substr(2);
         else
-            throw UsageError("unexpected argument '" + a + "'");
+            throw UsageError("unexpected argument " + quotedToken(a));
         std::string value;
         const auto eq = name.find('=');
         const bool inlineValue = eq != std::string::npos;
@@ -29,7 +29,7 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
             values_[name] = "1";
             continue;
         }
-        if (!flags.count(name)) throw UsageError("unknown flag '" + a + "'");
+        if (!flags.count(name)) throw UsageError("unknown flag " + quotedToken(a));
         if (!inlineValue) {
             if (i + 1 >= argv.size()) throw UsageError("flag --" + name + " needs a value");
             value = argv[++i];
@@ -79,7 +79,7 @@ int Args::integer(const std::string& flag, int fallback) const {
     const auto v = optionalNumber(flag);
     if (!v) return fallback;
     if (*v != std::floor(*v) || std::abs(*v) > 1e9)
-        throw UsageError("--" + flag + " '" + text(flag) + "' is not a whole number");
+        throw UsageError("--" + flag + " " + quotedToken(text(flag)) + " is not a whole number");
     return static_cast<int>(*v);
 }
 
@@ -99,7 +99,7 @@ std::string Args::choice(const std::string& flag, const std::set<std::string>& a
         std::string names;
         for (const auto& a : allowed)
             names += (names.empty() ? "" : "|") + a;
-        throw UsageError("--" + flag + " '" + *t + "' must be one of " + names);
+        throw UsageError("--" + flag + " " + quotedToken(*t) + " must be one of " + names);
     }
     return *t;
 }
