@@ -18,9 +18,7 @@ const std::pair<RecordFormat, const char*> kNames[] = {
     {RecordFormat::Cosmos, "cosmos"}, {RecordFormat::CsmipV2, "csmip"},
     {RecordFormat::Values, "values"}, {RecordFormat::TimeAccel, "time-accel"},
 };
-} // namespace
 
-namespace {
 // What a file's numbers may be (core/io/InputLimits.h), and header text short enough to show.
 void checkLimits(const RecordText& text, Accelerogram& a) {
     using namespace limits;
