@@ -9,19 +9,24 @@
 namespace kinstab {
 
 FileText readTextFile(const std::string& path, std::uintmax_t maxBytes) {
+    const std::string limit = maxBytes >= (1u << 20) ? std::to_string(maxBytes >> 20) + " MB"
+                                                     : std::to_string(maxBytes) + " bytes";
+    const std::string tooLarge = "larger than the limit of " + limit + " for this kind of file";
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) return {{}, "is a folder, not a file"};
+    const bool regular = std::filesystem::is_regular_file(path, ec);
+    const std::uintmax_t size = regular ? std::filesystem::file_size(path, ec) : 0;
+    if (regular && !ec && size > maxBytes) return {{}, tooLarge}; // refused unread
     std::ifstream in(path, std::ios::binary);
     if (!in) return {{}, "cannot open the file"};
     FileText f;
     char chunk[1 << 16];
+    // A device or FIFO has no size: reading stops one chunk past the limit, in one buffer.
+    f.text.reserve(regular && !ec ? size : maxBytes + sizeof chunk);
     while (in) {
         in.read(chunk, sizeof chunk);
         f.text.append(chunk, static_cast<std::size_t>(in.gcount()));
-        if (f.text.size() > maxBytes) // a device or FIFO has no size to check beforehand
-            return {{},
-                    "larger than the limit of " + std::to_string(maxBytes / (1024 * 1024)) +
-                        " MB for this kind of file"};
+        if (f.text.size() > maxBytes) return {{}, tooLarge};
     }
     if (in.bad()) return {{}, "cannot read the file"};
     return f;

@@ -149,6 +149,9 @@ void TestInputLimits::boundedFileRead() {
     QVERIFY(readTextFile(kRoot, 1 << 20).error.find("folder") != std::string::npos);
     QVERIFY(readTextFile(kRoot + "/no-such-file", 1 << 20).error.find("cannot open") == 0);
     QVERIFY(readTextFile(kExample, 1 << 20).error.empty());
+    // A regular file over the limit is refused by its size, unread.
+    QCOMPARE(readTextFile(kExample, 1000).error,
+             std::string("larger than the limit of 1000 bytes for this kind of file"));
 }
 
 void TestInputLimits::recordWithBomAndLatin1Header() {
