@@ -84,7 +84,7 @@ RecordExcitation recordExcitationFromFlags(const Args& args, const std::string& 
 nlohmann::json accelerogramJson(const Accelerogram& a) {
     const SignedPeak p = a.peak();
     return {
-        {"file", a.sourceFile},
+        {"file", utf8FromLegacy(a.sourceFile)}, // a file name need not be UTF-8; JSON must be
         {"format", a.format},
         {"name", a.name},
         {"station", a.station},
