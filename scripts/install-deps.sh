@@ -3,14 +3,22 @@
 set -euo pipefail
 packages=(cmake g++ make qt6-base-dev qt6-charts-dev qt6-datavisualization-dev qt6-declarative-dev
           qt6-svg-dev libqt6opengl6-dev libeigen3-dev nlohmann-json3-dev xvfb xauth libgl1-mesa-dri
-          fonts-dejavu-core poppler-utils
+          fonts-dejavu-core poppler-utils locales
           python3-dev pybind11-dev python3-pybind11 python3-pytest python3-numpy python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
 SUDO=""
 [ "$(id -u)" -ne 0 ] && SUDO="sudo"
-$SUDO apt-get update -qq
-DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+if [ ${#missing[@]} -gt 0 ]; then
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+# The suite runs the CLI and a GUI test under a German locale (decimal comma): numbers in files
+# must not follow the locale. Generated once; later runs find it and do nothing.
+if ! locale -a 2>/dev/null | grep -qi '^de_DE\.utf-\?8$'; then
+  $SUDO sed -i 's/^# *\(de_DE\.UTF-8 UTF-8\)/\1/' /etc/locale.gen
+  grep -q '^de_DE\.UTF-8 UTF-8' /etc/locale.gen || echo 'de_DE.UTF-8 UTF-8' | $SUDO tee -a /etc/locale.gen >/dev/null
+  $SUDO locale-gen >/dev/null
+fi

@@ -1,5 +1,6 @@
 #include "app/cli/Args.h"
 
+#include "core/io/TextInput.h"
 #include "core/sweep/Grid.h"
 
 #include <cmath>
@@ -16,7 +17,7 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
         else if (a.rfind("--", 0) == 0)
             name = a.substr(2);
         else
-            throw UsageError("unexpected argument '" + a + "'");
+            throw UsageError("unexpected argument " + quotedToken(a));
         std::string value;
         const auto eq = name.find('=');
         const bool inlineValue = eq != std::string::npos;
@@ -28,12 +29,13 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
             values_[name] = "1";
             continue;
         }
-        if (!flags.count(name)) throw UsageError("unknown flag '" + a + "'");
+        if (!flags.count(name)) throw UsageError("unknown flag " + quotedToken(a));
         if (!inlineValue) {
             if (i + 1 >= argv.size()) throw UsageError("flag --" + name + " needs a value");
             value = argv[++i];
         }
         if (values_.count(name)) throw UsageError("flag --" + name + " given twice");
+        if (name == "o" && value.empty()) throw UsageError("-o: needs a file name, got ''");
         values_[name] = value;
     }
 }
@@ -56,16 +58,11 @@ std::optional<std::string> Args::optionalText(const std::string& flag) const {
 std::optional<double> Args::optionalNumber(const std::string& flag) const {
     const auto it = values_.find(flag);
     if (it == values_.end()) return std::nullopt;
-    std::size_t used = 0;
-    double v = 0;
-    try {
-        v = std::stod(it->second, &used);
-    } catch (...) {
-        used = 0;
-    }
-    if (used == 0 || used != it->second.size() || !std::isfinite(v))
-        throw UsageError("--" + flag + " '" + it->second + "' is not a finite number");
-    return v;
+    // std::from_chars: the C locale's syntax whatever the process locale.
+    const std::optional<double> v = parseDouble(it->second);
+    if (!v || !std::isfinite(*v))
+        throw UsageError("--" + flag + " " + quotedToken(it->second) + " is not a finite number");
+    return *v;
 }
 
 double Args::number(const std::string& flag, double fallback) const {
@@ -82,7 +79,7 @@ int Args::integer(const std::string& flag, int fallback) const {
     const auto v = optionalNumber(flag);
     if (!v) return fallback;
     if (*v != std::floor(*v) || std::abs(*v) > 1e9)
-        throw UsageError("--" + flag + " '" + text(flag) + "' is not a whole number");
+        throw UsageError("--" + flag + " " + quotedToken(text(flag)) + " is not a whole number");
     return static_cast<int>(*v);
 }
 
@@ -102,7 +99,7 @@ std::string Args::choice(const std::string& flag, const std::set<std::string>& a
         std::string names;
         for (const auto& a : allowed)
             names += (names.empty() ? "" : "|") + a;
-        throw UsageError("--" + flag + " '" + *t + "' must be one of " + names);
+        throw UsageError("--" + flag + " " + quotedToken(*t) + " must be one of " + names);
     }
     return *t;
 }

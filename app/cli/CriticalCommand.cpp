@@ -23,6 +23,11 @@ int runCritical(const ArgList& argv) {
 
     if (isPlanar(args)) return runCriticalPlanar(args, freqs, search);
     const Slab1DCase c = slab1DCaseFromFlags(args);
+    // Without friction there is no amplitude below which the slab holds: no A_crit to find.
+    if (!(c.slab.mu > 0.0))
+        throw UsageError("--mu " + args.text("mu", "0") +
+                         ": A_crit needs friction (mu > 0); without it the slab slides at any "
+                         "amplitude");
     const PointFunction point = slab1DPoint(c);
     nlohmann::json crit = nlohmann::json::array();
     for (double f : freqs) {

@@ -1,5 +1,8 @@
 #include "app/cli/RecordFlags.h"
 
+#include "core/io/InputLimits.h"
+#include "core/io/TextInput.h"
+
 namespace kinstab::cli {
 
 std::set<std::string> recordReadFlagNames() {
@@ -11,9 +14,10 @@ RecordReadOptions recordReadOptionsFromFlags(const Args& args) {
     o.format = *recordFormatFromName(args.choice(
         "record-format", {"auto", "at2", "cosmos", "csmip", "values", "time-accel"}, "auto"));
     if (const auto dt = args.optionalNumber("record-dt")) {
-        if (!(*dt > 0.0) || *dt > 10.0)
-            throw UsageError("--record-dt " + args.text("record-dt") +
-                             ": must be > 0 and at most 10 s");
+        if (!(*dt >= limits::kMinRecordDt) || *dt > limits::kMaxRecordDt)
+            throw UsageError("--record-dt " + args.text("record-dt") + ": must be " +
+                             formatDouble(limits::kMinRecordDt) + " to " +
+                             formatDouble(limits::kMaxRecordDt) + " s");
         o.dt = *dt;
     }
     if (args.has("record-unit")) {
@@ -80,7 +84,7 @@ RecordExcitation recordExcitationFromFlags(const Args& args, const std::string& 
 nlohmann::json accelerogramJson(const Accelerogram& a) {
     const SignedPeak p = a.peak();
     return {
-        {"file", a.sourceFile},
+        {"file", utf8FromLegacy(a.sourceFile)}, // a file name need not be UTF-8; JSON must be
         {"format", a.format},
         {"name", a.name},
         {"station", a.station},

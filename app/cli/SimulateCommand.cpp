@@ -62,6 +62,8 @@ int runSimulate(const ArgList& argv) {
     j["wall_time_s"] = wall;
     if (args.has("events")) j["events"] = eventsJson(r.events);
     if (wantHistory) {
+        if (const std::string e = validateHistoryStep(r.tauEnd, historyStep); !e.empty())
+            throw UsageError("--history-step " + args.text("history-step", "0.05") + ": " + e);
         const EnvelopedSine a(c.envelope, amplitude, frequency, c.tstar);
         const History h = sampleHistory(a, c.slab.mu, r.events, r.tauEnd, historyStep);
         writeOutput(args.text("history"), historyCsv(h));

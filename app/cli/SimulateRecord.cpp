@@ -100,9 +100,12 @@ int runSimulateRecord(const Args& args) {
     j["wall_time_s"] = a.runSeconds;
     if (in.critical) j["critical"] = criticalJson(a, in.search);
     if (args.has("events")) j["events"] = eventsJson(a.run.events);
-    if (args.has("history"))
+    if (args.has("history")) {
+        if (const std::string e = validateHistoryStep(a.run.tauEnd, historyStep); !e.empty())
+            throw UsageError("--history-step " + args.text("history-step", "0.05") + ": " + e);
         writeOutput(args.text("history"), historyCsv(sampleHistory(motion, c.slab.mu, a.run.events,
                                                                    a.run.tauEnd, historyStep)));
+    }
     std::cout << j.dump(2) << "\n";
     return 0;
 }

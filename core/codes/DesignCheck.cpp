@@ -1,6 +1,7 @@
 #include "core/codes/DesignCheck.h"
 
 #include "core/codes/Building.h"
+#include "core/io/TextInput.h"
 #include "core/sweep/Sweep.h"
 
 #include <cmath>
@@ -66,7 +67,7 @@ DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1D
     std::map<double, std::optional<double>> cache; // A_crit by frequency
     for (const CodeResult& r : codes) {
         if (!(r.periodSeconds > 0) || !std::isfinite(r.periodSeconds))
-            throw InputError(r.code + ".period_s = " + std::to_string(r.periodSeconds) +
+            throw InputError(r.code + ".period_s = " + formatDouble(r.periodSeconds) +
                              ": must be > 0");
         const double f = 1.0 / r.periodSeconds;
         auto it = cache.find(f);

@@ -1,5 +1,7 @@
 #include "core/friction/CoulombSlope.h"
 
+#include "core/io/TextInput.h"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -9,7 +11,7 @@ namespace kinstab {
 CoulombFit fitCoulombSlope(const std::vector<CoulombPoint>& all, double maxCpPsi,
                            std::optional<double> area) {
     if (area && !(*area > 0.0 && std::isfinite(*area)))
-        throw std::invalid_argument("bearing area must be > 0 in^2, got " + std::to_string(*area));
+        throw std::invalid_argument("bearing area must be > 0 in^2, got " + formatDouble(*area));
     double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
     for (const CoulombPoint& p : all) {
         if (p.cpPsi > maxCpPsi) continue;
@@ -20,7 +22,7 @@ CoulombFit fitCoulombSlope(const std::vector<CoulombPoint>& all, double maxCpPsi
     if (n < 2.0 || !(sxxCentred > 1e-12 * sxx))
         throw std::invalid_argument(
             "Coulomb slope: needs at least 2 distinct confining pressures <= " +
-            std::to_string(maxCpPsi) + " psi");
+            formatDouble(maxCpPsi) + " psi");
     CoulombFit fit;
     fit.points = static_cast<int>(n);
     fit.slopeThroughOrigin = sxy / sxx;

@@ -1,5 +1,8 @@
 #include "core/friction/TripletCsv.h"
 
+#include "core/io/InputLimits.h"
+#include "core/io/TextInput.h"
+
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -34,7 +37,7 @@ double parseNumber(const std::string& field, const Where& where, const std::stri
     const char* end = field.data() + field.size();
     const auto [ptr, ec] = std::from_chars(field.data(), end, v);
     if (field.empty() || ec != std::errc() || ptr != end || !std::isfinite(v))
-        throw TripletCsvError(where.at(column) + ": '" + field + "' is not a number");
+        throw TripletCsvError(where.at(column) + ": " + quotedToken(field) + " is not a number");
     return v;
 }
 
@@ -80,7 +83,7 @@ std::vector<std::string> splitCsvLine(const std::string& line) {
 }
 
 std::vector<TripletCurve> parseTripletCsv(const std::string& text, const std::string& source) {
-    std::istringstream in(text);
+    std::istringstream in{std::string(withoutBom(text))}; // Excel's "CSV UTF-8" starts with a BOM
     std::string line;
     std::vector<TripletCurve> curves;
     std::map<std::tuple<std::string, double, std::string>, std::size_t> index;
@@ -111,11 +114,11 @@ std::vector<TripletCurve> parseTripletCsv(const std::string& text, const std::st
         const double delta = parseNumber(trim(f[col[3]]), where, "delta_in");
         const double shear = parseNumber(trim(f[col[4]]), where, "shear_kips");
         if (!(cp > 0.0))
-            throw TripletCsvError(where.at("cp_psi") + ": must be > 0, got '" + trim(f[col[1]]) +
-                                  "'");
+            throw TripletCsvError(where.at("cp_psi") + ": must be > 0, got " +
+                                  quotedToken(trim(f[col[1]])));
         if (!(shear > 0.0))
-            throw TripletCsvError(where.at("shear_kips") + ": must be > 0, got '" +
-                                  trim(f[col[4]]) + "'");
+            throw TripletCsvError(where.at("shear_kips") + ": must be > 0, got " +
+                                  quotedToken(trim(f[col[4]])));
         const auto key = std::make_tuple(config, cp, test);
         auto [it, added] = index.try_emplace(key, curves.size());
         if (added) curves.push_back(TripletCurve{config, cp, test, {}, {}});
@@ -139,11 +142,9 @@ std::vector<TripletCurve> parseTripletCsv(const std::string& text, const std::st
 }
 
 std::vector<TripletCurve> readTripletCsv(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw TripletCsvError(path + ": cannot open the file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parseTripletCsv(text.str(), path);
+    const FileText f = readTextFile(path, limits::kMaxCsvFileBytes);
+    if (!f.error.empty()) throw TripletCsvError(path + ": " + f.error);
+    return parseTripletCsv(f.text, path);
 }
 
 } // namespace kinstab

@@ -1,5 +1,7 @@
 #include "core/io/Accelerogram.h"
 
+#include "core/io/TextInput.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -91,7 +93,7 @@ RecordError::RecordError(const std::string& file, int line, const std::string& m
 void validateAccelerogram(const Accelerogram& a) {
     if (!(a.dt > 0.0) || !std::isfinite(a.dt))
         throw RecordError(a.sourceFile, 0,
-                          "time step dt = " + std::to_string(a.dt) + " s: must be > 0");
+                          "time step dt = " + formatDouble(a.dt) + " s: must be > 0");
     if (a.samples.size() < 2)
         throw RecordError(a.sourceFile, 0,
                           "record has " + std::to_string(a.samples.size()) +

@@ -1,5 +1,8 @@
 #include "core/io/At2Reader.h"
 
+#include "core/io/InputLimits.h"
+#include "core/io/TextInput.h"
+
 #include <cmath>
 #include <regex>
 
@@ -20,8 +23,8 @@ std::optional<NptsLine> findNptsLine(const RecordText& text) {
     static const std::regex valuesFirst(R"(^\s*(\S+)\s+(\S+)\s+NPTS\s*,?\s*DT)", std::regex::icase);
     for (std::size_t i = 0; i < std::min(text.size(), kMaxHeaderLines); ++i) {
         std::smatch m;
-        if (std::regex_search(text.line(i), m, labelled) ||
-            std::regex_search(text.line(i), m, valuesFirst))
+        const std::string l = text.header(i);
+        if (std::regex_search(l, m, labelled) || std::regex_search(l, m, valuesFirst))
             return NptsLine{i, m[1].str(), m[2].str()};
     }
     return std::nullopt;
@@ -30,7 +33,7 @@ std::optional<NptsLine> findNptsLine(const RecordText& text) {
 // "ACCELERATION TIME SERIES IN UNITS OF G", "The units are (g)"; g when nothing is said.
 AccelUnit headerUnit(const RecordText& text, std::size_t nptsLine) {
     for (std::size_t i = 0; i < nptsLine; ++i) {
-        const std::string l = lowerCase(text.line(i));
+        const std::string l = lowerCase(text.header(i));
         const std::size_t at = l.find("units");
         if (at == std::string::npos) continue;
         const std::string rest = l.substr(at);
@@ -40,7 +43,7 @@ AccelUnit headerUnit(const RecordText& text, std::size_t nptsLine) {
         if (rest.find("ft/s") != std::string::npos) return AccelUnit::FtPerS2;
         if (rest.find("m/s") != std::string::npos) return AccelUnit::MetresPerS2;
         if (std::regex_search(rest, std::regex(R"((of|\()\s*g\b)"))) return AccelUnit::G;
-        text.fail(i, "unknown units in '" + text.line(i) + "'");
+        text.fail(i, "unknown units in " + quotedToken(text.line(i)));
     }
     return AccelUnit::G;
 }
@@ -75,13 +78,15 @@ Accelerogram parseAt2(const RecordText& text) {
                   "no 'NPTS=..., DT=...' line in the first " + std::to_string(kMaxHeaderLines) +
                       " lines");
     const double npts = finiteAt(text, h->line, h->npts, "NPTS");
-    if (npts < 2 || npts != std::floor(npts) || npts > 1e9)
-        text.fail(h->line, "NPTS '" + h->npts + "' must be a whole number of at least 2");
+    if (npts < 2 || npts != std::floor(npts) ||
+        npts > static_cast<double>(limits::kMaxRecordSamples))
+        text.fail(h->line, "NPTS " + quotedToken(h->npts) + " must be a whole number from 2 to " +
+                               std::to_string(limits::kMaxRecordSamples));
     Accelerogram a;
     a.sourceFile = text.source();
     a.format = "PEER AT2";
     a.dt = finiteAt(text, h->line, h->dt, "DT");
-    if (a.dt <= 0.0) text.fail(h->line, "DT '" + h->dt + "' must be > 0");
+    if (a.dt <= 0.0) text.fail(h->line, "DT " + quotedToken(h->dt) + " must be > 0");
     a.fileUnit = headerUnit(text, h->line);
     describe(a, text);
     a.samples = readFreeValues(text, h->line + 1);

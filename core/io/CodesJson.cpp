@@ -1,5 +1,7 @@
 #include "core/io/CodesJson.h"
 
+#include "core/io/TextInput.h"
+
 #include "core/io/ResultJson.h"
 
 #include <algorithm>
@@ -27,7 +29,7 @@ E enumField(const JsonReader& r, const std::string& key, E fallback, F fromName,
     const auto t = r.optionalText(key);
     if (!t) return fallback;
     const auto v = fromName(*t);
-    if (!v) r.fail(key, "'" + *t + "' must be one of " + allowed);
+    if (!v) r.fail(key, quotedToken(*t) + " must be one of " + allowed);
     return *v;
 }
 

@@ -1,5 +1,8 @@
 #include "core/io/CosmosReader.h"
 
+#include "core/io/InputLimits.h"
+#include "core/io/TextInput.h"
+
 #include <cmath>
 #include <regex>
 
@@ -9,6 +12,17 @@ namespace {
 
 constexpr double kUnknown = -999.0; // COSMOS "value unknown"
 
+// A count written in a header: whole, and no more than the lines or samples a file may have.
+std::size_t countAt(const RecordText& text, std::size_t i, const std::string& token,
+                    const char* what) {
+    const auto n = parseCount(token, limits::kMaxRecordSamples);
+    if (!n)
+        text.fail(i, std::string(what) + " " + quotedToken(token) +
+                         ": expected a whole number within the limit of " +
+                         std::to_string(limits::kMaxRecordSamples));
+    return *n;
+}
+
 // "100 Integer-header values follow on 10 lines, Format= (10I8)": count and line count.
 std::pair<std::size_t, std::size_t> blockSize(const RecordText& text, std::size_t i,
                                               const char* what) {
@@ -17,10 +31,12 @@ std::pair<std::size_t, std::size_t> blockSize(const RecordText& text, std::size_
     std::smatch m;
     if (i >= text.size())
         text.fail(text.size() - 1, std::string("file ends before the ") + what + " header block");
-    if (!std::regex_search(text.line(i), m, re))
+    const std::string l = text.header(i);
+    if (!std::regex_search(l, m, re))
         text.fail(i, std::string("expected the ") + what +
                          " header line '... values follow on ... lines'");
-    return {std::stoul(m[1].str()), std::stoul(m[2].str())};
+    return {countAt(text, i, m[1].str(), "header value count"),
+            countAt(text, i, m[2].str(), "header line count")};
 }
 
 std::vector<double> realHeader(const RecordText& text, std::size_t& i) {
@@ -39,7 +55,7 @@ void describe(Accelerogram& a, const RecordText& text, std::size_t textLines) {
                                  std::regex::icase);
     a.name = trimmed(text.line(std::min<std::size_t>(1, textLines - 1)));
     for (std::size_t i = 0; i < textLines; ++i) {
-        const std::string& l = text.line(i);
+        const std::string l = text.header(i);
         std::smatch m;
         if (l.rfind("Statn No:", 0) == 0)
             a.station = trimmed(l.substr(9));
@@ -56,9 +72,10 @@ Accelerogram parseCosmos(const RecordText& text) {
     static const std::regex first(R"(\(Format\s+v\S*\s+with\s+(\d+)\s+text lines\))",
                                   std::regex::icase);
     std::smatch m;
-    if (!std::regex_search(text.line(0), m, first))
+    const std::string line0 = text.header(0);
+    if (!std::regex_search(line0, m, first))
         text.fail(0, "not a COSMOS header: expected '(Format v01.20 with 13 text lines)'");
-    const std::size_t textLines = std::stoul(m[1].str());
+    const std::size_t textLines = countAt(text, 0, m[1].str(), "text line count");
     if (textLines < 1 || textLines + 3 > text.size())
         text.fail(0, "file ends inside the text header");
     Accelerogram a;
@@ -71,20 +88,25 @@ Accelerogram parseCosmos(const RecordText& text) {
     i += 1 + blockSize(text, i, "integer").second;
     const std::vector<double> real = realHeader(text, i);
     static const std::regex comments(R"(^\s*(\d+)\s+Comment line)", std::regex::icase);
-    if (i < text.size() && std::regex_search(text.line(i), m, comments))
-        i += 1 + std::stoul(m[1].str());
+    const std::string commentLine = i < text.size() ? text.header(i) : std::string();
+    if (std::regex_search(commentLine, m, comments))
+        i += 1 + countAt(text, i, m[1].str(), "comment line count");
     static const std::regex data(R"(^\s*(\d+)\s+(\S+)\s+pts.*units\s*=\s*([^(,]*))",
                                  std::regex::icase);
     if (i >= text.size()) text.fail(text.size() - 1, "file ends before the data header line");
-    if (!std::regex_search(text.line(i), m, data))
+    const std::string dataLine = text.header(i);
+    if (!std::regex_search(dataLine, m, data))
         text.fail(i, "expected the data header 'N acceleration pts, ..., units=..., Format=(...)'");
     if (m[2].str().rfind("accel", 0) != 0)
-        text.fail(i, "the first data block holds " + m[2].str() + ", not acceleration");
-    const std::size_t npts = std::stoul(m[1].str());
+        text.fail(i,
+                  "the first data block holds " + quotedToken(m[2].str()) + ", not acceleration");
+    const std::size_t npts = countAt(text, i, m[1].str(), "number of points");
     const std::optional<AccelUnit> unit = accelUnitFromName(trimmed(m[3].str()));
-    if (!unit) text.fail(i, "unknown units '" + trimmed(m[3].str()) + "'");
+    if (!unit) text.fail(i, "unknown units " + quotedToken(trimmed(m[3].str())));
+    const std::size_t formatAt = lowerCase(text.line(i)).find("format");
     const std::optional<FixedFormat> format =
-        parseFortranFormat(text.line(i).substr(text.line(i).find("ormat")));
+        formatAt == std::string::npos ? std::nullopt
+                                      : parseFortranFormat(text.line(i).substr(formatAt));
     if (!format) text.fail(i, "no Fortran data format such as 'Format=(1E15.6)'");
     if (real.size() < 64 || real[61] == kUnknown || !(real[61] > 0.0))
         text.fail(i, "sample interval (real header value 62, ms) is missing or unknown");

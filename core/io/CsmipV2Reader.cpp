@@ -1,5 +1,8 @@
 #include "core/io/CsmipV2Reader.h"
 
+#include "core/io/InputLimits.h"
+#include "core/io/TextInput.h"
+
 #include <regex>
 
 namespace kinstab {
@@ -20,7 +23,8 @@ const CsmipChannel& pick(const RecordText& text, const std::vector<CsmipChannel>
     std::string list;
     for (const CsmipChannel& c : channels)
         list += (list.empty() ? "" : ", ") + std::to_string(c.number) + " " + c.name;
-    text.failFile("channel '" + wanted + "' is not in the file; it has: " + list);
+    text.failFile("channel " + quotedToken(wanted) +
+                  " is not in the file; it has: " + elided(list, 400));
 }
 
 void describe(Accelerogram& a, const RecordText& text, const CsmipChannel& c, std::size_t end) {
@@ -37,7 +41,8 @@ std::optional<double> headerPeak(const RecordText& text, std::size_t from, std::
     static const std::regex re(R"(peak\s+acceleration\s*=\s*(\S+)\s+(\S+))", std::regex::icase);
     for (std::size_t i = from; i < to; ++i) {
         std::smatch m;
-        if (!std::regex_search(text.line(i), m, re)) continue;
+        const std::string l = text.header(i);
+        if (!std::regex_search(l, m, re)) continue;
         const auto value = parseNumber(m[1].str());
         const auto unit = accelUnitFromName(m[2].str());
         if (value && unit) return *value * gPerUnit(*unit);
@@ -53,9 +58,11 @@ std::vector<CsmipChannel> csmipChannels(const RecordText& text) {
     for (std::size_t i = 0; i < text.size(); ++i) {
         if (!startsChannel(text.line(i))) continue;
         std::smatch m;
-        if (!std::regex_search(text.line(i), m, chan))
-            text.fail(i, "channel header without 'CHAN n: NAME'");
-        out.push_back({std::stoi(m[1].str()), m[2].str(), i});
+        const std::string l = text.header(i);
+        if (!std::regex_search(l, m, chan)) text.fail(i, "channel header without 'CHAN n: NAME'");
+        const auto number = parseCount(m[1].str(), 1'000'000);
+        if (!number) text.fail(i, "channel number " + quotedToken(m[1].str()) + " is too large");
+        out.push_back({static_cast<int>(*number), m[2].str(), i});
     }
     return out;
 }
@@ -76,27 +83,30 @@ Accelerogram parseCsmipV2(const RecordText& text, const std::string& channel) {
     static const std::regex units(R"((?:units:\s*|\bin\s+)([a-z/0-9]+))", std::regex::icase);
     for (std::size_t i = c.firstLine; i < end; ++i) {
         std::smatch m;
-        const std::string& l = text.line(i);
+        const std::string l = text.header(i);
         if (!std::regex_search(l, m, block)) continue;
         Accelerogram a;
         a.sourceFile = text.source();
         a.format = "CSMIP V2";
-        const double npts = finiteAt(text, i, m[1].str(), "number of points");
+        const auto npts = parseCount(m[1].str(), limits::kMaxRecordSamples);
+        if (!npts || *npts < 2)
+            text.fail(i, "number of points " + quotedToken(m[1].str()) + " must be 2 to " +
+                             std::to_string(limits::kMaxRecordSamples));
         a.dt = finiteAt(text, i, m[2].str(), "sample interval");
-        if (npts < 2) text.fail(i, "number of points '" + m[1].str() + "' must be at least 2");
-        if (a.dt <= 0.0) text.fail(i, "sample interval '" + m[2].str() + "' must be > 0");
+        if (a.dt <= 0.0)
+            text.fail(i, "sample interval " + quotedToken(m[2].str()) + " must be > 0");
         const std::string rest = m.suffix().str();
         std::smatch u;
         if (!std::regex_search(rest, u, units)) text.fail(i, "no units on the data line");
         const std::string unitName = trimmed(u[1].str());
         const auto unit = accelUnitFromName(
             unitName.back() == '.' ? unitName.substr(0, unitName.size() - 1) : unitName);
-        if (!unit) text.fail(i, "unknown units '" + unitName + "'");
+        if (!unit) text.fail(i, "unknown units " + quotedToken(unitName));
         a.fileUnit = *unit;
         const FixedFormat format =
             parseFortranFormat(rest).value_or(FixedFormat{8, 10}); // old files: 8F10.3
         std::size_t next = 0;
-        a.samples = readFixedValues(text, i + 1, static_cast<std::size_t>(npts), format, next);
+        a.samples = readFixedValues(text, i + 1, *npts, format, next);
         for (double& x : a.samples)
             x *= gPerUnit(a.fileUnit);
         a.headerPeak = headerPeak(text, c.firstLine, i);

@@ -1,17 +1,64 @@
 #include "core/io/JsonReader.h"
 
+#include "core/io/InputLimits.h"
+#include "core/io/TextInput.h"
 #include "core/sweep/Grid.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace kinstab {
 
 namespace {
+// A value for a message: never the whole of a big array or object (dumping a deeply nested
+// one would recurse once per level).
 std::string shown(const nlohmann::json& v) {
-    std::string s = v.dump();
-    return s.size() > 60 ? s.substr(0, 57) + "..." : s;
+    if (v.is_array()) return "an array of " + std::to_string(v.size()) + " entries";
+    if (v.is_object()) return "an object";
+    if (v.is_string()) return nlohmann::json(elided(v.get<std::string>(), 57)).dump();
+    return v.dump();
 }
 } // namespace
+
+int jsonNestingDepth(std::string_view text, int limit) {
+    int depth = 0, deepest = 0;
+    bool inString = false;
+    for (std::size_t i = 0; i < text.size() && deepest <= limit; ++i) {
+        const char c = text[i];
+        if (inString) {
+            if (c == '\\')
+                ++i; // the escaped character cannot end the string
+            else if (c == '"')
+                inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            deepest = std::max(deepest, ++depth);
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return deepest;
+}
+
+nlohmann::json parseJsonDocument(const std::string& text, std::uintmax_t maxBytes) {
+    if (text.size() > maxBytes)
+        throw JsonFieldError("document: " + std::to_string(text.size()) +
+                             " bytes, more than the limit of " + std::to_string(maxBytes));
+    const std::string_view body = withoutBom(text);
+    if (jsonNestingDepth(body, limits::kMaxJsonDepth) > limits::kMaxJsonDepth)
+        throw JsonFieldError("document: arrays and objects nested more than " +
+                             std::to_string(limits::kMaxJsonDepth) + " levels deep");
+    try {
+        return nlohmann::json::parse(body.begin(), body.end());
+    } catch (const nlohmann::json::parse_error& e) {
+        // e.byte says where a truncated or corrupt file stops making sense.
+        throw JsonFieldError("not valid JSON (truncated or corrupt?) at byte " +
+                             std::to_string(e.byte) + ": " + elided(e.what(), 300));
+    } catch (const nlohmann::json::exception& e) { // e.g. a number beyond the range of double
+        throw JsonFieldError("not valid JSON: " + elided(e.what(), 300));
+    }
+}
 
 JsonReader::JsonReader(const nlohmann::json& j, std::string path) : j_(&j), path_(std::move(path)) {
     if (!j.is_object())

@@ -5,9 +5,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace kinstab {
@@ -15,6 +17,15 @@ namespace kinstab {
 struct JsonFieldError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
+
+// Parses a whole JSON document (a UTF-8 byte-order mark is skipped). Refuses, with a
+// JsonFieldError saying where, text that is not JSON, a document larger than maxBytes, nesting
+// deeper than limits::kMaxJsonDepth (checked by a scan before parsing, so no recursive walk of
+// the document can run out of stack) and numbers beyond the range of double ("1e999").
+nlohmann::json parseJsonDocument(const std::string& text, std::uintmax_t maxBytes);
+// Deepest nesting of arrays and objects in JSON text (strings are skipped); stops counting
+// at limit + 1.
+int jsonNestingDepth(std::string_view text, int limit);
 
 class JsonReader {
 public:

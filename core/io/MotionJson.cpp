@@ -1,5 +1,7 @@
 #include "core/io/MotionJson.h"
 
+#include "core/io/TextInput.h"
+
 #include <filesystem>
 
 namespace kinstab {
@@ -19,6 +21,14 @@ std::string pathFromProject(const std::string& stored, const std::string& baseDi
     const fs::path p(stored);
     if (baseDir.empty() || stored.empty() || p.is_absolute()) return stored;
     return (fs::path(baseDir) / p).lexically_normal().string();
+}
+
+bool leavesProjectFolder(const std::string& file, const std::string& baseDir) {
+    if (baseDir.empty() || file.empty()) return false;
+    const fs::path base = fs::absolute(fs::path(baseDir)).lexically_normal();
+    const fs::path full = fs::absolute(base / fs::path(file)).lexically_normal();
+    const fs::path rel = full.lexically_relative(base);
+    return rel.empty() || *rel.begin() == "..";
 }
 
 namespace {
@@ -41,12 +51,13 @@ RecordReadOptions readOptionsFrom(const JsonReader& r) {
     const std::string format = r.text("format", "auto");
     const auto f = recordFormatFromName(format);
     if (!f)
-        r.fail("format", "'" + format + "' must be auto, at2, cosmos, csmip, values or time-accel");
+        r.fail("format",
+               quotedToken(format) + " must be auto, at2, cosmos, csmip, values or time-accel");
     o.format = *f;
     o.dt = r.optionalNumber("dt");
     if (const auto unit = r.optionalText("unit")) {
         o.unit = accelUnitFromName(*unit);
-        if (!o.unit) r.fail("unit", "'" + *unit + "' must be g, m/s2, cm/s2, ft/s2 or in/s2");
+        if (!o.unit) r.fail("unit", quotedToken(*unit) + " must be g, m/s2, cm/s2, ft/s2 or in/s2");
     }
     o.channel = r.text("channel", "");
     return o;
@@ -84,7 +95,7 @@ std::optional<RecordExcitation> excitationFromJson(const JsonReader& r,
     if (!x) return std::nullopt;
     const std::string source = x->text("source", "sine");
     if (source == "sine") return std::nullopt;
-    if (source != "record") x->fail("source", "'" + source + "' must be sine or record");
+    if (source != "record") x->fail("source", quotedToken(source) + " must be sine or record");
     return recordFrom(x->object("record"), baseDir);
 }
 
@@ -92,7 +103,8 @@ void checkRecordFile(const RecordExcitation& e) {
     try {
         (void)readGroundRecord(e);
     } catch (const RecordError& err) {
-        throw JsonFieldError("excitation.record.file = '" + e.file + "': " + err.what());
+        throw JsonFieldError("excitation.record.file = '" + elided(e.file, 1000) +
+                             "': " + err.what());
     }
 }
 

@@ -31,5 +31,9 @@ void checkRecordFile(const RecordExcitation& e);
 // Path helpers: relative to baseDir when both are given, else unchanged; and back.
 std::string pathForProject(const std::string& file, const std::string& baseDir);
 std::string pathFromProject(const std::string& stored, const std::string& baseDir);
+// True when file (absolute, or relative to baseDir) lies outside the folder baseDir and its
+// subfolders ("../other/X.AT2", "/data/X.AT2"): such a project is not self-contained when
+// copied, so the GUI and the report name the file as being outside the project's folder.
+bool leavesProjectFolder(const std::string& file, const std::string& baseDir);
 
 } // namespace kinstab

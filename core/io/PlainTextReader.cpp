@@ -1,5 +1,8 @@
 #include "core/io/PlainTextReader.h"
 
+#include "core/io/InputLimits.h"
+#include "core/io/TextInput.h"
+
 #include <cmath>
 
 namespace kinstab {
@@ -31,6 +34,12 @@ std::vector<std::string_view> splitFields(const std::string& line) {
     return out;
 }
 
+void checkCount(const RecordText& text, std::size_t i, std::size_t count) {
+    if (count >= limits::kMaxRecordSamples)
+        text.fail(i, "more than the limit of " + std::to_string(limits::kMaxRecordSamples) +
+                         " samples");
+}
+
 Accelerogram plain(const RecordText& text, const char* format, double dt, AccelUnit unit) {
     Accelerogram a;
     a.sourceFile = text.source();
@@ -44,14 +53,16 @@ Accelerogram plain(const RecordText& text, const char* format, double dt, AccelU
 
 Accelerogram parseValues(const RecordText& text, double dt, AccelUnit unit) {
     if (!(dt > 0.0) || !std::isfinite(dt))
-        text.failFile("dt " + std::to_string(dt) + " s: must be > 0");
+        text.failFile("dt " + formatDouble(dt) + " s: must be > 0");
     Accelerogram a = plain(text, "values", dt, unit);
     for (std::size_t i = 0; i < text.size(); ++i) {
         if (isComment(text.line(i))) continue;
-        for (std::string_view token : splitWhitespace(text.line(i)))
+        for (std::string_view token : splitWhitespace(text.line(i))) {
+            checkCount(text, i, a.samples.size());
             a.samples.push_back(
                 finiteAt(text, i, token, "value " + std::to_string(a.samples.size() + 1)) *
                 gPerUnit(unit));
+        }
     }
     if (a.samples.size() < 2)
         text.fail(text.size() == 0 ? 0 : text.size() - 1, "found " +
@@ -73,6 +84,7 @@ Accelerogram parseTimeAccel(const RecordText& text, AccelUnit unit) {
             continue;
         }
         sawRow = true;
+        checkCount(text, i, time.size());
         if (fields.size() == 1)
             text.fail(i, "one value on the line: a single-column record needs dt");
         if (fields.size() != 2)
@@ -89,10 +101,10 @@ Accelerogram parseTimeAccel(const RecordText& text, AccelUnit unit) {
     for (std::size_t k = 1; k < time.size(); ++k) {
         const double step = time[k] - time[k - 1];
         if (step <= 0.0)
-            text.fail(lineOf[k], "time " + std::to_string(time[k]) + " does not increase");
+            text.fail(lineOf[k], "time " + formatDouble(time[k]) + " does not increase");
         if (std::abs(step - firstStep) > 1e-3 * firstStep)
-            text.fail(lineOf[k], "time step " + std::to_string(step) +
-                                     " s differs from the first, " + std::to_string(firstStep) +
+            text.fail(lineOf[k], "time step " + formatDouble(step) + " s differs from the first, " +
+                                     formatDouble(firstStep) +
                                      " s: samples must be equally spaced");
     }
     a.dt = (time.back() - time.front()) /

@@ -1,6 +1,7 @@
 #include "core/io/PlanarJson.h"
 
 #include "core/io/MotionJson.h"
+#include "core/io/TextInput.h"
 
 namespace kinstab {
 
@@ -33,7 +34,7 @@ void verticalFrom(const JsonReader& r, PlanarSettings& s, const std::string& bas
     const std::string name = v.get<std::string>();
     const auto source = verticalSourceFromName(name);
     if (!source || *source == VerticalSource::File)
-        r.fail("vertical", "'" + name + "' must be none, rsn68_up or {\"file\": PATH}");
+        r.fail("vertical", quotedToken(name) + " must be none, rsn68_up or {\"file\": PATH}");
     s.vertical = *source;
 }
 } // namespace
@@ -45,7 +46,7 @@ PlanarSettings planarSettingsFromJson(const JsonReader& r, const std::string& ba
     s.theta = r.number("theta", s.theta);
     const std::string norm = r.text("normalization", normalizationName(s.normalization));
     const auto n = normalizationFromName(norm);
-    if (!n) r.fail("normalization", "'" + norm + "' must be product or envelope");
+    if (!n) r.fail("normalization", quotedToken(norm) + " must be product or envelope");
     s.normalization = *n;
     verticalFrom(r, s, baseDir);
     if (const std::string e = validatePlanarSettings(s); !e.empty()) throw JsonFieldError(e);

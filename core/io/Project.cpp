@@ -3,9 +3,11 @@
 #include "core/io/AtomicFile.h"
 #include "core/io/CodesJson.h"
 #include "core/io/FloorsJson.h"
+#include "core/io/InputLimits.h"
 #include "core/io/JsonReader.h"
 #include "core/io/MotionJson.h"
 #include "core/io/PlanarJson.h"
+#include "core/io/TextInput.h"
 
 #include <cmath>
 #include <filesystem>
@@ -34,14 +36,24 @@ Project paperExampleProject() {
 }
 
 std::string validateProject(const Project& p) {
+    if (p.name.size() > limits::kMaxNameChars)
+        return "name: " + std::to_string(p.name.size()) + " characters, more than the limit of " +
+               std::to_string(limits::kMaxNameChars) + " (a name is shown in titles)";
+    if (p.building.name.size() > limits::kMaxNameChars)
+        return "building.name: " + std::to_string(p.building.name.size()) +
+               " characters, more than the limit of " + std::to_string(limits::kMaxNameChars);
+    if (p.description.size() > limits::kMaxDescriptionChars)
+        return "description: " + std::to_string(p.description.size()) +
+               " characters, more than the limit of " +
+               std::to_string(limits::kMaxDescriptionChars);
     if (p.model != "slab1d" && p.model != "planar")
-        return "model = '" + p.model + "': must be slab1d or planar";
+        return "model = " + quotedToken(p.model) + ": must be slab1d or planar";
     std::string e = validateBuilding(p.building);
     if (e.empty()) e = validateCodes(p.codes);
     if (e.empty() && !(e = validateCase(p.slab)).empty()) e = "slab: " + e;
     if (e.empty() && p.wallWidthIn &&
         (!std::isfinite(*p.wallWidthIn) || *p.wallWidthIn <= 0.0 || *p.wallWidthIn > 1000.0))
-        e = "slab.wall_width_in = " + std::to_string(*p.wallWidthIn) +
+        e = "slab.wall_width_in = " + formatDouble(*p.wallWidthIn) +
             ": must be > 0 and at most 1000";
     if (e.empty() && (!p.grid.amplitudes.empty() || !p.grid.frequencies.empty()) &&
         !(e = validateGrid(p.grid)).empty())
@@ -78,7 +90,8 @@ Envelope envelopeFrom(const JsonReader& r) {
     if (e.is_string()) {
         const auto preset = presetFromName(e.get<std::string>());
         if (!preset)
-            r.fail("envelope", "'" + e.get<std::string>() + "' must be fast, moderate or slow");
+            r.fail("envelope",
+                   quotedToken(e.get<std::string>()) + " must be fast, moderate or slow");
         return Envelope::fromPreset(*preset);
     }
     const JsonReader o(e, r.field("envelope"));
@@ -97,7 +110,7 @@ void slabFrom(const JsonReader& r, Project& p) {
         p.wallWidthIn = r.requiredNumber("wall_width_in");
         if (*p.wallWidthIn <= 0.0 || *p.wallWidthIn > 1000.0)
             r.fail("wall_width_in",
-                   std::to_string(*p.wallWidthIn) + " in: must be > 0 and at most 1000");
+                   formatDouble(*p.wallWidthIn) + " in: must be > 0 and at most 1000");
         c.tstar = tstarFromWallWidthInches(*p.wallWidthIn);
     } else {
         c.tstar = r.number("tstar", c.tstar);
@@ -107,12 +120,12 @@ void slabFrom(const JsonReader& r, Project& p) {
     c.slab.duration = r.optionalNumber("duration");
     const std::string solver = r.text("solver", "exact");
     if (solver != "exact" && solver != "paper")
-        r.fail("solver", "'" + solver + "' must be exact or paper");
+        r.fail("solver", quotedToken(solver) + " must be exact or paper");
     c.solver = solver == "exact" ? SolverKind::Exact : SolverKind::Paper;
     c.paperStepsPerPeriod = r.number("paper_steps", c.paperStepsPerPeriod);
     const std::string scale = r.text("scale", "tau_max");
     const auto s = tauScaleFromName(scale);
-    if (!s) r.fail("scale", "'" + scale + "' must be tau_max, tau_rise, tau_dur or one");
+    if (!s) r.fail("scale", quotedToken(scale) + " must be tau_max, tau_rise, tau_dur or one");
     c.scale = *s;
     if (const std::string e = validateCase(c); !e.empty()) throw JsonFieldError("slab: " + e);
 }
@@ -198,11 +211,9 @@ Project projectFromJson(const json& j, const std::string& baseDir) {
 Project parseProject(const std::string& text, const std::string& baseDir) {
     json j;
     try {
-        j = json::parse(text);
-    } catch (const json::parse_error& e) {
-        // e.byte says where a truncated or corrupt file stops making sense.
-        throw ProjectError("not valid JSON (truncated or corrupt?) at byte " +
-                           std::to_string(e.byte) + ": " + e.what());
+        j = parseJsonDocument(text, limits::kMaxProjectFileBytes);
+    } catch (const JsonFieldError& e) {
+        throw ProjectError(e.what());
     }
     return projectFromJson(j, baseDir);
 }
@@ -214,10 +225,10 @@ std::string directoryOf(const std::string& path) {
 } // namespace
 
 Project loadProject(const std::string& path) {
+    const FileText f = readTextFile(path, limits::kMaxProjectFileBytes);
+    if (!f.error.empty()) throw ProjectError(path + ": " + f.error);
     try {
-        return parseProject(readWholeFile(path), directoryOf(path));
-    } catch (const FileError& e) {
-        throw ProjectError(e.what());
+        return parseProject(f.text, directoryOf(path));
     } catch (const ProjectError& e) {
         throw ProjectError(path + ": " + e.what());
     }

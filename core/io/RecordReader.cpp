@@ -3,9 +3,12 @@
 #include "core/io/At2Reader.h"
 #include "core/io/CosmosReader.h"
 #include "core/io/CsmipV2Reader.h"
+#include "core/io/InputLimits.h"
 #include "core/io/PlainTextReader.h"
+#include "core/io/TextInput.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace kinstab {
 
@@ -15,6 +18,25 @@ const std::pair<RecordFormat, const char*> kNames[] = {
     {RecordFormat::Cosmos, "cosmos"}, {RecordFormat::CsmipV2, "csmip"},
     {RecordFormat::Values, "values"}, {RecordFormat::TimeAccel, "time-accel"},
 };
+
+// What a file's numbers may be (core/io/InputLimits.h), and header text short enough to show.
+void checkLimits(const RecordText& text, Accelerogram& a) {
+    using namespace limits;
+    if (std::isfinite(a.dt) && (a.dt < kMinRecordDt || a.dt > kMaxRecordDt))
+        text.failFile("sample interval " + formatDouble(a.dt) + " s is outside " +
+                      formatDouble(kMinRecordDt) + " to " + formatDouble(kMaxRecordDt) + " s");
+    if (a.samples.size() > kMaxRecordSamples)
+        text.failFile(std::to_string(a.samples.size()) + " samples: more than the limit of " +
+                      std::to_string(kMaxRecordSamples));
+    const SignedPeak p = a.peak();
+    if (std::abs(p.value) > kMaxRecordAccelG)
+        text.failFile("sample " + std::to_string(p.index + 1) + " is " + formatDouble(p.value) +
+                      " g, beyond " + formatDouble(kMaxRecordAccelG) +
+                      " g: are the units right (--record-unit, e.g. cm/s2)?");
+    a.name = elided(a.name, kMaxNameChars);
+    a.station = elided(a.station, kMaxNameChars);
+    a.component = elided(a.component, kMaxNameChars);
+}
 } // namespace
 
 std::string recordFormatName(RecordFormat f) {
@@ -45,8 +67,13 @@ RecordFormat detectRecordFormat(const RecordText& text, const RecordReadOptions&
 Accelerogram parseRecord(const RecordText& text, const RecordReadOptions& options) {
     if (text.skipBlank(0) == text.size()) text.failFile("empty file");
     const AccelUnit unit = options.unit.value_or(AccelUnit::G);
+    const RecordFormat format = detectRecordFormat(text, options);
+    if (!trimmed(options.channel).empty() && format != RecordFormat::CsmipV2)
+        text.failFile("channel " + quotedToken(options.channel) +
+                      " was asked for, but only CSMIP V2 " +
+                      "files have channels; this file reads as " + recordFormatName(format));
     Accelerogram a;
-    switch (detectRecordFormat(text, options)) {
+    switch (format) {
     case RecordFormat::At2:
         a = parseAt2(text);
         break;
@@ -66,6 +93,7 @@ Accelerogram parseRecord(const RecordText& text, const RecordReadOptions& option
         break;
     }
     validateAccelerogram(a);
+    checkLimits(text, a);
     return a;
 }
 

@@ -1,31 +1,31 @@
 #include "core/io/RecordText.h"
 
-#include <charconv>
+#include "core/io/InputLimits.h"
+#include "core/io/TextInput.h"
+
+#include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 namespace kinstab {
 
-RecordText::RecordText(const std::string& text, std::string source) : source_(std::move(source)) {
+RecordText::RecordText(const std::string& whole, std::string source) : source_(std::move(source)) {
+    const std::string_view text = withoutBom(whole);
     std::size_t start = 0;
     while (start < text.size()) {
         std::size_t end = text.find('\n', start);
         if (end == std::string::npos) end = text.size();
-        std::string line = text.substr(start, end - start);
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        lines_.push_back(std::move(line));
+        std::string_view line = text.substr(start, end - start);
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        // Header text of old records is often Latin-1 ("M\xE9xico"): shown as UTF-8.
+        lines_.push_back(utf8FromLegacy(line));
         start = end + 1;
     }
 }
 
 RecordText RecordText::fromFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw RecordError(path, 0, "cannot open the file");
-    std::ostringstream s;
-    s << in.rdbuf();
-    if (in.bad()) throw RecordError(path, 0, "cannot read the file");
-    return RecordText(s.str(), path);
+    FileText f = readTextFile(path, limits::kMaxRecordFileBytes);
+    if (!f.error.empty()) throw RecordError(path, 0, f.error);
+    return RecordText(f.text, path);
 }
 
 bool RecordText::blank(std::size_t i) const {
@@ -47,23 +47,19 @@ void RecordText::failFile(const std::string& message) const {
 }
 
 std::optional<double> parseNumber(std::string_view token) {
-    if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-    if (token.empty() || token.front() == '+') return std::nullopt;
+    if (token.size() > 64) return std::nullopt; // no number in a record is that long
     std::string t(token);
     for (char& c : t)
         if (c == 'D' || c == 'd') c = 'E'; // Fortran double-precision exponent
-    double x = 0;
-    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), x);
-    if (ec != std::errc() || end != t.data() + t.size()) return std::nullopt;
-    return x;
+    return parseDouble(t);
 }
 
 double finiteAt(const RecordText& text, std::size_t i, std::string_view token,
                 const std::string& what) {
     const std::optional<double> x = parseNumber(token);
-    if (!x) text.fail(i, what + " '" + std::string(token) + "' is not a number");
+    if (!x) text.fail(i, what + " " + quotedToken(token) + " is not a number");
     if (!std::isfinite(*x))
-        text.fail(i, what + " '" + std::string(token) + "' is not a finite number");
+        text.fail(i, what + " " + quotedToken(token) + " is not a finite number");
     return *x;
 }
 
@@ -97,27 +93,36 @@ std::string trimmed(const std::string& s) {
 std::vector<double> readFreeValues(const RecordText& text, std::size_t first) {
     std::vector<double> values;
     for (std::size_t i = first; i < text.size(); ++i)
-        for (std::string_view token : splitWhitespace(text.line(i)))
+        for (std::string_view token : splitWhitespace(text.line(i))) {
+            if (values.size() == limits::kMaxRecordSamples)
+                text.fail(i, "more than the limit of " + std::to_string(limits::kMaxRecordSamples) +
+                                 " samples");
             values.push_back(
                 finiteAt(text, i, token, "value " + std::to_string(values.size() + 1)));
+        }
     return values;
 }
 
 std::optional<FixedFormat> parseFortranFormat(std::string_view spec) {
     // "(8f10.6)", "(1E15.6)", "Format=(1E15.6)": count, letter E/F, width.
+    // Counts and widths beyond 3 digits are refused before they could overflow an int.
     const std::size_t open = spec.find('(');
     if (open == std::string_view::npos) return std::nullopt;
     std::size_t i = open + 1;
     int count = 0;
-    while (i < spec.size() && std::isdigit(static_cast<unsigned char>(spec[i])))
+    while (i < spec.size() && std::isdigit(static_cast<unsigned char>(spec[i]))) {
         count = count * 10 + (spec[i++] - '0');
+        if (count > 999) return std::nullopt;
+    }
     if (i >= spec.size() || (std::toupper(static_cast<unsigned char>(spec[i])) != 'E' &&
                              std::toupper(static_cast<unsigned char>(spec[i])) != 'F'))
         return std::nullopt;
     ++i;
     int width = 0;
-    while (i < spec.size() && std::isdigit(static_cast<unsigned char>(spec[i])))
+    while (i < spec.size() && std::isdigit(static_cast<unsigned char>(spec[i]))) {
         width = width * 10 + (spec[i++] - '0');
+        if (width > 999) return std::nullopt;
+    }
     if (width <= 0 || width > 64) return std::nullopt;
     return FixedFormat{count > 0 ? count : 1, width};
 }
@@ -139,8 +144,15 @@ bool isBlockBoundary(const std::string& line) {
 
 std::vector<double> readFixedValues(const RecordText& text, std::size_t first, std::size_t n,
                                     FixedFormat format, std::size_t& next) {
+    // A count announced by a header is checked before anything is reserved, and at most what
+    // the lines that follow can hold is reserved: a header claiming 4e18 values allocates none.
+    if (n > limits::kMaxRecordSamples)
+        text.fail(first == 0 ? 0 : first - 1,
+                  "the header announces " + std::to_string(n) + " values, more than the limit of " +
+                      std::to_string(limits::kMaxRecordSamples) + " samples");
+    const std::size_t lines = first < text.size() ? text.size() - first : 0;
     std::vector<double> values;
-    values.reserve(n);
+    values.reserve(std::min(n, lines * static_cast<std::size_t>(format.perLine)));
     std::size_t i = first;
     const auto w = static_cast<std::size_t>(format.width);
     for (; i < text.size() && values.size() < n; ++i) {
@@ -158,8 +170,9 @@ std::vector<double> readFixedValues(const RecordText& text, std::size_t first, s
                                  ": blank field in column " + std::to_string(at + 1));
             }
             if (tokens.size() > 1)
-                text.fail(i, "value " + std::to_string(values.size() + 1) + ": field '" + field +
-                                 "' does not fit the " + std::to_string(w) + "-character format");
+                text.fail(i, "value " + std::to_string(values.size() + 1) + ": field " +
+                                 quotedToken(field) + " does not fit the " + std::to_string(w) +
+                                 "-character format");
             values.push_back(
                 finiteAt(text, i, tokens.front(), "value " + std::to_string(values.size() + 1)));
         }

@@ -20,6 +20,10 @@ public:
 
     std::size_t size() const { return lines_.size(); }
     const std::string& line(std::size_t i) const { return lines_[i]; } // 0-based
+    // The first kHeaderChars characters of line i: what header patterns are matched against.
+    // std::regex recurses once per character, so a megabyte-long line would overflow the stack.
+    std::string header(std::size_t i) const { return lines_[i].substr(0, kHeaderChars); }
+    static constexpr std::size_t kHeaderChars = 1000;
     const std::string& source() const { return source_; }
     bool blank(std::size_t i) const;
     // Index of the first line at or after i that is not blank, or size().

@@ -1,8 +1,13 @@
 #include "core/slab/History.h"
 
+#include "core/io/InputLimits.h"
+#include "core/io/TextInput.h"
+
 #include <algorithm>
 #include <cmath>
+#include <locale>
 #include <sstream>
+#include <stdexcept>
 
 namespace kinstab {
 
@@ -30,8 +35,24 @@ HistorySample stateAt(const Excitation1D& a, double mu, const std::vector<SlabEv
     return s;
 }
 
+std::string validateHistoryStep(double tauEnd, double step) {
+    if (!(step > 0.0) || !std::isfinite(step))
+        return "step " + formatDouble(step) + ": must be > 0";
+    if (!std::isfinite(tauEnd) || tauEnd < 0.0)
+        return "the run's end " + formatDouble(tauEnd) + " is not a time";
+    const double rows = std::floor(tauEnd / step) + 1.0;
+    if (rows > static_cast<double>(limits::kMaxHistoryRows))
+        return "step " + formatDouble(step) + " over the run's " + formatDouble(tauEnd) +
+               " gives " + formatDouble(rows) + " rows, more than the limit of " +
+               std::to_string(limits::kMaxHistoryRows) + "; the finest step here is " +
+               formatDouble(tauEnd / static_cast<double>(limits::kMaxHistoryRows - 1));
+    return {};
+}
+
 History sampleHistory(const Excitation1D& a, double mu, const std::vector<SlabEvent>& events,
                       double tauEnd, double step) {
+    if (const std::string e = validateHistoryStep(tauEnd, step); !e.empty())
+        throw std::invalid_argument(e);
     std::vector<double> times;
     const long n = static_cast<long>(std::floor(tauEnd / step));
     times.reserve(static_cast<std::size_t>(n) + 2 + events.size());
@@ -51,6 +72,7 @@ History sampleHistory(const Excitation1D& a, double mu, const std::vector<SlabEv
 
 std::string historyCsv(const History& h) {
     std::ostringstream s;
+    s.imbue(std::locale::classic()); // a file: a decimal point whatever the user's locale
     s.precision(12);
     s << "tau,accel_g,delta,velocity,state\n";
     for (const auto& x : h.samples)

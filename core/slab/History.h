@@ -22,7 +22,11 @@ struct History {
     std::vector<HistorySample> samples;
 };
 
-// Samples every `step` from 0 to tauEnd and at every event time.
+// Empty when a history from 0 to tauEnd every `step` stays within limits::kMaxHistoryRows
+// (core/io/InputLimits.h), else why not: callers name their step flag or field with it.
+std::string validateHistoryStep(double tauEnd, double step);
+// Samples every `step` from 0 to tauEnd and at every event time. Throws std::invalid_argument
+// with validateHistoryStep's message when the step is too fine.
 History sampleHistory(const Excitation1D& a, double mu, const std::vector<SlabEvent>& events,
                       double tauEnd, double step);
 // The relative state at one time, from the events before it.

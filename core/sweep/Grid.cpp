@@ -1,20 +1,21 @@
 #include "core/sweep/Grid.h"
 
+#include "core/io/InputLimits.h"
+#include "core/io/TextInput.h"
+
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace kinstab {
 
 namespace {
+// Locale-independent: the GUI's process runs in the user's locale (decimal comma in German).
 bool parseNumber(const std::string& s, double& out) {
-    if (s.empty()) return false;
-    std::size_t used = 0;
-    try {
-        out = std::stod(s, &used);
-    } catch (...) {
-        return false;
-    }
-    return used == s.size() && std::isfinite(out);
+    const std::optional<double> x = parseDouble(s);
+    if (!x || !std::isfinite(*x)) return false;
+    out = *x;
+    return true;
 }
 std::string trim(const std::string& s) {
     const auto b = s.find_first_not_of(" \t");
@@ -50,15 +51,16 @@ ParsedList parseList(const std::string& text) {
         double a = 0, b = 0, h = 0;
         if (parts.size() != 3 || !parseNumber(parts[0], a) || !parseNumber(parts[1], b) ||
             !parseNumber(parts[2], h)) {
-            out.error = "'" + t + "' is not start:stop:step";
+            out.error = quotedToken(t) + " is not start:stop:step";
             return out;
         }
         if (h <= 0.0 || b < a) {
-            out.error = "'" + t + "': need step > 0 and stop >= start";
+            out.error = quotedToken(t) + ": need step > 0 and stop >= start";
             return out;
         }
-        if ((b - a) / h > 1e6) {
-            out.error = "'" + t + "': more than a million values";
+        if ((b - a) / h >= static_cast<double>(limits::kMaxGridPoints)) {
+            out.error = quotedToken(t) + ": more than the limit of " +
+                        std::to_string(limits::kMaxGridPoints) + " values";
             return out;
         }
         out.values = linspaceStep(a, b, h);
@@ -68,8 +70,14 @@ ParsedList parseList(const std::string& text) {
     std::string item;
     while (std::getline(ss, item, ',')) {
         double x = 0;
+        if (out.values.size() == limits::kMaxGridPoints) {
+            out.error =
+                "more than the limit of " + std::to_string(limits::kMaxGridPoints) + " values";
+            out.values.clear();
+            return out;
+        }
         if (!parseNumber(trim(item), x)) {
-            out.error = "'" + trim(item) + "' is not a number";
+            out.error = quotedToken(trim(item)) + " is not a number";
             out.values.clear();
             return out;
         }
@@ -79,19 +87,19 @@ ParsedList parseList(const std::string& text) {
 }
 
 std::string validateGrid(const SweepGrid& g) {
-    std::ostringstream s;
     if (g.amplitudes.empty()) return "amplitudes: the grid is empty";
     if (g.frequencies.empty()) return "frequencies: the grid is empty";
     for (double a : g.amplitudes)
-        if (!std::isfinite(a) || a < 0.0 || a > 1000.0) {
-            s << "amplitudes: " << a << " g is out of range (0 to 1000)";
-            return s.str();
-        }
+        if (!std::isfinite(a) || a < 0.0 || a > 1000.0)
+            return "amplitudes: " + formatDouble(a) + " g is out of range (0 to 1000)";
     for (double f : g.frequencies)
-        if (!std::isfinite(f) || f <= 0.0 || f > 1000.0) {
-            s << "frequencies: " << f << " Hz is out of range (> 0, at most 1000)";
-            return s.str();
-        }
+        if (!std::isfinite(f) || f <= 0.0 || f > 1000.0)
+            return "frequencies: " + formatDouble(f) + " Hz is out of range (> 0, at most 1000)";
+    // Each axis may be long; the product is what a sweep computes and stores.
+    if (g.amplitudes.size() > limits::kMaxGridPoints / g.frequencies.size())
+        return "amplitudes: " + std::to_string(g.amplitudes.size()) + " amplitudes x " +
+               std::to_string(g.frequencies.size()) + " frequencies, more than the limit of " +
+               std::to_string(limits::kMaxGridPoints) + " points in a grid";
     return {};
 }
 
