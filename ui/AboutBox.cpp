@@ -53,7 +53,8 @@ AboutBox::AboutBox(QWidget* parent) : QDialog(parent) {
     setWindowTitle(tr("About kinstab"));
     setObjectName(QStringLiteral("aboutBox"));
     auto* icon = new QLabel;
-    icon->setPixmap(QPixmap(QStringLiteral(":/icons/kinstab.svg")).scaled(64, 64, Qt::KeepAspectRatio, Qt::SmoothTransformation));
+    icon->setPixmap(QPixmap(QStringLiteral(":/icons/kinstab.svg"))
+                        .scaled(64, 64, Qt::KeepAspectRatio, Qt::SmoothTransformation));
     auto* text = new QLabel(aboutHtml());
     text->setObjectName(QStringLiteral("aboutText"));
     text->setWordWrap(true);

@@ -8,7 +8,6 @@
 #include <QDockWidget>
 #include <QMainWindow>
 #include <QMenuBar>
-#include <QStackedWidget>
 #include <QTabWidget>
 
 #include <map>
@@ -45,14 +44,16 @@ QString sectionForTitle(const QString& title) {
 } // namespace
 
 QString helpSectionFor(const QWidget* focus) {
-    const QWidget* child = nullptr;
-    for (const QWidget* w = focus; w; child = w, w = w->parentWidget()) {
+    for (const QWidget* w = focus; w; w = w->parentWidget()) {
         if (const auto* dock = qobject_cast<const QDockWidget*>(w))
             return sectionForTitle(dock->windowTitle());
-        const auto* tabs = qobject_cast<const QTabWidget*>(w);
-        const auto* stack = qobject_cast<const QStackedWidget*>(child);
-        if (tabs && stack && stack->currentWidget())
-            return sectionForTitle(tabs->tabText(tabs->indexOf(stack->currentWidget())));
+        if (const auto* tabs = qobject_cast<const QTabWidget*>(w)) {
+            for (int i = 0; i < tabs->count(); ++i) {
+                const QWidget* page = tabs->widget(i);
+                if (page == focus || page->isAncestorOf(focus))
+                    return sectionForTitle(tabs->tabText(i));
+            }
+        }
     }
     return kIntroduction;
 }

@@ -12,7 +12,8 @@ namespace kinstab::ui {
 
 QString userGuideMarkdown() {
     QFile f(QStringLiteral(":/docs/user-guide.md"));
-    if (!f.open(QIODevice::ReadOnly)) return QObject::tr("The user guide is missing from this build.");
+    if (!f.open(QIODevice::ReadOnly))
+        return QObject::tr("The user guide is missing from this build.");
     return QString::fromUtf8(f.readAll());
 }
 

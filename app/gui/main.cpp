@@ -8,6 +8,7 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QIcon>
 
 #include <cstring>
 
@@ -51,6 +52,8 @@ int main(int argc, char** argv) {
     }
     qputenv("QSG_RHI_BACKEND", "opengl"); // required by Qt Data Visualization on Qt 6
     QApplication app(argc, argv);
+    QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/kinstab.svg")));
+    QGuiApplication::setDesktopFileName(QStringLiteral("io.github.kinstab"));
     QCommandLineParser parser;
     describe(app, parser);
 
