@@ -45,7 +45,9 @@ QString copyResource(const QString& rel, const QString& root) {
 
 QString copyExample(const ExampleProject& e, const QString& dir, QString* error) {
     const QString rel = e.resource.mid(2); // "examples/NAME.json"
-    for (const QString& r : QStringList(e.extras) << rel) {
+    QStringList files = e.extras;
+    files << rel;
+    for (const QString& r : files) {
         if (const QString why = copyResource(r, dir); !why.isEmpty()) {
             if (error) *error = why;
             return {};
