@@ -3,7 +3,9 @@
 
 #include <QAbstractTextDocumentLayout>
 #include <QFile>
+#include <QListWidget>
 #include <QScrollBar>
+#include <QSplitter>
 #include <QTextBlock>
 #include <QTextBrowser>
 #include <QVBoxLayout>
@@ -21,13 +23,27 @@ HelpWindow::HelpWindow(QWidget* parent) : QWidget(parent, Qt::Window), m_browser
     setWindowTitle(tr("kinstab — User guide"));
     setObjectName(QStringLiteral("helpWindow"));
     m_browser->setOpenExternalLinks(true);
-    // Images and links in the guide are relative to docs/; in the resources they sit there too.
-    m_browser->setSearchPaths({QStringLiteral(":/docs")});
     m_browser->setMarkdown(userGuideMarkdown());
+    m_browser->document()->setDocumentMargin(16);
+    // Contents: the guide's second- and third-level headings; a click shows that section.
+    auto* contents = new QListWidget;
+    contents->setObjectName(QStringLiteral("helpContents"));
+    for (QTextBlock b = m_browser->document()->begin(); b.isValid(); b = b.next()) {
+        const int level = b.blockFormat().headingLevel();
+        if (level == 2 || level == 3)
+            contents->addItem(QString(level == 3 ? 4 : 0, QLatin1Char(' ')) + b.text());
+    }
+    connect(contents, &QListWidget::itemClicked, this,
+            [this](QListWidgetItem* item) { showSection(item->text().trimmed()); });
+    auto* split = new QSplitter;
+    split->addWidget(contents);
+    split->addWidget(m_browser);
+    split->setStretchFactor(1, 1);
+    split->setSizes({220, 700});
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_browser);
-    resize(820, 720);
+    layout->addWidget(split);
+    resize(940, 720);
 }
 
 QStringList HelpWindow::sections() const {

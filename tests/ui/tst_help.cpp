@@ -17,6 +17,7 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QMenuBar>
 #include <QScrollBar>
 #include <QSettings>
@@ -99,7 +100,7 @@ private slots:
         QCOMPARE(shownSection(), QStringLiteral("Building"));
         // The section is scrolled into view, not left at the top of the guide.
         QVERIFY(helpWindow()->browser()->verticalScrollBar()->value() > 0);
-        helpWindow()->resize(820, 640);
+        helpWindow()->resize(940, 640);
         QVERIFY(helpWindow()->grab().save(QDir(shotDir()).filePath("help-window.png")));
         // Asked again from another panel, the same window moves to that panel's section.
         QLineEdit* mu = testing::namedField(w.get(), "mu")->lineEdit();
@@ -107,6 +108,14 @@ private slots:
         showUserGuide(w.get(), helpSectionFor(mu));
         QCOMPARE(w->findChildren<HelpWindow*>().size(), 1);
         QCOMPARE(shownSection(), QStringLiteral("Slab and walls"));
+        // The contents list beside the guide shows a section on a click.
+        auto* contents = helpWindow()->findChild<QListWidget*>(QStringLiteral("helpContents"));
+        QVERIFY(contents);
+        const auto items =
+            contents->findItems(QStringLiteral("Reading a γc surface"), Qt::MatchExactly);
+        QCOMPARE(items.size(), 1);
+        emit contents->itemClicked(items.front());
+        QCOMPARE(shownSection(), QStringLiteral("Reading a γc surface"));
     }
     void aboutNamesVersionLicenceCitationLibraries() {
         const QString html = aboutHtml();
