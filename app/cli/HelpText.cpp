@@ -44,7 +44,7 @@ const char* kSimulate =
     "max_abs_delta, residual_delta, work, wall_time_s).\n"
     "  --amplitude A                peak floor acceleration, g (with --record: target peak)\n"
     "  --frequency F                excitation frequency, Hz\n"
-    "  --history FILE.csv           write the sampled history (tau, a, delta, velocity)\n"
+    "  --history FILE.csv           write the sampled history (tau, a, delta, velocity, state)\n"
     "  --history-step DTAU          history sample step, dimensionless time [0.05]\n"
     "  --events                     list every stick/slip event in the JSON\n"
     "  --record FILE                drive the slab with an accelerogram instead of the sine\n"
