@@ -1,20 +1,21 @@
 #include "core/sweep/Grid.h"
 
+#include <charconv>
 #include <cmath>
 #include <sstream>
 
 namespace kinstab {
 
 namespace {
+// std::from_chars, not std::stod: stod follows the C locale, and the GUI sets the user's, in
+// which "0.70" may stop at the '.' (de_DE) and a project's grid would not open.
 bool parseNumber(const std::string& s, double& out) {
-    if (s.empty()) return false;
-    std::size_t used = 0;
-    try {
-        out = std::stod(s, &used);
-    } catch (...) {
-        return false;
-    }
-    return used == s.size() && std::isfinite(out);
+    std::size_t b = s.find_first_not_of(" \t\n");
+    if (b == std::string::npos) return false;
+    if (s[b] == '+' && b + 1 < s.size() && s[b + 1] != '-') ++b;
+    const char* last = s.data() + s.size();
+    const auto [end, ec] = std::from_chars(s.data() + b, last, out);
+    return ec == std::errc() && end == last && std::isfinite(out);
 }
 std::string trim(const std::string& s) {
     const auto b = s.find_first_not_of(" \t");
