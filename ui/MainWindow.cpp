@@ -11,8 +11,10 @@
 #include "ui/ChartExport.h"
 #include "ui/CodesPanel.h"
 #include "ui/CriticalChart.h"
+#include "ui/ExampleProjects.h"
 #include "ui/ExcitationPanel.h"
 #include "ui/GridPanel.h"
+#include "ui/HelpMenu.h"
 #include "ui/HistoryChart.h"
 #include "ui/ModelPanel.h"
 #include "ui/PlanarHistoryChart.h"
@@ -99,6 +101,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_centre->addTab(new FloorsView([this] { return project(); }), tr("Floors"));
     setCentralWidget(m_centre);
     buildActions();
+    installHelpMenu(this);
     buildDocks();
     m_progress->setMaximumWidth(260);
     m_progress->setTextVisible(true);
@@ -144,6 +147,7 @@ void MainWindow::buildFileMenu() {
     QAction* a = file->addAction(tr("&New"), QKeySequence::New, this, &MainWindow::newProject);
     a->setToolTip(tr("Start from the default building and slab"));
     file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openDialog);
+    addExampleMenu(file, [this](const QString& p) { openProject(p); });
     m_recent = new RecentFiles(tr("Open &recent"), this);
     connect(m_recent, &RecentFiles::openRequested, this,
             [this](const QString& p) { openProject(p); });

@@ -2,6 +2,7 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
 #include "core/sweep/SurfaceBenchmark.h"
 
@@ -52,7 +53,7 @@ int runBench(const ArgList& argv) {
                         {"ratio_exact_over_paper_cpu", b.ratioCpu},
                         {"exact_collapsed_points", b.exactCollapsed},
                         {"outcome_disagreements", b.outcomeDisagreements}};
-    std::cout << j.dump(2) << "\n";
+    std::cout << jsonText(j, 2) << "\n";
     std::fprintf(stderr,
                  "%zux%zu surface, %d threads, %d alternating runs of each after a warm-up:\n"
                  "  exact       median %.3f s (min %.3f s, CPU %.3f s)\n"

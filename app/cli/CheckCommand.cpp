@@ -1,6 +1,7 @@
 #include "app/cli/Args.h"
 #include "app/cli/BuildingFlags.h"
 #include "app/cli/Commands.h"
+#include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/RecordFlags.h"
 #include "core/codes/DesignCheck.h"
@@ -70,7 +71,7 @@ int runCheck(const ArgList& argv) {
                    {"tolerance", p.critical.tolerance}};
     j["wall_time_s"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << j.dump(2) << "\n";
+    std::cout << jsonText(j, 2) << "\n";
     return 0;
 }
 

@@ -1,6 +1,7 @@
 #include "app/cli/Args.h"
 #include "app/cli/BuildingFlags.h"
 #include "app/cli/Commands.h"
+#include "app/cli/JsonText.h"
 #include "core/io/CodesJson.h"
 
 #include <iostream>
@@ -27,7 +28,7 @@ int runCodes(const ArgList& argv) {
         codes = codesFromFlags(args);
     }
     try {
-        std::cout << codeResultsJson(kinstab::runCodes(building, codes)).dump(2) << "\n";
+        std::cout << jsonText(codeResultsJson(kinstab::runCodes(building, codes)), 2) << "\n";
     } catch (const InputError& e) {
         throw inputUsageError(e);
     }

@@ -1,5 +1,6 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/PlanarFlags.h"
 #include "app/cli/SearchFlags.h"
@@ -44,7 +45,7 @@ int runCritical(const ArgList& argv) {
                         {"max_amplitude", search.to},
                         {"scan_step", search.scanStep},
                         {"tolerance", search.tolerance}};
-    std::cout << j.dump(2) << "\n";
+    std::cout << jsonText(j, 2) << "\n";
     return 0;
 }
 

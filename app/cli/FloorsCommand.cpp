@@ -6,6 +6,7 @@
 #include "app/cli/Args.h"
 #include "app/cli/BuildingFlags.h"
 #include "app/cli/Commands.h"
+#include "app/cli/JsonText.h"
 #include "app/cli/RecordFlags.h"
 #include "core/building/FloorAnalysis.h"
 #include "core/io/FloorsJson.h"
@@ -84,7 +85,7 @@ int runFloors(const ArgList& argv) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (args.has("history-csv"))
         writeOutput(args.text("history-csv"), floorHistoryCsv(a, in.ground));
-    std::cout << j.dump(2) << "\n";
+    std::cout << jsonText(j, 2) << "\n";
     return 0;
 }
 

@@ -4,6 +4,7 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "app/cli/JsonText.h"
 #include "core/friction/FrictionCalibration.h"
 #include "core/friction/TripletCsv.h"
 #include "core/io/FrictionJson.h"
@@ -66,7 +67,7 @@ int runFriction(const ArgList& argv) {
     }
     nlohmann::json j = frictionCalibrationJson(cal);
     j["data"] = *path;
-    writeOutput(args.text("o"), j.dump(2) + "\n");
+    writeOutput(args.text("o"), jsonText(j, 2) + "\n");
     return 0;
 }
 

@@ -3,6 +3,7 @@
 // max_abs_delta_y, residual_delta_y, and the planar case.
 
 #include "app/cli/Commands.h"
+#include "app/cli/JsonText.h"
 #include "app/cli/PlanarFlags.h"
 #include "core/io/ResultJson.h"
 #include "core/sweep/CriticalAmplitude.h"
@@ -69,7 +70,7 @@ int runSimulatePlanar(const Args& args, double amplitude, double frequency, doub
     j["wall_time_s"] = wall;
     if (args.has("events")) j["events"] = planarEventsJson(r.events);
     if (args.has("history")) writeOutput(args.text("history"), planarHistoryCsv(model, r));
-    std::cout << j.dump(2) << "\n";
+    std::cout << jsonText(j, 2) << "\n";
     return 0;
 }
 
@@ -97,7 +98,7 @@ int runSurfacePlanar(const Args& args, const SweepGrid& grid, int threads,
         sides.push_back(row);
     }
     j["exit_side"] = sides;
-    writeOutput(args.text("o"), j.dump() + "\n");
+    writeOutput(args.text("o"), jsonText(j) + "\n");
     return 0;
 }
 
@@ -118,7 +119,7 @@ int runCriticalPlanar(const Args& args, const std::vector<double>& frequencies,
               {"max_amplitude", search.to},
               {"scan_step", search.scanStep},
               {"tolerance", search.tolerance}});
-    std::cout << j.dump(2) << "\n";
+    std::cout << jsonText(j, 2) << "\n";
     return 0;
 }
 

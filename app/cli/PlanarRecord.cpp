@@ -6,6 +6,7 @@
 // simulate --record.
 
 #include "app/cli/Commands.h"
+#include "app/cli/JsonText.h"
 #include "app/cli/PlanarFlags.h"
 #include "app/cli/RecordFlags.h"
 #include "core/io/ResultJson.h"
@@ -70,7 +71,7 @@ int runSimulatePlanarRecord(const Args& args) {
     j["wall_time_s"] = wall;
     if (args.has("events")) j["events"] = planarEventsJson(r.events);
     if (args.has("history")) writeOutput(args.text("history"), planarHistoryCsv(model, r));
-    std::cout << j.dump(2) << "\n";
+    std::cout << jsonText(j, 2) << "\n";
     return 0;
 }
 

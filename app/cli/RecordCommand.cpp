@@ -3,6 +3,7 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "app/cli/JsonText.h"
 #include "app/cli/RecordFlags.h"
 #include "core/excitation/EnvelopeFit.h"
 #include "core/excitation/FourierSpectrum.h"
@@ -90,7 +91,7 @@ int runRecord(const ArgList& argv) {
     }
     if (args.has("spectrum-csv"))
         writeOutput(args.text("spectrum-csv"), spectraCsv(sg, sf ? &*sf : nullptr));
-    std::cout << j.dump(2) << "\n";
+    std::cout << jsonText(j, 2) << "\n";
     return 0;
 }
 

@@ -5,6 +5,7 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "app/cli/JsonText.h"
 #include "core/io/Project.h"
 #include "ui/report/ReportWriter.h"
 
@@ -93,7 +94,7 @@ int runReport(const ArgList& argv) {
                               {"page", paper == PaperSize::A4 ? "a4" : "letter"},
                               {"analysis_wall_time_s", analysis.totalSeconds},
                               {"wall_time_s", seconds}};
-    std::cout << j.dump(2) << "\n";
+    std::cout << jsonText(j, 2) << "\n";
     return 0;
 }
 

@@ -1,5 +1,6 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/PlanarFlags.h"
 #include "app/cli/RecordFlags.h"
@@ -68,7 +69,7 @@ int runSimulate(const ArgList& argv) {
         const History h = sampleHistory(a, c.slab.mu, r.events, r.tauEnd, historyStep);
         writeOutput(args.text("history"), historyCsv(h));
     }
-    std::cout << j.dump(2) << "\n";
+    std::cout << jsonText(j, 2) << "\n";
     return 0;
 }
 

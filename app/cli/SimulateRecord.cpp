@@ -7,6 +7,7 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/RecordFlags.h"
 #include "app/cli/SearchFlags.h"
@@ -106,7 +107,7 @@ int runSimulateRecord(const Args& args) {
         writeOutput(args.text("history"), historyCsv(sampleHistory(motion, c.slab.mu, a.run.events,
                                                                    a.run.tauEnd, historyStep)));
     }
-    std::cout << j.dump(2) << "\n";
+    std::cout << jsonText(j, 2) << "\n";
     return 0;
 }
 

@@ -1,5 +1,6 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/PlanarFlags.h"
 #include "core/io/ResultJson.h"
@@ -38,7 +39,7 @@ int runSurface(const ArgList& argv) {
     j["mu"] = c.slab.mu;
     j["tstar"] = c.tstar;
     j["limit"] = c.slab.limit;
-    writeOutput(args.text("o"), j.dump() + "\n");
+    writeOutput(args.text("o"), jsonText(j) + "\n");
     return 0;
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // kinstab: the desktop application.
 
 #include "core/numerics/VectorState.h"
@@ -6,45 +7,75 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QIcon>
 
 #include <cstdio>
+#include <cstring>
 
-int main(int argc, char** argv) {
-    kinstab::clearUpperVectorState();     // see core/numerics/VectorState.h
-    qputenv("QSG_RHI_BACKEND", "opengl"); // required by Qt Data Visualization on Qt 6
-    QApplication app(argc, argv);
-    QApplication::setApplicationName("kinstab");
-    QApplication::setOrganizationName("kinstab");
-    QApplication::setApplicationVersion(KINSTAB_VERSION);
+namespace {
 
-    QCommandLineParser parser;
-    parser.setApplicationDescription("Kinetic stability of friction-held slabs in earthquakes");
+const QCommandLineOption kShot("screenshot", "Run the sweep, save the window to FILE and quit.",
+                               "FILE");
+const QCommandLineOption kScenario(
+    "scenario", "With --screenshot: one step after the sweep (open:PROJECT, codes, mu, cancel).",
+    "STEP");
+
+void describe(QCoreApplication& app, QCommandLineParser& parser) {
+    QCoreApplication::setApplicationName("kinstab");
+    QCoreApplication::setOrganizationName("kinstab");
+    QCoreApplication::setApplicationVersion(KINSTAB_VERSION);
+    parser.setApplicationDescription(
+        "Kinetic stability of friction-held slabs in earthquakes (Furgerson 1980).\n"
+        "Licence GPL-3.0-or-later. Manual: man kinstab; Help > User guide (F1).");
     parser.addHelpOption();
     parser.addVersionOption();
-    const QCommandLineOption shot("screenshot", "Run the sweep, save the window to FILE and quit.",
-                                  "FILE");
-    parser.addOption(shot);
-    const QCommandLineOption scenario(
-        "scenario",
-        "With --screenshot: one step after the sweep (open:PROJECT, codes, mu, cancel).", "STEP");
-    parser.addOption(scenario);
+    parser.addOption(kShot);
+    parser.addOption(kScenario);
     parser.addPositionalArgument("project", "Project file (.json) to open.", "[project]");
     parser.process(app);
+}
+
+// --help and --version print and exit without a display: answer them before QApplication,
+// which aborts when no platform can be opened.
+bool textOnly(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i)
+        for (const char* f : {"-h", "--help", "--help-all", "-v", "--version"})
+            if (std::strcmp(argv[i], f) == 0) return true;
+    return false;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    kinstab::clearUpperVectorState(); // see core/numerics/VectorState.h
+    if (textOnly(argc, argv)) {
+        QCoreApplication app(argc, argv);
+        QCommandLineParser parser;
+        describe(app, parser); // prints and exits
+        return 0;
+    }
+    qputenv("QSG_RHI_BACKEND", "opengl"); // required by Qt Data Visualization on Qt 6
+    QApplication app(argc, argv);
+    QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/kinstab.svg")));
+    QGuiApplication::setDesktopFileName(QStringLiteral("io.github.kinstab"));
+    QCommandLineParser parser;
+    describe(app, parser);
 
     kinstab::ui::MainWindow window;
     window.show();
     if (const QStringList files = parser.positionalArguments(); !files.isEmpty()) {
-        if (!window.openProject(files.front(), parser.isSet(shot))) return 2;
+        if (!window.openProject(files.front(), parser.isSet(kShot))) return 2;
     }
-    if (parser.isSet(shot) && parser.isSet(scenario)) {
+    if (parser.isSet(kShot) && parser.isSet(kScenario)) {
         const QString e =
-            kinstab::ui::screenshotScenario(window, parser.value(scenario), parser.value(shot));
+            kinstab::ui::screenshotScenario(window, parser.value(kScenario), parser.value(kShot));
         if (!e.isEmpty()) {
             std::fprintf(stderr, "kinstab: %s\n", qPrintable(e));
             return 2;
         }
-    } else if (parser.isSet(shot)) {
-        kinstab::ui::screenshotAfterSweep(window, parser.value(shot));
+    } else if (parser.isSet(kShot)) {
+        kinstab::ui::screenshotAfterSweep(window, parser.value(kShot));
     }
     return QApplication::exec();
 }

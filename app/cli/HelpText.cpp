@@ -1,0 +1,222 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/cli/HelpText.h"
+
+namespace kinstab::cli {
+
+namespace {
+
+// Flags shared by simulate, surface, critical and bench (defaults in brackets).
+#define KINSTAB_MODEL_FLAGS                                                                        \
+    "model flags:\n"                                                                               \
+    "  --model slab1d|planar        the 1-DOF slab or the 2-DOF planar slab [slab1d]\n"            \
+    "  --envelope fast|moderate|slow  Table 4 envelope preset [moderate]\n"                        \
+    "  --alpha X --beta Y           a user envelope exp(-alpha t) - exp(-beta t), 1/s\n"           \
+    "  --tstar S                    characteristic time t* = sqrt(d / 2g), s [0.099]\n"            \
+    "  --wall-width-in D            wall width d, inches (gives t*; excludes --tstar)\n"           \
+    "  --mu M                       friction coefficient [0.6]\n"                                  \
+    "  --limit L                    bearing / (d/2): collapse when |delta| > L [1]\n"              \
+    "  --duration TAU               stop the excitation at tau = TAU (dimensionless) [none]\n"     \
+    "  --scale tau_max|tau_rise|tau_dur|one  tau_ref of gamma_c = tau_ref / tau_c [tau_max]\n"     \
+    "  --solver exact|paper         event-driven closed form, or the 1980 RK4 [exact]\n"           \
+    "  --paper-steps N              RK4 steps per period for --solver paper [16]\n"                \
+    "planar only (--model planar):\n"                                                              \
+    "  --fy F                       frequency along the walls, Hz (required)\n"                    \
+    "  --ay-ratio R                 A_y / A_x [0.9]\n"                                             \
+    "  --theta X                    2 wall length / wall width: limit along the walls [20]\n"      \
+    "  --vertical FILE              vertical record, normal force 1 + a_z [none: gravity]\n"       \
+    "  --normalization product|envelope  S_max of envelope x sine, or envelope alone [product]\n"
+
+#define KINSTAB_RECORD_FLAGS                                                                       \
+    "record flags:\n"                                                                              \
+    "  --record-format auto|at2|cosmos|csmip|values|time-accel  file format [auto]\n"              \
+    "  --record-dt S                sample step, s (needed by --record-format values)\n"           \
+    "  --record-unit g|m/s2|cm/s2|ft/s2|in/s2  unit of the values [from the file, else g]\n"       \
+    "  --record-channel N|NAME      channel of a multi-channel file [the first]\n"                 \
+    "  --floor-period T             floor filter: oscillator period, s [none: ground motion]\n"    \
+    "  --damping Z                  floor filter damping ratio [0.02]\n"
+
+const char* kSimulate =
+    "usage: kinstab-cli simulate --amplitude A --frequency F [model flags] [--history FILE.csv]\n"
+    "                            [--history-step DTAU] [--events]\n"
+    "       kinstab-cli simulate --record FILE [--amplitude PEAK_G | --scale-factor K]\n"
+    "                            [record flags] [model flags] [--critical [search flags]]\n"
+    "One run of the slab; prints a JSON object (outcome, tau_c, gamma_c, slip_intervals,\n"
+    "max_abs_delta, residual_delta, work, wall_time_s).\n"
+    "  --amplitude A                peak floor acceleration, g (with --record: target peak)\n"
+    "  --frequency F                excitation frequency, Hz\n"
+    "  --history FILE.csv           write the sampled history (tau, a, delta, velocity, state)\n"
+    "  --history-step DTAU          history sample step, dimensionless time [0.05]\n"
+    "  --events                     list every stick/slip event in the JSON\n"
+    "  --record FILE                drive the slab with an accelerogram instead of the sine\n"
+    "  --scale-factor K             multiply the record by K [1]\n"
+    "  --record-y FILE              planar: the record along the walls\n"
+    "  --critical                   with --record: search the critical scale of the record\n"
+    "search flags: --max-amplitude A [5] --scan-step S [0.01] --tolerance T [1e-6] "
+    "(g)\n" KINSTAB_MODEL_FLAGS KINSTAB_RECORD_FLAGS;
+
+const char* kSurface =
+    "usage: kinstab-cli surface --amplitudes LIST --frequencies LIST [model flags] [--threads N]\n"
+    "                           [--format json|csv|table] [-o FILE]\n"
+    "The gamma_c(A, f) surface: one run per grid point.\n"
+    "  --amplitudes LIST            peak accelerations, g (a,b,c or start:stop:step)\n"
+    "  --frequencies LIST           frequencies, Hz\n"
+    "  --threads N                  worker threads, 0 = all cores [0]\n"
+    "  --format json|csv|table      output format [json]\n"
+    "  -o FILE                      write to FILE (atomically) instead of standard "
+    "output\n" KINSTAB_MODEL_FLAGS;
+
+const char* kCritical =
+    "usage: kinstab-cli critical --frequencies LIST [model flags] [--max-amplitude A]\n"
+    "                            [--scan-step S] [--tolerance T]\n"
+    "The critical amplitude A_crit(f), the smallest A that collapses; null when nothing up to\n"
+    "--max-amplitude does.\n"
+    "  --frequencies LIST           frequencies, Hz (a,b,c or start:stop:step)\n"
+    "  --max-amplitude A            top of the search, g [5]\n"
+    "  --scan-step S                scan step before refinement, g [0.01]\n"
+    "  --tolerance T                refinement tolerance, g [1e-6]\n" KINSTAB_MODEL_FLAGS;
+
+const char* kPrecision =
+    "usage: kinstab-cli precision [-o FILE.csv] [--repeats N] [--no-regularized]\n"
+    "Work-precision study: tau_c error against run time for each solver and setting.\n"
+    "  -o FILE.csv                  also write the table as CSV\n"
+    "  --repeats N                  timing repeats, the minimum is kept [5]\n"
+    "  --no-regularized             leave out the regularized-friction variants\n";
+
+const char* kBench =
+    "usage: kinstab-cli bench [--repeats N] [--threads N] [--amplitudes LIST --frequencies LIST]\n"
+    "                         [model flags]\n"
+    "Times the exact and the paper solver on one grid; prints JSON (min and median seconds).\n"
+    "  --repeats N                  timed repeats [5]\n"
+    "  --threads N                  worker threads, 0 = all cores [0]\n"
+    "  --amplitudes LIST            peak accelerations, g [a built-in grid]\n"
+    "  --frequencies LIST           frequencies, Hz [a built-in grid]\n" KINSTAB_MODEL_FLAGS;
+
+const char* kRecord =
+    "usage: kinstab-cli record --file FILE [record flags] [--peaks N] [--spectrum-csv FILE]\n"
+    "Reads an accelerogram and prints what was read: format, samples, dt, peak, and with\n"
+    "--floor-period the floor motion that a slab on that floor feels.\n"
+    "  --file FILE                  the accelerogram (AT2, COSMOS, CSMIP V2, values, time-accel)\n"
+    "  --peaks N                    list the N largest peaks [5]\n"
+    "  --spectrum-csv FILE          write the Fourier amplitude spectra as "
+    "CSV\n" KINSTAB_RECORD_FLAGS;
+
+const char* kCodes =
+    "usage: kinstab-cli codes --project FILE\n"
+    "       kinstab-cli codes building flags code flags\n"
+    "Top-floor force ratio F_n / w_n of each selected code, with the trail of coefficients.\n"
+    "building flags:\n"
+    "  --stories N                  number of stories (1-300)\n"
+    "  --height-ft H | --height-m H roof height h_n\n"
+    "  --dimension-ft D | --dimension-m D  plan dimension parallel to the force\n"
+    "  --period T                   fundamental period, s [each code's formula]\n"
+    "  --system NAME                dual_frame_wall, steel_moment_frame, concrete_moment_frame,\n"
+    "                               steel_eccentric_braced, shear_wall, braced_frame, other "
+    "[other]\n"
+    "  --occupancy NAME             standard, assembly, hazardous, essential [standard]\n"
+    "  --weights LIST               story weights, bottom first [equal]\n"
+    "  --story-heights LIST         story heights, bottom first [equal]\n"
+    "code flags (a code is computed when its first flag is given):\n"
+    "  UBC 1976   --zone 0-4 [4] --k-factor K [--importance I] [--site-period TS, s]\n"
+    "  ATC 3-06   --av AV | --map-area 1-7 [7]; --aa AA --soil S1|S2|S3 [S2] --r R\n"
+    "  UBC 1997   --ubc97-zone 1|2A|2B|3|4 [4] --ubc97-r R [--ubc97-soil SA..SE [SD]]\n"
+    "             [--na N [1] --nv N [1]] [--ubc97-importance I]\n"
+    "  ASCE 7-22  --sds S --sd1 S (g) --tl T (s) --asce-r R [--s1 S] [--site-class C [Default]]\n"
+    "             [--risk-category 1-4 [2]] [--ie I]\n"
+    "  EC8        --ag AGR (g) --ground A-E [C] --q Q [--spectrum-type 1|2 [1]]\n"
+    "             [--importance-class 1-4 [2]] [--gamma-i G] [--beta B [0.2]] [--irregular]\n";
+
+const char* kCheck =
+    "usage: kinstab-cli check --project FILE\n"
+    "The design check of a project: each code's ratio against the critical amplitude at the\n"
+    "building's frequency 1/T; verdict 'overstress governs' or 'kinetic instability governs'.\n"
+    "  --project FILE               a kinstab project (.json), e.g. the shipped examples\n";
+
+const char* kFriction =
+    "usage: kinstab-cli friction --data FILE.csv [--bearing-area IN2] [--alpha 0|2] [--beta "
+    "best|0|1/3]\n"
+    "                            [--max-cp PSI] [--outlier-alpha A] [--outlier-min-runs N]\n"
+    "                            [--keep-outliers] [-o FILE]\n"
+    "Calibrates the friction law from masonry triplet tests (Furgerson 1980, ch. III).\n"
+    "  --data FILE.csv              the triplet runs (shear force against displacement)\n"
+    "  --bearing-area IN2           bearing area A_b, square inches [none: no mu_inf]\n"
+    "  --alpha 0|2                  regression weight exponent [2]\n"
+    "  --beta best|0|1/3            work exponent of xi [best]\n"
+    "  --max-cp PSI                 leave out confining pressures above PSI [400]\n"
+    "  --outlier-alpha A            significance of the outlier test [0.05]\n"
+    "  --outlier-min-runs N         runs needed before the outlier test applies [5]\n"
+    "  --keep-outliers              keep the runs the outlier test rejects\n"
+    "  -o FILE                      write the JSON to FILE instead of standard output\n";
+
+const char* kReport =
+    "usage: kinstab-cli report --project FILE -o FILE.pdf [--page a4|letter] [--figure-grid N]\n"
+    "Writes the design-check report as PDF: inputs, code trails, figures, verdict.\n"
+    "  --project FILE               a kinstab project (.json)\n"
+    "  -o FILE.pdf                  the report to write\n"
+    "  --page a4|letter             paper size [a4]\n"
+    "  --figure-grid N              grid points per axis of the surface figure [41]\n";
+
+const char* kFloors =
+    "usage: kinstab-cli floors --project FILE [--record FILE] [--stiffness uniform|weight]\n"
+    "                          [--damping Z] [--slab-level N] [--history-csv FILE] [--no-critical]\n"
+    "The building as a shear building (one level a degree of freedom, all modes): peak floor\n"
+    "accelerations under a ground record, the ASCE 7-22 and EN 1998-1 floor demands per level,\n"
+    "the critical PGA at which the slab on each level falls, and the verdicts at the slab's level.\n"
+    "  --project FILE               a kinstab project (.json)\n"
+    "  --record FILE                the ground record [the project's excitation.record]\n"
+    "  --stiffness uniform|weight   storey stiffness profile [the project's, else uniform]\n"
+    "  --damping Z                  modal damping ratio in every mode [0.05]\n"
+    "  --slab-level N               level of the slab, 1 to the number of stories [the roof]\n"
+    "  --history-csv FILE           write the floor accelerations of every level (g) as CSV\n"
+    "  --no-critical                skip the critical PGA search per level\n"
+    "  --record-format auto|at2|cosmos|csmip|values|time-accel  file format [auto]\n"
+    "  --record-dt S                sample step, s (needed by --record-format values)\n"
+    "  --record-unit g|m/s2|cm/s2|ft/s2|in/s2  unit of the values [from the file, else g]\n"
+    "  --record-channel N|NAME      channel of a multi-channel file [the first]\n";
+
+#undef KINSTAB_MODEL_FLAGS
+#undef KINSTAB_RECORD_FLAGS
+
+} // namespace
+
+const std::vector<CommandHelp>& commandHelps() {
+    static const std::vector<CommandHelp> t = {
+        {"simulate", "one run of the slab (enveloped sine or a record)", kSimulate},
+        {"surface", "the gamma_c(A, f) surface over a grid", kSurface},
+        {"critical", "the critical amplitude A_crit(f)", kCritical},
+        {"codes", "code lateral force ratios F_n / w_n", kCodes},
+        {"check", "the design check of a project", kCheck},
+        {"report", "the design-check report as PDF", kReport},
+        {"record", "read an accelerogram, peaks, spectra, floor motion", kRecord},
+        {"friction", "calibrate the friction law from triplet tests", kFriction},
+        {"precision", "work-precision study of the solvers", kPrecision},
+        {"bench", "time the solvers on a grid", kBench},
+        {"floors", "floor motions, floor demands and critical PGA per level", kFloors},
+    };
+    return t;
+}
+
+std::string usageText() {
+    std::string s = "usage: kinstab-cli COMMAND [flags]\n"
+                    "       kinstab-cli COMMAND --help\n"
+                    "       kinstab-cli --version\n\ncommands:\n";
+    for (const CommandHelp& c : commandHelps())
+        s += "  " + std::string(c.name) + std::string(11 - std::string(c.name).size(), ' ') +
+             c.summary + "\n";
+    s += "\nLIST: comma-separated numbers or start:stop:step.\n"
+         "Exit codes: 0 success, 2 bad input (the message names the flag and value), 1 internal\n"
+         "failure. Every JSON output carries \"kinstab_version\". Manual: man kinstab-cli.\n";
+    return s;
+}
+
+std::string commandHelpText(const std::string& name) {
+    for (const CommandHelp& c : commandHelps())
+        if (name == c.name) return c.text;
+    return {};
+}
+
+std::string versionText() {
+    return "kinstab-cli " KINSTAB_VERSION "\n"
+           "Licence GPL-3.0-or-later: this is free software; there is NO WARRANTY.\n";
+}
+
+} // namespace kinstab::cli

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/ExampleProjects.h"
+
+#include <QDir>
+#include <QFile>
+#include <QMenu>
+#include <QMessageBox>
+#include <QStandardPaths>
+
+namespace kinstab::ui {
+
+const std::vector<ExampleProject>& exampleProjects() {
+    static const std::vector<ExampleProject> list = {
+        {QObject::tr("The paper's 16-story building (Furgerson 1980, ch. V)"),
+         QStringLiteral(":/examples/paper-16-story.json"),
+         {}},
+        {QObject::tr("The same building under the Pacoima Dam record"),
+         QStringLiteral(":/examples/paper-16-story-record.json"),
+         {QStringLiteral("records/RSN77_SFERN_PUL164.AT2")}},
+        {QObject::tr("Planar slab, gravity only (Furgerson 1980, ch. VI)"),
+         QStringLiteral(":/examples/paper-planar.json"),
+         {}},
+    };
+    return list;
+}
+
+QString exampleRoot() {
+    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+}
+
+namespace {
+// Copies resource ":/REL" to root/REL, replacing an older copy; empty on success.
+QString copyResource(const QString& rel, const QString& root) {
+    const QString target = root + QLatin1Char('/') + rel;
+    if (!QDir().mkpath(QFileInfo(target).absolutePath()))
+        return QObject::tr("cannot create the folder %1").arg(QFileInfo(target).absolutePath());
+    QFile::remove(target);
+    QFile source(QStringLiteral(":/") + rel);
+    if (!source.copy(target)) return QObject::tr("%1: %2").arg(target, source.errorString());
+    QFile::setPermissions(target, QFile::ReadOwner | QFile::WriteOwner | QFile::ReadGroup |
+                                      QFile::ReadOther);
+    return {};
+}
+} // namespace
+
+QString copyExample(const ExampleProject& e, const QString& dir, QString* error) {
+    const QString rel = e.resource.mid(2); // "examples/NAME.json"
+    QStringList files = e.extras;
+    files << rel;
+    for (const QString& r : files) {
+        if (const QString why = copyResource(r, dir); !why.isEmpty()) {
+            if (error) *error = why;
+            return {};
+        }
+    }
+    return dir + QLatin1Char('/') + rel;
+}
+
+void addExampleMenu(QMenu* menu, const std::function<void(const QString&)>& open) {
+    QMenu* examples = menu->addMenu(QObject::tr("Open e&xample"));
+    examples->setObjectName(QStringLiteral("exampleMenu"));
+    for (const ExampleProject& e : exampleProjects()) {
+        examples->addAction(e.title, menu, [e, open, menu] {
+            QString error;
+            const QString path = copyExample(e, exampleRoot(), &error);
+            if (path.isEmpty())
+                QMessageBox::warning(menu->parentWidget(), QObject::tr("Open example"), error);
+            else
+                open(path);
+        });
+    }
+}
+
+} // namespace kinstab::ui
