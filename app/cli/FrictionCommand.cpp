@@ -66,7 +66,7 @@ int runFriction(const ArgList& argv) {
     }
     nlohmann::json j = frictionCalibrationJson(cal);
     j["data"] = *path;
-    writeOutput(args.text("o"), j.dump(2) + "\n");
+    writeOutput(args, "o", j.dump(2) + "\n");
     return 0;
 }
 

@@ -64,7 +64,7 @@ int runSimulate(const ArgList& argv) {
     if (wantHistory) {
         const EnvelopedSine a(c.envelope, amplitude, frequency, c.tstar);
         const History h = sampleHistory(a, c.slab.mu, r.events, r.tauEnd, historyStep);
-        writeOutput(args.text("history"), historyCsv(h));
+        writeOutput(args, "history", historyCsv(h));
     }
     std::cout << j.dump(2) << "\n";
     return 0;

@@ -101,8 +101,9 @@ int runSimulateRecord(const Args& args) {
     if (in.critical) j["critical"] = criticalJson(a, in.search);
     if (args.has("events")) j["events"] = eventsJson(a.run.events);
     if (args.has("history"))
-        writeOutput(args.text("history"), historyCsv(sampleHistory(motion, c.slab.mu, a.run.events,
-                                                                   a.run.tauEnd, historyStep)));
+        writeOutput(
+            args, "history",
+            historyCsv(sampleHistory(motion, c.slab.mu, a.run.events, a.run.tauEnd, historyStep)));
     std::cout << j.dump(2) << "\n";
     return 0;
 }
