@@ -127,10 +127,11 @@ void writeStandardOutput(std::string_view bytes) {
 }
 
 void flushStandardOutput() {
-    std::cout.flush();
     errno = 0;
+    std::cout.flush(); // std::cout writes through stdio: this flushes stdout and may fail here
+    int error = errno;
     const bool flushed = std::fflush(stdout) == 0;
-    const int error = errno != 0 ? errno : EIO;
+    if (error == 0) error = errno != 0 ? errno : EIO;
     if (!flushed || std::ferror(stdout) || !std::cout)
         throw WriteError(std::string("cannot write standard output: ") + std::strerror(error));
 }
