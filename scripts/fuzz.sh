@@ -27,14 +27,28 @@ seed friction_csv resources/data/furgerson1980/*.csv
 export ASAN_OPTIONS=detect_leaks=0:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 mkdir -p "$build/artifacts"
+failed=()
 for name in at2 cosmos csmip plaintext project friction_csv; do
   exe="$build/tests/fuzz/fuzz_$name"
+  # Inputs that once crashed a reader (tests/fuzz/regressions/NAME/): each must now pass.
   regressions=(tests/fuzz/regressions/"$name"/*)
-  if [ -e "${regressions[0]}" ]; then "$exe" "${regressions[@]}" 2>"$build/$name-regressions.log"; fi
+  if [ -e "${regressions[0]}" ] &&
+     ! "$exe" "${regressions[@]}" >"$build/$name-regressions.log" 2>&1; then
+    echo "== fuzz_$name: a regression input fails"; grep -E "ERROR|what\(\)|#1[0-9] " \
+      "$build/$name-regressions.log" | head -n 12
+    failed+=("$name (regression)")
+  fi
   echo "== fuzz_$name: ${seconds} s"
-  "$exe" "$build/corpus/$name" -max_total_time="$seconds" -max_len=16384 -rss_limit_mb=2048 \
-    -timeout=10 -print_final_stats=1 -artifact_prefix="$build/artifacts/$name-" \
-    2>"$build/$name.log" || { tail -n 60 "$build/$name.log"; exit 1; }
-  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$build/$name.log" | tr '\n' ' '
+  if ! "$exe" "$build/corpus/$name" -max_total_time="$seconds" -max_len=16384 \
+       -rss_limit_mb=2048 -timeout=10 -print_final_stats=1 \
+       -artifact_prefix="$build/artifacts/$name-" >"$build/$name.log" 2>&1; then
+    grep -E "ERROR|what\(\)|SUMMARY|Test unit written" "$build/$name.log" | head -n 8
+    failed+=("$name")
+  fi
+  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$build/$name.log" | tr -s ' \n' ' '
   echo
 done
+if [ ${#failed[@]} -ne 0 ]; then
+  echo "fuzzing found crashes in: ${failed[*]} (inputs in $build/artifacts/)"
+  exit 1
+fi
