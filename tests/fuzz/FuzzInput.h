@@ -1,7 +1,7 @@
 #pragma once
 // libFuzzer harnesses (built and run by scripts/fuzz.sh): each feeds the bytes to one reader
-// and lets only that reader's documented error through. Anything else — a crash, a sanitizer report, another
-// exception escaping — is a finding.
+// and lets only that reader's documented error through. Anything else — a crash, a sanitizer
+// report, another exception escaping — is a finding.
 
 #include <cstddef>
 #include <cstdint>
