@@ -18,8 +18,15 @@ namespace kinstab {
 
 namespace {
 
+// The reason in English whatever the locale (a GUI or report run sets the user's locale), so
+// that messages and logs read the same everywhere. strerrordesc_np: glibc 2.32 and later.
+std::string reason(int error) {
+    const char* text = ::strerrordesc_np(error);
+    return text ? text : "error " + std::to_string(error);
+}
+
 [[noreturn]] void fail(const std::string& path, int error) {
-    throw WriteError("cannot write " + path + ": " + std::strerror(error));
+    throw WriteError("cannot write " + path + ": " + reason(error));
 }
 
 // Writes all bytes, retrying short writes and interrupted calls; returns 0 or the errno.
@@ -121,8 +128,7 @@ void writeStandardOutput(std::string_view bytes) {
     std::cout.flush(); // what was printed before goes first
     const std::size_t n = std::fwrite(bytes.data(), 1, bytes.size(), stdout);
     const int error = errno;
-    if (n != bytes.size())
-        throw WriteError(std::string("cannot write standard output: ") + std::strerror(error));
+    if (n != bytes.size()) throw WriteError("cannot write standard output: " + reason(error));
     flushStandardOutput();
 }
 
@@ -133,7 +139,7 @@ void flushStandardOutput() {
     const bool flushed = std::fflush(stdout) == 0;
     if (error == 0) error = errno != 0 ? errno : EIO;
     if (!flushed || std::ferror(stdout) || !std::cout)
-        throw WriteError(std::string("cannot write standard output: ") + std::strerror(error));
+        throw WriteError("cannot write standard output: " + reason(error));
 }
 
 std::string readWholeFile(const std::string& path) {
