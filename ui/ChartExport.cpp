@@ -1,5 +1,8 @@
 #include "ui/ChartExport.h"
 
+#include "ui/AtomicSave.h"
+
+#include <QBuffer>
 #include <QChart>
 #include <QChartView>
 #include <QFileInfo>
@@ -13,8 +16,10 @@ QString exportChart(QChartView* view, const QString& path) {
     const QString suffix = QFileInfo(path).suffix().toLower();
     const QSize size = view->size();
     if (suffix == QLatin1String("svg")) {
+        QByteArray bytes; // in memory, then written whole (ui/AtomicSave.h)
+        QBuffer buffer(&bytes);
         QSvgGenerator svg;
-        svg.setFileName(path);
+        svg.setOutputDevice(&buffer);
         svg.setSize(size);
         svg.setViewBox(QRect(QPoint(0, 0), size));
         svg.setTitle(view->chart()->title());
@@ -23,7 +28,7 @@ QString exportChart(QChartView* view, const QString& path) {
         if (!p.begin(&svg)) return QObject::tr("%1: cannot write SVG").arg(path);
         view->render(&p);
         p.end();
-        return {};
+        return saveAtomically(path, bytes);
     }
     if (suffix != QLatin1String("png")) return QObject::tr("%1: use .png or .svg").arg(path);
     QImage img(size * 2, QImage::Format_ARGB32);
@@ -33,7 +38,7 @@ QString exportChart(QChartView* view, const QString& path) {
     p.setRenderHint(QPainter::Antialiasing);
     view->render(&p);
     p.end();
-    return img.save(path) ? QString() : QObject::tr("%1: cannot write PNG").arg(path);
+    return saveImageAtomically(path, img, "PNG");
 }
 
 } // namespace kinstab::ui

@@ -1,5 +1,6 @@
 #include "ui/MainWindow.h"
 
+#include "ui/AtomicSave.h"
 #include "ui/FloorsView.h"
 #include "ui/FrictionPanel.h"
 #include "ui/NumericsView.h"
@@ -37,7 +38,6 @@
 #include <QMessageBox>
 #include <QPainter>
 #include <QProgressBar>
-#include <QSaveFile>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStackedWidget>
@@ -442,10 +442,9 @@ void MainWindow::exportSurface() {
     } else {
         text = sweepCsv(sweep, sweepCase.tauRef());
     }
-    QSaveFile f(path); // atomic: a failed write leaves the old file alone
-    if (!f.open(QIODevice::WriteOnly) ||
-        f.write(text.data(), static_cast<qint64>(text.size())) < 0 || !f.commit())
-        QMessageBox::warning(this, tr("Export surface"), tr("%1: %2").arg(path, f.errorString()));
+    // Atomic: a failed write leaves the old file alone (ui/AtomicSave.h).
+    if (const QString e = saveAtomically(path, QByteArray::fromStdString(text)); !e.isEmpty())
+        QMessageBox::warning(this, tr("Export surface"), e);
     else
         m_status->setText(tr("Surface written to %1").arg(path));
 }

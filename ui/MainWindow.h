@@ -57,7 +57,7 @@ public:
     void showProject(const Project& p);
     // Opens a project file; false (with a message box unless quiet) when it cannot be read.
     bool openProject(const QString& path, bool quiet = false);
-    // Writes the project atomically (QSaveFile); empty on success, else the reason.
+    // Writes the project atomically (ui/AtomicSave.h); empty on success, else the reason.
     QString saveProjectAs(const QString& path);
     bool inputsValid() const;
     // The window as an image, with the 3D view rendered in (grab() leaves a GL window blank).

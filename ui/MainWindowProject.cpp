@@ -2,6 +2,7 @@
 // that follow the building, and what QSettings keeps between sessions.
 
 #include "core/codes/CodeSet.h"
+#include "ui/AtomicSave.h"
 #include "ui/BuildingPanel.h"
 #include "ui/CodesPanel.h"
 #include "ui/ExcitationPanel.h"
@@ -18,7 +19,6 @@
 #include <QFileInfo>
 #include <QLabel>
 #include <QMessageBox>
-#include <QSaveFile>
 #include <QSettings>
 #include <QStatusBar>
 
@@ -154,10 +154,9 @@ QString MainWindow::saveProjectAs(const QString& path) {
     if (const std::string e = validateProject(p); !e.empty()) return QString::fromStdString(e);
     const std::string text =
         projectToJson(p, QFileInfo(path).absolutePath().toStdString()).dump(2) + "\n";
-    QSaveFile f(path); // atomic: the old file stays until the new one is complete
-    if (!f.open(QIODevice::WriteOnly) ||
-        f.write(text.data(), static_cast<qint64>(text.size())) < 0 || !f.commit())
-        return f.errorString();
+    // Atomic: the old file stays until the new one is complete (ui/AtomicSave.h).
+    if (const QString e = saveAtomically(path, QByteArray::fromStdString(text)); !e.isEmpty())
+        return e;
     m_project = p;
     m_path = path;
     m_recent->add(path);

@@ -25,8 +25,11 @@ class Args;
 // simulate --record FILE (SimulateRecord.cpp), called by runSimulate.
 int runSimulateRecord(const Args& args);
 
-// Writes text to the file named by -o, or to stdout when there is none (atomically: a
-// temporary file renamed into place).
-void writeOutput(const std::string& path, const std::string& text);
+// Writes text to the file named by the flag ("o" for -o, "history", ...) atomically, or to
+// stdout when the flag is absent or "-" (app/cli/Output.cpp). Throws UsageError for an empty
+// name or a missing folder, kinstab::WriteError when the write fails.
+void writeOutput(const Args& args, const std::string& flag, const std::string& text);
+// The same checks on a name before the work starts.
+void checkOutputPath(const std::string& flag, const std::string& path);
 
 } // namespace kinstab::cli

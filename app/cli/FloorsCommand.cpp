@@ -84,7 +84,7 @@ int runFloors(const ArgList& argv) {
     j["wall_time_s"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (args.has("history-csv"))
-        writeOutput(args.text("history-csv"), floorHistoryCsv(a, in.ground));
+        writeOutput(args, "history-csv", floorHistoryCsv(a, in.ground));
     std::cout << jsonText(j, 2) << "\n";
     return 0;
 }

@@ -67,7 +67,7 @@ int runFriction(const ArgList& argv) {
     }
     nlohmann::json j = frictionCalibrationJson(cal);
     j["data"] = *path;
-    writeOutput(args.text("o"), jsonText(j, 2) + "\n");
+    writeOutput(args, "o", jsonText(j, 2) + "\n");
     return 0;
 }
 

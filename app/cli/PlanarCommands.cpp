@@ -69,7 +69,7 @@ int runSimulatePlanar(const Args& args, double amplitude, double frequency, doub
     addPlanarResultKeys(j, r);
     j["wall_time_s"] = wall;
     if (args.has("events")) j["events"] = planarEventsJson(r.events);
-    if (args.has("history")) writeOutput(args.text("history"), planarHistoryCsv(model, r));
+    if (args.has("history")) writeOutput(args, "history", planarHistoryCsv(model, r));
     std::cout << jsonText(j, 2) << "\n";
     return 0;
 }
@@ -79,7 +79,7 @@ int runSurfacePlanar(const Args& args, const SweepGrid& grid, int threads,
     const PlanarCase c = planarCaseFromFlags(args);
     const SweepResult r = runSweep(grid, planarPoint(c), nullptr, threads);
     if (format == "csv") {
-        writeOutput(args.text("o"), sweepCsv(r, c.tauRef()));
+        writeOutput(args, "o", sweepCsv(r, c.tauRef()));
         return 0;
     }
     nlohmann::json j = sweepJson(r, c.tauRef());
@@ -98,7 +98,7 @@ int runSurfacePlanar(const Args& args, const SweepGrid& grid, int threads,
         sides.push_back(row);
     }
     j["exit_side"] = sides;
-    writeOutput(args.text("o"), jsonText(j) + "\n");
+    writeOutput(args, "o", jsonText(j) + "\n");
     return 0;
 }
 

@@ -70,7 +70,7 @@ int runSimulatePlanarRecord(const Args& args) {
     j["tau_ref"] = tauRef ? nlohmann::json(*tauRef) : nlohmann::json();
     j["wall_time_s"] = wall;
     if (args.has("events")) j["events"] = planarEventsJson(r.events);
-    if (args.has("history")) writeOutput(args.text("history"), planarHistoryCsv(model, r));
+    if (args.has("history")) writeOutput(args, "history", planarHistoryCsv(model, r));
     std::cout << jsonText(j, 2) << "\n";
     return 0;
 }

@@ -21,7 +21,7 @@ int runPrecision(const ArgList& argv) {
     };
     const WorkPrecisionStudy study = runWorkPrecisionStudy(options);
     std::cout << workPrecisionText(study);
-    if (args.has("o")) writeOutput(args.text("o"), workPrecisionCsv(study));
+    if (args.has("o")) writeOutput(args, "o", workPrecisionCsv(study));
     return 0;
 }
 

@@ -90,7 +90,7 @@ int runRecord(const ArgList& argv) {
         j["envelope"]["of"] = "ground";
     }
     if (args.has("spectrum-csv"))
-        writeOutput(args.text("spectrum-csv"), spectraCsv(sg, sf ? &*sf : nullptr));
+        writeOutput(args, "spectrum-csv", spectraCsv(sg, sf ? &*sf : nullptr));
     std::cout << jsonText(j, 2) << "\n";
     return 0;
 }

@@ -1,7 +1,7 @@
 // kinstab-cli report --project FILE -o FILE.pdf [--page a4|letter] [--figure-grid N]
 // Runs the analyses the report needs and writes the same PDF as the GUI's File → Export
-// report…. Needs no display: a QGuiApplication on the offscreen platform unless the caller
-// chose another.
+// report…; `-o -` writes the PDF to stdout and the summary to stderr. Needs no display: a
+// QGuiApplication on the offscreen platform unless the caller chose another.
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
@@ -55,9 +55,7 @@ int runReport(const ArgList& argv) {
     if (options.figureGrid < 5 || options.figureGrid > 201)
         throw UsageError("--figure-grid " + args.text("figure-grid") + ": must be 5 to 201");
 
-    const std::filesystem::path dir = std::filesystem::absolute(out).parent_path();
-    if (!std::filesystem::is_directory(dir))
-        throw UsageError("-o " + out + ": the folder " + dir.string() + " does not exist");
+    checkOutputPath("o", out); // an empty name or a missing folder: exit 2 before any work
 
     ReportSource source;
     try {
@@ -77,16 +75,14 @@ int runReport(const ArgList& argv) {
     }
 
     const auto app = ensureGuiApplication();
-    const std::string part = out + ".part";
+    QByteArray pdf;
     int pages = 0;
     try {
-        pages = writeReport(source, analysis, QString::fromStdString(part), paper);
+        pages = renderReportPdf(buildReportDocument(source, analysis), paper, pdf);
     } catch (const ReportError& e) {
         throw UsageError("-o " + out + ": " + e.what());
     }
-    std::error_code ec;
-    std::filesystem::rename(part, out, ec);
-    if (ec) throw UsageError("-o " + out + ": " + ec.message());
+    writeOutput(args, "o", std::string(pdf.constData(), static_cast<std::size_t>(pdf.size())));
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const nlohmann::json j = {{"output", out},
@@ -94,7 +90,8 @@ int runReport(const ArgList& argv) {
                               {"page", paper == PaperSize::A4 ? "a4" : "letter"},
                               {"analysis_wall_time_s", analysis.totalSeconds},
                               {"wall_time_s", seconds}};
-    std::cout << jsonText(j, 2) << "\n";
+    (out == "-" ? std::cerr : std::cout) << jsonText(j, 2) << "
+"; // -o -: stdout holds the PDF
     return 0;
 }
 

@@ -67,7 +67,7 @@ int runSimulate(const ArgList& argv) {
             throw UsageError("--history-step " + args.text("history-step", "0.05") + ": " + e);
         const EnvelopedSine a(c.envelope, amplitude, frequency, c.tstar);
         const History h = sampleHistory(a, c.slab.mu, r.events, r.tauEnd, historyStep);
-        writeOutput(args.text("history"), historyCsv(h));
+        writeOutput(args, "history", historyCsv(h));
     }
     std::cout << jsonText(j, 2) << "\n";
     return 0;

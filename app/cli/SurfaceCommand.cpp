@@ -19,17 +19,18 @@ int runSurface(const ArgList& argv) {
     if (threads < 0 || threads > 1024)
         throw UsageError("--threads " + args.text("threads") + ": must be 0 (all) to 1024");
     const std::string format = args.choice("format", {"json", "csv", "table"}, "json");
+    if (args.has("o")) checkOutputPath("o", args.text("o")); // before a long sweep, not after
 
     if (isPlanar(args)) return runSurfacePlanar(args, grid, threads, format);
     const Slab1DCase c = slab1DCaseFromFlags(args);
 
     const SweepResult r = runSweep(grid, slab1DPoint(c), nullptr, threads);
     if (format == "table") {
-        writeOutput(args.text("o"), sweepTable(r, c.tauRef()));
+        writeOutput(args, "o", sweepTable(r, c.tauRef()));
         return 0;
     }
     if (format == "csv") {
-        writeOutput(args.text("o"), sweepCsv(r, c.tauRef()));
+        writeOutput(args, "o", sweepCsv(r, c.tauRef()));
         return 0;
     }
     nlohmann::json j = sweepJson(r, c.tauRef());
@@ -39,7 +40,7 @@ int runSurface(const ArgList& argv) {
     j["mu"] = c.slab.mu;
     j["tstar"] = c.tstar;
     j["limit"] = c.slab.limit;
-    writeOutput(args.text("o"), jsonText(j) + "\n");
+    writeOutput(args, "o", jsonText(j) + "\n");
     return 0;
 }
 

@@ -1,9 +1,12 @@
 // kinstab-cli: batch work, scripting and automated checks (docs/user-guide.md, "The command line").
-// Exit codes: 0 success, 2 bad input (message names the flag and value), 1 internal failure.
+// Exit codes: 0 success, 2 bad input (message names the flag and value), 1 internal failure,
+// 3 an output could not be written (full disk, full or closed stdout, no permission): the
+// message says which and why, and any file that was there before is left as it was.
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/HelpText.h"
+#include "core/io/AtomicFile.h"
 #include "core/numerics/VectorState.h"
 
 #include <exception>
@@ -42,7 +45,12 @@ int main(int argc, char** argv) {
         }
     }
     try {
-        return it->second(ArgList(argv + 2, argv + argc));
+        const int code = it->second(ArgList(argv + 2, argv + argc));
+        kinstab::flushStandardOutput(); // a full stdout is a failed run, not a silent loss
+        return code;
+    } catch (const kinstab::WriteError& e) {
+        std::cerr << "kinstab-cli " << argv[1] << ": error: " << e.what() << "\n";
+        return 3;
     } catch (const UsageError& e) {
         std::cerr << "kinstab-cli " << argv[1] << ": error: " << e.what() << "\n";
         return 2;

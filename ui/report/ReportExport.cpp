@@ -1,5 +1,7 @@
 #include "ui/report/ReportExport.h"
 
+#include "core/io/AtomicFile.h"
+
 #include "ui/report/ReportWriter.h"
 
 #include <QEventLoop>
@@ -97,6 +99,10 @@ QString exportReportTo(QWidget* parent, const Project& project, const QString& p
     } catch (const ReportError& e) {
         QMessageBox::warning(parent, QObject::tr("Export design report"),
                              out + ": " + QString::fromUtf8(e.what()));
+        return {};
+    } catch (const kinstab::WriteError& e) { // names the file and the reason
+        QMessageBox::warning(parent, QObject::tr("Export design report"),
+                             QString::fromUtf8(e.what()));
         return {};
     }
     return out;

@@ -29,8 +29,12 @@ struct ReportSource {
 
 ReportDocument buildReportDocument(const ReportSource& source, const ReportAnalysis& analysis);
 
-// Writes the PDF (vector text and line art). Returns the number of pages; throws ReportError
-// when the file cannot be written.
+// Renders the PDF (vector text and line art) into bytes; returns the number of pages.
+int renderReportPdf(const ReportDocument& doc, PaperSize paper, QByteArray& bytes);
+
+// Renders and writes the PDF through core's atomic writer. Returns the number of pages; throws
+// ReportError for a missing folder, kinstab::WriteError when the file cannot be written (the
+// old file, if any, is then left as it was).
 int writeReportPdf(const ReportDocument& doc, const QString& path, PaperSize paper);
 
 // Both in one: what the GUI and the CLI call.

@@ -1,8 +1,10 @@
 #include "ui/teaching/FrameExport.h"
 
+#include "ui/AtomicSave.h"
 #include "ui/teaching/SlabPainter.h"
 #include "ui/teaching/TracePainter.h"
 
+#include <QBuffer>
 #include <QDir>
 #include <QImage>
 #include <QPainter>
@@ -35,14 +37,14 @@ QImage renderImage(const TeachingRun& run, double tau, QSize size) {
 QString saveFramePng(const QString& path, const TeachingRun& run, double tau, QSize size) {
     if (size.width() < 16 || size.height() < 16)
         return QStringLiteral("image size %1×%2 is too small").arg(size.width()).arg(size.height());
-    if (!renderImage(run, tau, size).save(path, "PNG"))
-        return QStringLiteral("cannot write %1").arg(path);
-    return {};
+    return saveImageAtomically(path, renderImage(run, tau, size), "PNG");
 }
 
 QString saveFrameSvg(const QString& path, const TeachingRun& run, double tau, QSize size) {
+    QByteArray bytes; // in memory, then written whole (ui/AtomicSave.h)
+    QBuffer buffer(&bytes);
     QSvgGenerator svg;
-    svg.setFileName(path);
+    svg.setOutputDevice(&buffer);
     svg.setSize(size);
     svg.setViewBox(QRect(QPoint(0, 0), size));
     svg.setTitle(QStringLiteral("kinstab teaching frame, τ = %1").arg(tau, 0, 'f', 3));
@@ -51,7 +53,7 @@ QString saveFrameSvg(const QString& path, const TeachingRun& run, double tau, QS
     if (!p.begin(&svg)) return QStringLiteral("cannot write %1").arg(path);
     paintTeachingFrame(p, QRectF(QPointF(0, 0), QSizeF(size)), run, tau);
     if (!p.end()) return QStringLiteral("cannot write %1").arg(path);
-    return {};
+    return saveAtomically(path, bytes);
 }
 
 SequenceResult saveFrameSequence(const QString& directory, const TeachingRun& run,

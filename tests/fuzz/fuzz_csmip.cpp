@@ -1,0 +1,11 @@
+// Fuzzes core/io/CsmipV2Reader: any bytes give a record or a RecordError.
+#include "FuzzInput.h"
+#include "core/io/CsmipV2Reader.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    try {
+        kinstab::parseCsmipV2(kinstab::RecordText(fuzzText(data, size), "fuzz"));
+    } catch (const kinstab::RecordError&) {
+    }
+    return 0;
+}
