@@ -2,6 +2,7 @@
 // that follow the building, and what QSettings keeps between sessions.
 
 #include "core/codes/CodeSet.h"
+#include "core/io/InputLimits.h"
 #include "ui/AtomicSave.h"
 #include "ui/BuildingPanel.h"
 #include "ui/CodesPanel.h"
@@ -123,7 +124,12 @@ bool MainWindow::openProject(const QString& path, bool quiet) {
     QFile f(path);
     try {
         if (!f.open(QIODevice::ReadOnly)) throw ProjectError(f.errorString().toStdString());
-        const QByteArray text = f.readAll();
+        // Bounded like core's loadProject: a device or a huge file must not eat the memory.
+        const auto limit = static_cast<qint64>(limits::kMaxProjectFileBytes);
+        const QByteArray text = f.read(limit + 1);
+        if (text.size() > limit)
+            throw ProjectError("larger than the project file limit of " +
+                               std::to_string(limits::kMaxProjectFileBytes) + " bytes");
         // A record's file is stored relative to the project's directory.
         const QString dir =
             path.startsWith(QLatin1Char(':')) ? QString() : QFileInfo(path).absolutePath();

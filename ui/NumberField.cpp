@@ -3,6 +3,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -61,9 +62,15 @@ void NumberField::setUnit(const QString& unit) {
     m_unit->setText(unit);
 }
 
+// "1.5" always, and "1,5" where the user's locale writes a decimal comma.
+double NumberField::parse(const QString& text, bool* ok) {
+    const double v = text.toDouble(ok);
+    return *ok ? v : QLocale().toDouble(text, ok);
+}
+
 std::optional<double> NumberField::value() const {
     bool ok = false;
-    const double v = m_edit->text().trimmed().toDouble(&ok);
+    const double v = parse(m_edit->text().trimmed(), &ok);
     if (!ok || !std::isfinite(v) || !m_error.isEmpty()) return std::nullopt;
     return v;
 }
@@ -75,7 +82,7 @@ void NumberField::setFieldToolTip(const QString& tip) {
 void NumberField::revalidate() {
     const QString text = m_edit->text().trimmed();
     bool ok = false;
-    const double v = text.toDouble(&ok);
+    const double v = parse(text, &ok);
     QString error;
     if (text.isEmpty())
         error = m_optional ? QString() : tr("required");

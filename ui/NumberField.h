@@ -41,6 +41,8 @@ signals:
     void validityChanged(); // isValid() may have changed
 
 private:
+    static double parse(const QString& text, bool* ok);
+
     QLineEdit* m_edit;
     QLabel* m_unit;
     QLabel* m_errorLabel;

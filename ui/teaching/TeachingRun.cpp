@@ -1,5 +1,6 @@
 #include "ui/teaching/TeachingRun.h"
 
+#include "core/io/TextInput.h"
 #include "core/slab/History.h"
 #include "ui/teaching/PlanarPath.h"
 
@@ -83,7 +84,7 @@ const char* displayStateName(DisplayState s) {
 TeachingRun::TeachingRun(const TeachingParams& p) : params_(p) {
     std::string e = validateEnvelopedSine(p.amplitude, p.frequencyHz, 1.0);
     if (e.empty() && !(std::isfinite(p.wallWidthM) && p.wallWidthM > 0.0 && p.wallWidthM < 10.0))
-        e = "wall width = " + std::to_string(p.wallWidthM) + " m: must be > 0 and below 10";
+        e = "wall width = " + formatDouble(p.wallWidthM) + " m: must be > 0 and below 10";
     if (e.empty())
         e = p.model == TeachingModel::Planar ? validatePlanarCase(p.toPlanarCase())
                                              : validateCase(p.toCase());
