@@ -3,7 +3,7 @@
 #include "core/numerics/GaussLegendre.h"
 #include "core/numerics/VectorState.h"
 
-#include "core/numerics/Dopri5.h"
+#include "core/numerics/Dop853.h"
 #include "core/numerics/LevelCrossings.h"
 #include "core/numerics/RootFinding.h"
 
@@ -271,11 +271,11 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
         }
         if (++r_.slab.work.steps > o_.maxSteps) return fail("step limit reached");
         const auto st =
-            dopri5Step<4>([&](double t, const Vec4& y) { return rhs(t, y); }, t_, y_, f0, h);
-        const double err = dopri5ErrorNorm<4>(st.error, y_, st.y, absTol, o_.relTol);
+            dop853Step<4>([&](double t, const Vec4& y) { return rhs(t, y); }, t_, y_, f0, h);
+        const double err = dop853ErrorNorm<4>(st, y_, absTol, o_.relTol);
         if (!(err <= 1.0)) {
             ++r_.slab.work.restarts;
-            hNext_ = h * std::max(0.2, std::isfinite(err) ? dopri5StepFactor(err) : 0.2);
+            hNext_ = h * std::max(0.2, std::isfinite(err) ? dop853StepFactor(err) : 0.2);
             if (hNext_ < 1e-15 * std::max(1.0, t_)) return fail("step size underflow in a slip");
             continue;
         }
@@ -287,13 +287,13 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
             const double t0 = t_;
             const double tc = locate(
                 [&](double t, double& f, double& df) {
-                    const auto s = dopri5Step<4>(
+                    const auto s = dop853Step<4>(
                         [&](double tt, const Vec4& yy) { return rhs(tt, yy); }, t0, y0, f0, t - t0);
                     f = sign * s.y[comp] - lim;
                     df = sign * s.y[comp + 2];
                 },
                 t0, t0 + h, sign * y0[comp] - lim, sign * st.y[comp] - lim);
-            const auto sc = dopri5Step<4>([&](double tt, const Vec4& yy) { return rhs(tt, yy); },
+            const auto sc = dop853Step<4>([&](double tt, const Vec4& yy) { return rhs(tt, yy); },
                                           t0, y0, f0, tc - t0);
             return collapse(tc, sc.y, comp);
         }
@@ -306,7 +306,7 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
         }
         const bool truncated = h < hNext_;
         moveTo(t_ + h, st.y);
-        const double grow = h * dopri5StepFactor(err);
+        const double grow = h * dop853StepFactor(err);
         hNext_ = truncated ? std::max(hNext_, grow) : grow;
     }
     return Step::Continue;
@@ -447,8 +447,8 @@ PlanarRun::Approach PlanarRun::approachStop(double end) {
             fail("step limit reached");
             return Approach::Done;
         }
-        const auto st = dopri5Step<5>(f, s, z, fz, h);
-        const double err = dopri5ErrorNorm<5>(st.error, z, st.y, absTol, o_.relTol);
+        const auto st = dop853Step<5>(f, s, z, fz, h);
+        const double err = dop853ErrorNorm<5>(st, z, absTol, o_.relTol);
         const double tauNew = tEntry + st.y[2];
         const double dNew = dissipationRate(tauNew, st.y[0] / std::hypot(st.y[0], st.y[1]),
                                             st.y[1] / std::hypot(st.y[0], st.y[1]));
@@ -463,7 +463,7 @@ PlanarRun::Approach PlanarRun::approachStop(double end) {
             }
             continue;
         }
-        auto reStep = [&](double sTarget) { return dopri5Step<5>(f, s, z, fz, sTarget - s).y; };
+        auto reStep = [&](double sTarget) { return dop853Step<5>(f, s, z, fz, sTarget - s).y; };
         if (tauNew > end) {
             // The piece ends before the stop: find s with tau(s) = end and go back to time.
             const double sEnd = locate(
@@ -501,7 +501,7 @@ PlanarRun::Approach PlanarRun::approachStop(double end) {
         z[0] /= nrm;
         z[1] /= nrm;
         fz = f(s, z);
-        ds = h * dopri5StepFactor(err);
+        ds = h * dop853StepFactor(err);
         if (isSlaved(tauNew, toTau(z, s))) {
             moveTo(tauNew, toTau(z, s));
             return Approach::Exited;
