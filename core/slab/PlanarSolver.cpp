@@ -64,6 +64,8 @@ private:
     double hNext_ = 0;       // step proposal in tau
     double slipPeak_ = 0;    // largest |u| of the current slip (scale of the stop floor)
     double startLength_ = 0; // length of a slip's quadrature start
+    double fsalT_ = -1.0;    // the last accepted step's end, state and derivative
+    Vec4 fsalY_ = Vec4::Zero(), fsalF_ = Vec4::Zero();
 };
 
 Vec4 PlanarRun::rhs(double tau, const Vec4& y) {
@@ -251,7 +253,8 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
             if (s == Step::Done || !slipping_) return s;
             continue;
         }
-        const Vec4 f0 = rhs(t_, y_);
+        // The derivative at the state an accepted step ended on is that step's last stage (FSAL).
+        const Vec4 f0 = t_ == fsalT_ && y_ == fsalY_ ? fsalF_ : rhs(t_, y_);
         const double d = -(y_[2] * f0[2] + y_[3] * f0[3]) / rho; // -d|u|/dtau
         double h = std::min(hNext_ > 0.0 ? hNext_ : rho / (mu_ + 1.0), end - t_);
         if (d > 0.0 && rho <= d * h) {
@@ -306,6 +309,9 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
         }
         const bool truncated = h < hNext_;
         moveTo(t_ + h, st.y);
+        fsalT_ = t_;
+        fsalY_ = y_;
+        fsalF_ = st.f;
         const double grow = h * dop853StepFactor(err);
         hNext_ = truncated ? std::max(hNext_, grow) : grow;
     }
