@@ -361,13 +361,19 @@ PlanarRun::Step PlanarRun::slaved(double end) {
         const double t0 = t_, h = std::min(startLength_, end - t0), r0 = rho;
         ++r_.slab.work.steps;
         auto speedAt = [&](double t) { return r0 + gaussLegendre10(margin, t0, t); };
-        auto shift = [&](double t1, int k) {
-            return gaussLegendre10(
-                [&](double s) {
-                    const Vec2 e = unitA(s);
-                    return speedAt(s) * (k == 0 ? e.x : e.y);
-                },
-                t0, t1);
+        // The displacement along -a_h over [t0, t1], both components from one quadrature.
+        auto shift = [&](double t1) {
+            const double m = 0.5 * (t0 + t1), r = 0.5 * (t1 - t0);
+            Vec2 sum;
+            for (std::size_t i = 0; i < kGaussLegendre10Nodes.size(); ++i)
+                for (double node :
+                     {m - r * kGaussLegendre10Nodes[i], m + r * kGaussLegendre10Nodes[i]}) {
+                    const Vec2 e = unitA(node);
+                    const double v = kGaussLegendre10Weights[i] * speedAt(node);
+                    sum.x += v * e.x;
+                    sum.y += v * e.y;
+                }
+            return Vec2{r * sum.x, r * sum.y};
         };
         const double rEnd = speedAt(t0 + h);
         Vec4 y = y_;
@@ -381,14 +387,16 @@ PlanarRun::Step PlanarRun::slaved(double end) {
                                                   df = margin(t);
                                               },
                                               t0, t0 + h, r0, rEnd);
-            y[0] -= shift(ts, 0);
-            y[1] -= shift(ts, 1);
+            const Vec2 d = shift(ts);
+            y[0] -= d.x;
+            y[1] -= d.y;
             y[2] = y[3] = 0.0;
             moveTo(ts, y);
             return afterStop();
         }
-        y[0] -= shift(t0 + h, 0);
-        y[1] -= shift(t0 + h, 1);
+        const Vec2 d = shift(t0 + h);
+        y[0] -= d.x;
+        y[1] -= d.y;
         rho = rEnd;
         // Direction at the end: -a_h, lagging its turn (rate Omega) by Omega |u| / |a|.
         const double tEnd = t0 + h;
