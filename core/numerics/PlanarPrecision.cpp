@@ -165,7 +165,7 @@ std::string planarPrecisionText(const PlanarPrecisionStudy& s) {
                   s.referenceCheck);
     o << line;
     o << "error as for the 1-DOF study (stable runs: residual dx / limit and dy / theta); order "
-         "is per decade of rtol\n\n";
+         "= d log(error) / d log(rtol)\n\n";
     std::snprintf(line, sizeof line, "%-15s %-11s %5s %7s %9s %9s %6s %10s %10s %9s\n", "case",
                   "setting", "wrong", "events", "tau_c err", "error", "order", "min time s",
                   "median s", "accel");
