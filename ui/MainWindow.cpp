@@ -393,7 +393,7 @@ void MainWindow::exportSurface() {
         if (m_sweepPlanar) {
             const PlanarCase& c = *m_sweepPlanar;
             j.update({{"model", "planar"},
-                      {"solver", "dopri5"},
+                      {"solver", "dop853"},
                       {"fy", c.fyHz},
                       {"ay_ratio", c.ayRatio},
                       {"theta", c.slab.theta},
