@@ -431,7 +431,7 @@ void MainWindow::exportSurface() {
         if (sweepPlanar) {
             const PlanarCase& c = *sweepPlanar;
             j.update({{"model", "planar"},
-                      {"solver", "dopri5"},
+                      {"solver", "dop853"},
                       {"fy", c.fyHz},
                       {"ay_ratio", c.ayRatio},
                       {"theta", c.slab.theta},

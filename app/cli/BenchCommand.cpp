@@ -1,9 +1,11 @@
-// kinstab-cli bench: the surface speed target (exact against paper at T/16, one process).
+// kinstab-cli bench: the surface speed target (exact against paper at T/16, one process);
+// with --model planar, the planar surface against the 1-DOF one on the same grid.
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
+#include "app/cli/PlanarFlags.h"
 #include "core/sweep/SurfaceBenchmark.h"
 
 #include <cstdio>
@@ -18,6 +20,38 @@ nlohmann::json timingJson(const TimingStats& t) {
             {"median_cpu_s", t.medianCpuSeconds},
             {"runs", t.runs}};
 }
+
+// Planar against 1-DOF (exact) on one grid, alternating in one process (issue 22).
+int runBenchPlanar(const Args& args, const SweepGrid& grid, int threads, int repeats) {
+    const PlanarCase planar = planarCaseFromFlags(args);
+    const Slab1DCase oneDof = commonCaseFromFlags(args);
+    const PlanarSurfaceBenchmark b = benchmarkPlanarSurface(oneDof, planar, grid, repeats, threads);
+    nlohmann::json j = planarCaseJson(planar);
+    j.update({{"amplitudes", grid.amplitudes.size()},
+              {"frequencies", grid.frequencies.size()},
+              {"points", grid.size()},
+              {"threads", b.threads},
+              {"planar", timingJson(b.planar)},
+              {"one_dof", timingJson(b.oneDof)},
+              {"ratio_planar_over_one_dof", b.ratioMedian},
+              {"ratio_planar_over_one_dof_cpu", b.ratioCpu},
+              {"planar_collapsed_points", b.planarCollapsed},
+              {"planar_along_wall_points", b.planarAlongWalls},
+              {"planar_lift_off_points", b.planarLiftOff},
+              {"planar_steps", b.planarSteps},
+              {"planar_accel_evaluations", b.planarEvaluations}});
+    std::cout << j.dump(2) << "\n";
+    std::fprintf(stderr,
+                 "%zux%zu surface, %d threads, %d alternating runs of each after a warm-up:\n"
+                 "  planar (%s vertical)  median %.4f s (min %.4f s, CPU %.4f s)\n"
+                 "  1-DOF exact           median %.4f s (min %.4f s, CPU %.4f s)\n"
+                 "  planar/1-DOF %.2f (wall), %.2f (CPU), medians of per-run ratios\n",
+                 grid.amplitudes.size(), grid.frequencies.size(), b.threads, b.planar.runs,
+                 planar.vertical ? "with" : "no", b.planar.medianSeconds, b.planar.minSeconds,
+                 b.planar.medianCpuSeconds, b.oneDof.medianSeconds, b.oneDof.minSeconds,
+                 b.oneDof.medianCpuSeconds, b.ratioMedian, b.ratioCpu);
+    return 0;
+}
 } // namespace
 
 int runBench(const ArgList& argv) {
@@ -26,8 +60,8 @@ int runBench(const ArgList& argv) {
     const Args args(argv, flags);
     if (args.has("solver"))
         throw UsageError("--solver: bench always runs both solvers (exact and paper)");
-    const Slab1DCase c = slab1DCaseFromFlags(args);
-    SweepGrid grid = benchmarkGrid();
+    const bool planar = isPlanar(args);
+    SweepGrid grid = planar ? planarBenchmarkGrid() : benchmarkGrid();
     if (args.has("amplitudes")) grid.amplitudes = args.list("amplitudes");
     if (args.has("frequencies")) grid.frequencies = args.list("frequencies");
     const std::string e = validateGrid(grid);
@@ -38,6 +72,8 @@ int runBench(const ArgList& argv) {
     const int repeats = args.integer("repeats", 5);
     if (repeats < 1 || repeats > 1000)
         throw UsageError("--repeats " + args.text("repeats") + ": must be 1 to 1000");
+    if (planar) return runBenchPlanar(args, grid, threads, repeats);
+    const Slab1DCase c = slab1DCaseFromFlags(args);
 
     const SurfaceBenchmark b = benchmarkSurface(c, grid, repeats, threads);
     nlohmann::json j = {{"amplitudes", grid.amplitudes.size()},

@@ -64,7 +64,7 @@ nlohmann::json planarCaseJson(const PlanarCase& c) {
         vertical = {
             {"samples", r->samples().size()}, {"dt_tau", r->sampleStep()}, {"peak_g", r->peak()}};
     return {{"model", "planar"},
-            {"solver", "dopri5"},
+            {"solver", "dop853"},
             {"rel_tol", c.solver.relTol},
             {"abs_tol", c.solver.absTol},
             {"envelope", envelopeJson(common)},

@@ -2,7 +2,9 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "core/numerics/PlanarPrecision.h"
 #include "core/numerics/WorkPrecision.h"
+#include "ui/PlanarVertical.h"
 
 #include <iostream>
 
@@ -21,7 +23,16 @@ int runPrecision(const ArgList& argv) {
     };
     const WorkPrecisionStudy study = runWorkPrecisionStudy(options);
     std::cout << workPrecisionText(study);
-    if (args.has("o")) writeOutput(args, "o", workPrecisionCsv(study));
+    // The planar model: its rows follow the 1-DOF ones in the table and the CSV.
+    PlanarPrecisionOptions planar;
+    planar.repeats = options.repeats;
+    planar.verticalUp = ui::projectPlanarCase({}, PlanarSettings{}).vertical; // shipped RSN68 UP
+    planar.onProgress = options.onProgress;
+    const PlanarPrecisionStudy planarStudy = runPlanarPrecisionStudy(planar);
+    std::cout << planarPrecisionText(planarStudy);
+    WorkPrecisionStudy all = study;
+    all.rows.insert(all.rows.end(), planarStudy.rows.begin(), planarStudy.rows.end());
+    if (args.has("o")) writeOutput(args, "o", workPrecisionCsv(all));
     return 0;
 }
 

@@ -3,7 +3,7 @@
 #include "core/numerics/GaussLegendre.h"
 #include "core/numerics/VectorState.h"
 
-#include "core/numerics/Dopri5.h"
+#include "core/numerics/Dop853.h"
 #include "core/numerics/LevelCrossings.h"
 #include "core/numerics/RootFinding.h"
 
@@ -64,6 +64,8 @@ private:
     double hNext_ = 0;       // step proposal in tau
     double slipPeak_ = 0;    // largest |u| of the current slip (scale of the stop floor)
     double startLength_ = 0; // length of a slip's quadrature start
+    double fsalT_ = -1.0;    // the last accepted step's end, state and derivative
+    Vec4 fsalY_ = Vec4::Zero(), fsalF_ = Vec4::Zero();
 };
 
 Vec4 PlanarRun::rhs(double tau, const Vec4& y) {
@@ -251,7 +253,8 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
             if (s == Step::Done || !slipping_) return s;
             continue;
         }
-        const Vec4 f0 = rhs(t_, y_);
+        // The derivative at the state an accepted step ended on is that step's last stage (FSAL).
+        const Vec4 f0 = t_ == fsalT_ && y_ == fsalY_ ? fsalF_ : rhs(t_, y_);
         const double d = -(y_[2] * f0[2] + y_[3] * f0[3]) / rho; // -d|u|/dtau
         double h = std::min(hNext_ > 0.0 ? hNext_ : rho / (mu_ + 1.0), end - t_);
         if (d > 0.0 && rho <= d * h) {
@@ -271,11 +274,11 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
         }
         if (++r_.slab.work.steps > o_.maxSteps) return fail("step limit reached");
         const auto st =
-            dopri5Step<4>([&](double t, const Vec4& y) { return rhs(t, y); }, t_, y_, f0, h);
-        const double err = dopri5ErrorNorm<4>(st.error, y_, st.y, absTol, o_.relTol);
+            dop853Step<4>([&](double t, const Vec4& y) { return rhs(t, y); }, t_, y_, f0, h);
+        const double err = dop853ErrorNorm<4>(st, y_, absTol, o_.relTol);
         if (!(err <= 1.0)) {
             ++r_.slab.work.restarts;
-            hNext_ = h * std::max(0.2, std::isfinite(err) ? dopri5StepFactor(err) : 0.2);
+            hNext_ = h * std::max(0.2, std::isfinite(err) ? dop853StepFactor(err) : 0.2);
             if (hNext_ < 1e-15 * std::max(1.0, t_)) return fail("step size underflow in a slip");
             continue;
         }
@@ -287,13 +290,13 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
             const double t0 = t_;
             const double tc = locate(
                 [&](double t, double& f, double& df) {
-                    const auto s = dopri5Step<4>(
+                    const auto s = dop853Step<4>(
                         [&](double tt, const Vec4& yy) { return rhs(tt, yy); }, t0, y0, f0, t - t0);
                     f = sign * s.y[comp] - lim;
                     df = sign * s.y[comp + 2];
                 },
                 t0, t0 + h, sign * y0[comp] - lim, sign * st.y[comp] - lim);
-            const auto sc = dopri5Step<4>([&](double tt, const Vec4& yy) { return rhs(tt, yy); },
+            const auto sc = dop853Step<4>([&](double tt, const Vec4& yy) { return rhs(tt, yy); },
                                           t0, y0, f0, tc - t0);
             return collapse(tc, sc.y, comp);
         }
@@ -306,7 +309,10 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
         }
         const bool truncated = h < hNext_;
         moveTo(t_ + h, st.y);
-        const double grow = h * dopri5StepFactor(err);
+        fsalT_ = t_;
+        fsalY_ = y_;
+        fsalF_ = st.f;
+        const double grow = h * dop853StepFactor(err);
         hNext_ = truncated ? std::max(hNext_, grow) : grow;
     }
     return Step::Continue;
@@ -355,13 +361,19 @@ PlanarRun::Step PlanarRun::slaved(double end) {
         const double t0 = t_, h = std::min(startLength_, end - t0), r0 = rho;
         ++r_.slab.work.steps;
         auto speedAt = [&](double t) { return r0 + gaussLegendre10(margin, t0, t); };
-        auto shift = [&](double t1, int k) {
-            return gaussLegendre10(
-                [&](double s) {
-                    const Vec2 e = unitA(s);
-                    return speedAt(s) * (k == 0 ? e.x : e.y);
-                },
-                t0, t1);
+        // The displacement along -a_h over [t0, t1], both components from one quadrature.
+        auto shift = [&](double t1) {
+            const double m = 0.5 * (t0 + t1), r = 0.5 * (t1 - t0);
+            Vec2 sum;
+            for (std::size_t i = 0; i < kGaussLegendre10Nodes.size(); ++i)
+                for (double node :
+                     {m - r * kGaussLegendre10Nodes[i], m + r * kGaussLegendre10Nodes[i]}) {
+                    const Vec2 e = unitA(node);
+                    const double v = kGaussLegendre10Weights[i] * speedAt(node);
+                    sum.x += v * e.x;
+                    sum.y += v * e.y;
+                }
+            return Vec2{r * sum.x, r * sum.y};
         };
         const double rEnd = speedAt(t0 + h);
         Vec4 y = y_;
@@ -375,14 +387,16 @@ PlanarRun::Step PlanarRun::slaved(double end) {
                                                   df = margin(t);
                                               },
                                               t0, t0 + h, r0, rEnd);
-            y[0] -= shift(ts, 0);
-            y[1] -= shift(ts, 1);
+            const Vec2 d = shift(ts);
+            y[0] -= d.x;
+            y[1] -= d.y;
             y[2] = y[3] = 0.0;
             moveTo(ts, y);
             return afterStop();
         }
-        y[0] -= shift(t0 + h, 0);
-        y[1] -= shift(t0 + h, 1);
+        const Vec2 d = shift(t0 + h);
+        y[0] -= d.x;
+        y[1] -= d.y;
         rho = rEnd;
         // Direction at the end: -a_h, lagging its turn (rate Omega) by Omega |u| / |a|.
         const double tEnd = t0 + h;
@@ -447,8 +461,8 @@ PlanarRun::Approach PlanarRun::approachStop(double end) {
             fail("step limit reached");
             return Approach::Done;
         }
-        const auto st = dopri5Step<5>(f, s, z, fz, h);
-        const double err = dopri5ErrorNorm<5>(st.error, z, st.y, absTol, o_.relTol);
+        const auto st = dop853Step<5>(f, s, z, fz, h);
+        const double err = dop853ErrorNorm<5>(st, z, absTol, o_.relTol);
         const double tauNew = tEntry + st.y[2];
         const double dNew = dissipationRate(tauNew, st.y[0] / std::hypot(st.y[0], st.y[1]),
                                             st.y[1] / std::hypot(st.y[0], st.y[1]));
@@ -463,7 +477,7 @@ PlanarRun::Approach PlanarRun::approachStop(double end) {
             }
             continue;
         }
-        auto reStep = [&](double sTarget) { return dopri5Step<5>(f, s, z, fz, sTarget - s).y; };
+        auto reStep = [&](double sTarget) { return dop853Step<5>(f, s, z, fz, sTarget - s).y; };
         if (tauNew > end) {
             // The piece ends before the stop: find s with tau(s) = end and go back to time.
             const double sEnd = locate(
@@ -501,7 +515,7 @@ PlanarRun::Approach PlanarRun::approachStop(double end) {
         z[0] /= nrm;
         z[1] /= nrm;
         fz = f(s, z);
-        ds = h * dopri5StepFactor(err);
+        ds = h * dop853StepFactor(err);
         if (isSlaved(tauNew, toTau(z, s))) {
             moveTo(tauNew, toTau(z, s));
             return Approach::Exited;

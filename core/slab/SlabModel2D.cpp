@@ -22,9 +22,25 @@ std::string validatePlanarParams(const PlanarParams& p) {
 SlabModel2D::SlabModel2D(std::shared_ptr<const Excitation1D> ax,
                          std::shared_ptr<const Excitation1D> ay,
                          std::shared_ptr<const Excitation1D> az, PlanarParams params)
-    : ax_(std::move(ax)), ay_(std::move(ay)), az_(std::move(az)), params_(params) {}
+    : ax_(std::move(ax)), ay_(std::move(ay)), az_(std::move(az)), params_(params) {
+    const auto* x = dynamic_cast<const EnvelopedSine*>(ax_.get());
+    const auto* y = dynamic_cast<const EnvelopedSine*>(ay_.get());
+    if (!x || !y) return;
+    // One envelope when e_x and e_y agree to the bit over the motion (they are the same two
+    // exponentials then); any other pair keeps the general path.
+    for (double tau : {0.1, 1.0, 7.3, 31.0, 200.0})
+        if (x->envelopeAt(tau) != y->envelopeAt(tau)) return;
+    sharedX_ = x;
+    sharedY_ = y;
+}
 
 Vec2 SlabModel2D::accel(double tau) const {
+    if (sharedX_) {
+        // As EnvelopedSine::accel, (A / S_max) e sin(omega tau), with e evaluated once.
+        const double e = sharedX_->envelopeAt(tau);
+        return {sharedX_->amplitude() / sharedX_->sMax() * e * std::sin(sharedX_->omega() * tau),
+                sharedY_->amplitude() / sharedY_->sMax() * e * std::sin(sharedY_->omega() * tau)};
+    }
     return {ax_->accel(tau), ay_ ? ay_->accel(tau) : 0.0};
 }
 Vec2 SlabModel2D::accelSlope(double tau) const {

@@ -4,6 +4,7 @@
 // accelerations a_x, a_y and a vertical factor n(tau) = 1 + a_z(tau) on the normal force.
 // Each excitation is any Excitation1D (enveloped sine, recorded motion), in g of tau = t / t*.
 
+#include "core/excitation/EnvelopedSine.h"
 #include "core/excitation/Excitation1D.h"
 #include "core/slab/SlabTypes.h"
 
@@ -57,6 +58,10 @@ public:
 
 private:
     std::shared_ptr<const Excitation1D> ax_, ay_, az_;
+    // Both horizontal components enveloped sines under one envelope (the planar case of
+    // ch. VI): accel() evaluates the envelope once for both, a third of the solver's work.
+    const EnvelopedSine* sharedX_ = nullptr;
+    const EnvelopedSine* sharedY_ = nullptr;
     PlanarParams params_;
 };
 

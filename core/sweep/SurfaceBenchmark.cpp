@@ -2,6 +2,8 @@
 
 #include "core/sweep/Sweep.h"
 
+#include <algorithm>
+#include <atomic>
 #include <thread>
 
 namespace kinstab {
@@ -10,12 +12,22 @@ SweepGrid benchmarkGrid() {
     return {linspaceStep(0.5, 1.5, 1.0 / 256.0), linspaceStep(0.25, 2.25, 1.0 / 128.0)};
 }
 
+SweepGrid planarBenchmarkGrid() {
+    return {linspaceStep(0.5, 1.5, 1.0 / 32.0), linspaceStep(0.25, 2.25, 1.0 / 16.0)};
+}
+
+namespace {
+int threadsOrAll(int threads) {
+    return threads > 0 ? threads
+                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+} // namespace
+
 SurfaceBenchmark benchmarkSurface(const Slab1DCase& c, const SweepGrid& grid, int repeats,
                                   int threads) {
     SurfaceBenchmark b;
     b.grid = grid;
-    b.threads =
-        threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    b.threads = threadsOrAll(threads);
     Slab1DCase exact = c, paper = c;
     exact.solver = SolverKind::Exact;
     paper.solver = SolverKind::Paper;
@@ -32,6 +44,42 @@ SurfaceBenchmark benchmarkSurface(const Slab1DCase& c, const SweepGrid& grid, in
             ++b.outcomeDisagreements;
         if (exactResult.points[k].outcome == Outcome::Collapsed) ++b.exactCollapsed;
     }
+    return b;
+}
+
+PlanarSurfaceBenchmark benchmarkPlanarSurface(const Slab1DCase& oneDof, const PlanarCase& planar,
+                                              const SweepGrid& grid, int repeats, int threads) {
+    PlanarSurfaceBenchmark b;
+    b.grid = grid;
+    b.threads = threadsOrAll(threads);
+    Slab1DCase exact = oneDof;
+    exact.solver = SolverKind::Exact;
+    SweepResult planarResult;
+    const PairedTiming t =
+        timePaired([&] { planarResult = runSweep(grid, planarPoint(planar), nullptr, b.threads); },
+                   [&] { runSweep(grid, slab1DPoint(exact), nullptr, b.threads); }, repeats);
+    b.planar = t.first;
+    b.oneDof = t.second;
+    b.ratioMedian = t.ratioWall;
+    b.ratioCpu = t.ratioCpu;
+    for (const PointResult& p : planarResult.points) {
+        if (p.outcome == Outcome::Collapsed) ++b.planarCollapsed;
+        if (p.outcome == Outcome::LiftOff) ++b.planarLiftOff;
+        if (p.exitSide == ExitSide::Along) ++b.planarAlongWalls;
+    }
+    // The solver's work, counted once outside the timed runs.
+    std::atomic<long> steps = 0, evaluations = 0;
+    runSweep(
+        grid,
+        [&](double a, double f) {
+            const PlanarResult r = runPlanar(planar, a, f);
+            steps += r.slab.work.steps;
+            evaluations += r.slab.work.accelEvaluations;
+            return PointResult{r.slab.outcome, r.slab.tauC, r.exitSide};
+        },
+        nullptr, b.threads);
+    b.planarSteps = steps;
+    b.planarEvaluations = evaluations;
     return b;
 }
 

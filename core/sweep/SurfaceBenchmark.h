@@ -5,6 +5,7 @@
 // two disagree on the outcome, so that a speed-up can never hide a change of answer.
 
 #include "core/numerics/Timing.h"
+#include "core/slab/PlanarCase.h"
 #include "core/slab/Slab1DCase.h"
 #include "core/sweep/Grid.h"
 
@@ -27,5 +28,25 @@ SweepGrid benchmarkGrid();
 // c.solver is ignored: both solvers run on c (paper at c.paperStepsPerPeriod).
 SurfaceBenchmark benchmarkSurface(const Slab1DCase& c, const SweepGrid& grid, int repeats,
                                   int threads);
+
+// The issue-22 target: the planar surface against the 1-DOF (exact) surface on the same grid,
+// runs alternating planar / 1-DOF in one process. Counts the planar collapses and those along
+// the walls, so that a speed-up cannot hide a change of answer.
+struct PlanarSurfaceBenchmark {
+    SweepGrid grid;
+    int threads = 0;
+    TimingStats planar, oneDof;
+    double ratioMedian = 0; // planar / 1-DOF: median of the per-repeat wall-time ratios
+    double ratioCpu = 0;
+    std::size_t planarCollapsed = 0, planarAlongWalls = 0, planarLiftOff = 0;
+    long planarSteps = 0, planarEvaluations = 0; // solver work over the surface (one run)
+};
+
+// The 33 x 33 grid over the span of benchmarkGrid(): A 0.5:1.5:1/32, f 0.25:2.25:1/16.
+SweepGrid planarBenchmarkGrid();
+
+// oneDof.solver is forced to the exact solver; planar runs as given (its solver options too).
+PlanarSurfaceBenchmark benchmarkPlanarSurface(const Slab1DCase& oneDof, const PlanarCase& planar,
+                                              const SweepGrid& grid, int repeats, int threads);
 
 } // namespace kinstab
