@@ -1,8 +1,10 @@
 // kinstab-cli: batch work, scripting and automated checks (SPEC §12).
-// Exit codes: 0 success, 2 bad input (message names the flag and value), 1 internal failure.
+// Exit codes: 0 success, 2 bad input (message names the flag and value), 3 a result that is not
+// finite or a search that reached its bound (kinstab::InternalError), 1 any other failure.
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "core/numerics/InternalError.h"
 #include "core/numerics/VectorState.h"
 
 #include <exception>
@@ -71,6 +73,9 @@ int main(int argc, char** argv) {
     } catch (const UsageError& e) {
         std::cerr << "kinstab-cli " << argv[1] << ": error: " << e.what() << "\n";
         return 2;
+    } catch (const kinstab::InternalError& e) {
+        std::cerr << "kinstab-cli " << argv[1] << ": internal error: " << e.what() << "\n";
+        return 3;
     } catch (const std::exception& e) {
         std::cerr << "kinstab-cli " << argv[1] << ": internal error: " << e.what() << "\n";
         return 1;

@@ -46,7 +46,8 @@ public:
     double peakGuess(long k) const;
 
 private:
-    void envelopeAndSlope(double tau, double& e, double& de, double* d2e = nullptr) const;
+    void envelopeAndSlope(double tau, double& e, double& de) const;
+    void logSlopes(double tau, double& r1, double& r2) const; // e'/e and e''/e
     void accelAndSlope(double tau, double& a, double& da) const;
     double computeSMax() const;
     long halfPeriodIndex(double segmentStart) const; // as segmentEnd() cuts the time line
