@@ -35,6 +35,9 @@ public:
     double peak() const override { return amplitude_; }
 
     double omega() const { return omega_; }
+    double decayP() const { return p_; } // alpha t*
+    double decayQ() const { return q_; } // beta t*
+    double halfPeriod() const { return halfPeriod_; }
     double sMax() const { return sMax_; }
     double amplitude() const { return amplitude_; }
     double envelopeAt(double tau) const; // e(t* tau), unscaled
