@@ -22,11 +22,11 @@ int runCritical(const ArgList& argv) {
     const std::string e = validateGrid(SweepGrid{{1.0}, freqs});
     if (!e.empty()) throw UsageError("--" + e);
     const CriticalSearch search = criticalSearchFromFlags(args);
-
-    if (isPlanar(args)) return runCriticalPlanar(args, freqs, search);
     for (double f : freqs)
         if (const std::string fe = frequencyRangeError(f); !fe.empty())
             throw UsageError("--frequencies " + args.text("frequencies") + ": " + fe);
+
+    if (isPlanar(args)) return runCriticalPlanar(args, freqs, search);
     const Slab1DCase c = slab1DCaseFromFlags(args);
     // Each run is checked before its verdict counts: a collapse with no finite time is an
     // internal error (exit 3), never an A_crit.
