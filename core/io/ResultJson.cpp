@@ -56,19 +56,21 @@ nlohmann::json eventsJson(const std::vector<SlabEvent>& events) {
 
 nlohmann::json slabResultJson(const SlabResult& r, double tauRef) {
     const bool collapsed = r.outcome == Outcome::Collapsed;
-    // A failed run promises no numbers (they are null where not finite); any other does.
+    // A failed run promises no numbers (they are null where not finite); any other does, but
+    // gamma_c only when there is a reference time (a record run may have none).
     auto number = [&](double x, const char* what) {
         return r.outcome == Outcome::Failed ? numberOrNull(x) : nlohmann::json(promised(x, what));
     };
-    nlohmann::json j = {
-        {"outcome", outcomeName(r.outcome)},
-        {"tau_c", collapsed ? number(r.tauC, "tau_c") : nlohmann::json()},
-        {"gamma_c", collapsed ? number(tauRef / r.tauC, "gamma_c") : nlohmann::json(0.0)},
-        {"slip_intervals", r.slipIntervals},
-        {"max_abs_delta", number(r.maxAbsDelta, "max_abs_delta")},
-        {"residual_delta", number(r.residualDelta, "residual_delta")},
-        {"tau_end", number(r.tauEnd, "tau_end")},
-        {"work", workJson(r.work)}};
+    nlohmann::json j = {{"outcome", outcomeName(r.outcome)},
+                        {"tau_c", collapsed ? number(r.tauC, "tau_c") : nlohmann::json()},
+                        {"gamma_c", !collapsed              ? nlohmann::json(0.0)
+                                    : std::isfinite(tauRef) ? number(tauRef / r.tauC, "gamma_c")
+                                                            : nlohmann::json()},
+                        {"slip_intervals", r.slipIntervals},
+                        {"max_abs_delta", number(r.maxAbsDelta, "max_abs_delta")},
+                        {"residual_delta", number(r.residualDelta, "residual_delta")},
+                        {"tau_end", number(r.tauEnd, "tau_end")},
+                        {"work", workJson(r.work)}};
     if (r.outcome == Outcome::LiftOff) j["tau_lift_off"] = numberOrNull(r.tauC);
     if (r.outcome == Outcome::Failed) j["failure"] = r.failure;
     return j;

@@ -125,6 +125,12 @@ private slots:
         QCOMPARE_LE(std::abs(*r.amplitude - 0.7), 4.0 * std::numeric_limits<double>::epsilon());
         QVERIFY(runs < 12 + kMaxHalvings);
     }
+    void scanBeyondItsBoundRefused() {
+        // A scan past the bound is an error, not hours of runs.
+        const PointFunction never = [](double, double) { return PointResult{Outcome::Stable, 0}; };
+        QVERIFY_THROWS_EXCEPTION(InternalError,
+                                 criticalAmplitude(never, 1.0, 0.0, {0.0, 5.0, 1e-9, 1e-10}));
+    }
     void nonFiniteResultIsAnInternalFailure() {
         // A collapse without a finite time is never a verdict: the solver's result becomes an
         // internal failure, the writers refuse it, and requireSound names the case.
