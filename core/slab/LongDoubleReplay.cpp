@@ -63,7 +63,9 @@ private:
     // |e sin| at its maximum: the double solver's half-period peaks locate the hump, a few
     // Newton steps on d/dtau log|e sin| = 0 in long double refine it (S_max is flat there).
     Real sMax(const EnvelopedSine& a) const {
-        const long k0 = static_cast<long>(std::floor(a.envelopePeakTau() / a.halfPeriod()));
+        const double peak = a.envelopePeakTau(); // inf without decay (alpha = 0): from 0 on
+        const long k0 =
+            std::isfinite(peak) ? static_cast<long>(std::floor(peak / a.halfPeriod())) : 0L;
         Real best = 0;
         for (long k = std::max(0L, k0 - 5); k <= k0 + 5; ++k) {
             Real t = a.halfPeriodPeak(k);
