@@ -4,7 +4,9 @@
 #include "app/cli/ModelFlags.h"
 #include "app/cli/PlanarFlags.h"
 #include "app/cli/SearchFlags.h"
+#include "core/excitation/FrequencyRange.h"
 #include "core/io/ResultJson.h"
+#include "core/slab/FiniteResult.h"
 #include "core/sweep/CriticalAmplitude.h"
 
 #include <iostream>
@@ -21,6 +23,9 @@ int runCritical(const ArgList& argv) {
     const std::string e = validateGrid(SweepGrid{{1.0}, freqs});
     if (!e.empty()) throw UsageError("--" + e);
     const CriticalSearch search = criticalSearchFromFlags(args);
+    for (double f : freqs)
+        if (const std::string fe = frequencyRangeError(f); !fe.empty())
+            throw UsageError("--frequencies " + args.text("frequencies") + ": " + fe);
 
     if (isPlanar(args)) return runCriticalPlanar(args, freqs, search);
     const Slab1DCase c = slab1DCaseFromFlags(args);
@@ -29,7 +34,13 @@ int runCritical(const ArgList& argv) {
         throw UsageError("--mu " + args.text("mu", "0") +
                          ": A_crit needs friction (mu > 0); without it the slab slides at any "
                          "amplitude");
-    const PointFunction point = slab1DPoint(c);
+    // Each run is checked before its verdict counts: a collapse with no finite time is an
+    // internal error (exit 3), never an A_crit.
+    const PointFunction point = [&c](double amplitude, double frequency) {
+        const SlabResult s = runSlab1D(c, amplitude, frequency);
+        requireSound(s, caseName(c, amplitude, frequency));
+        return PointResult{s.outcome, s.tauC};
+    };
     nlohmann::json crit = nlohmann::json::array();
     for (double f : freqs) {
         const CriticalResult r = criticalAmplitude(point, f, c.slab.mu, search);

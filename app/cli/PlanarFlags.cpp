@@ -1,6 +1,7 @@
 #include "app/cli/PlanarFlags.h"
 
 #include "app/cli/ModelFlags.h"
+#include "core/excitation/FrequencyRange.h"
 #include "core/excitation/RecordedMotion.h"
 #include "core/io/RecordReader.h"
 
@@ -40,8 +41,8 @@ PlanarCase planarCaseFromFlags(const Args& args, bool recordDriven) {
         throw UsageError("--fy is required with --model planar (frequency along the walls, Hz; "
                          "the paper uses 0.2, 0.5, 1, 2, 5, 10)");
     c.fyHz = args.number("fy", c.fyHz);
-    if (c.fyHz <= 0.0 || c.fyHz > 1000.0)
-        throw UsageError("--fy " + args.text("fy") + ": must be > 0 and at most 1000 Hz");
+    if (const std::string e = frequencyRangeError(c.fyHz); !e.empty())
+        throw UsageError("--fy " + args.text("fy") + ": " + e);
     c.slab.theta = args.number("theta", 20.0);
     if (c.slab.theta <= 0.0 || c.slab.theta > 1e6)
         throw UsageError("--theta " + args.text("theta") +

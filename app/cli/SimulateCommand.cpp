@@ -6,7 +6,9 @@
 #include "app/cli/RecordFlags.h"
 #include "app/cli/SearchFlags.h"
 #include "core/excitation/EnvelopedSine.h"
+#include "core/excitation/FrequencyRange.h"
 #include "core/io/ResultJson.h"
+#include "core/slab/FiniteResult.h"
 #include "core/slab/History.h"
 
 #include <chrono>
@@ -33,9 +35,8 @@ int runSimulate(const ArgList& argv) {
     if (amplitude < 0.0 || amplitude > 1000.0)
         throw UsageError("--amplitude " + args.text("amplitude") +
                          ": must be between 0 and 1000 g");
-    if (frequency <= 0.0 || frequency > 1000.0)
-        throw UsageError("--frequency " + args.text("frequency") +
-                         ": must be > 0 and at most 1000 Hz");
+    if (const std::string e = frequencyRangeError(frequency); !e.empty())
+        throw UsageError("--frequency " + args.text("frequency") + ": " + e);
     const bool wantHistory = args.has("history");
     const double historyStep = args.number("history-step", 0.05);
     if (historyStep <= 0.0)
@@ -50,6 +51,7 @@ int runSimulate(const ArgList& argv) {
     const SlabResult r = runSlab1D(c, amplitude, frequency, options);
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    requireSound(r, caseName(c, amplitude, frequency));
 
     nlohmann::json j = slabResultJson(r, c.tauRef());
     j["model"] = "slab1d";

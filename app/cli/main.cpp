@@ -1,12 +1,14 @@
 // kinstab-cli: batch work, scripting and automated checks (docs/user-guide.md, "The command line").
-// Exit codes: 0 success, 2 bad input (message names the flag and value), 1 internal failure,
-// 3 an output could not be written (full disk, full or closed stdout, no permission): the
-// message says which and why, and any file that was there before is left as it was.
+// Exit codes: 0 success; 2 bad input (the message names the flag and value); 3 no result could be
+// delivered: an output could not be written (full disk, full or closed stdout, no permission;
+// any file that was there before is left as it was) or a result was not finite or a search reached
+// its bound (kinstab::InternalError, "internal error: ..."); 1 any other failure.
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/HelpText.h"
 #include "core/io/AtomicFile.h"
+#include "core/numerics/InternalError.h"
 #include "core/numerics/VectorState.h"
 
 #include <exception>
@@ -54,6 +56,9 @@ int main(int argc, char** argv) {
     } catch (const UsageError& e) {
         std::cerr << "kinstab-cli " << argv[1] << ": error: " << e.what() << "\n";
         return 2;
+    } catch (const kinstab::InternalError& e) {
+        std::cerr << "kinstab-cli " << argv[1] << ": internal error: " << e.what() << "\n";
+        return 3;
     } catch (const std::exception& e) {
         std::cerr << "kinstab-cli " << argv[1] << ": internal error: " << e.what() << "\n";
         return 1;

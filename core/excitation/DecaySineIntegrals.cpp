@@ -10,6 +10,12 @@ namespace {
 // the first integral and (2/(|z| h))^2 <= 64 (6 bits) in the second: harmless at these scales.
 constexpr double kShortSpan = 0.25;
 constexpr int kSeriesTerms = 24;
+
+// z (re + i im) in plain real arithmetic: std::complex's operator* may go through __muldc3
+// (NaN rules) and is slower.
+std::complex<double> mul(std::complex<double> z, double re, double im) {
+    return {z.real() * re - z.imag() * im, z.real() * im + z.imag() * re};
+}
 } // namespace
 
 DecaySineIntegrals::DecaySineIntegrals(double p, double q, double omega)
@@ -105,15 +111,28 @@ DecaySineIntegrals::Complex DecaySineIntegrals::shortSpan(const Point& o, double
         if (n * rPow * coef < 1e-18 * r) break;
     }
     const double hk = (k == 1) ? h : h * h;
-    const double e = o.near ? o.em1 : std::expm1(d_ * o.t), dh = d_ * h;
+    const double dh = d_ * h;
+    // exp(z_q t0) expm1(d t0) is exp(z_p t0) - exp(z_q t0). Far from the origin (d t0 >= 1) it
+    // is taken as that difference (no cancellation: |exp(z_q t0)| <= |exp(z_p t0)| / e), never
+    // as the product: expm1(d t0) overflows once d t0 > 709.78 while exp(z_q t0) underflows,
+    // and inf x 0 is NaN.
+    if (!o.near) {
+        const Complex lead = o.ep - o.eq;
+        if (end) {
+            // exp(w_p) = 1 + w_p phi_1(w_p); valid for k = 1 only (phi is phi_1 then).
+            const double epR = 1.0 + pr * phiR - pi * phiI, epI = pr * phiI + pi * phiR;
+            *end = mul(lead, epR, epI) + mul(o.eq, dh * expDivR, dh * expDivI);
+        }
+        return (mul(lead, phiR, phiI) + mul(o.eq, dh * divR, dh * divI)) * hk;
+    }
+    const double e = o.em1;
     const double bR = e * phiR + dh * divR, bI = e * phiI + dh * divI;
     if (end) {
-        // exp(w_p) = 1 + w_p phi_1(w_p); valid for k = 1 only (phi is phi_1 then).
         const double epR = 1.0 + pr * phiR - pi * phiI, epI = pr * phiI + pi * phiR;
         const double cR = e * epR + dh * expDivR, cI = e * epI + dh * expDivI;
-        *end = Complex(o.eq.real() * cR - o.eq.imag() * cI, o.eq.real() * cI + o.eq.imag() * cR);
+        *end = mul(o.eq, cR, cI);
     }
-    return Complex(o.eq.real() * bR - o.eq.imag() * bI, o.eq.real() * bI + o.eq.imag() * bR) * hk;
+    return mul(o.eq, bR, bI) * hk;
 }
 
 double DecaySineIntegrals::first(double t0, double h, double* valueAtEnd) const {

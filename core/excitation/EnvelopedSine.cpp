@@ -1,5 +1,7 @@
 #include "core/excitation/EnvelopedSine.h"
 
+#include "core/excitation/FrequencyRange.h"
+#include "core/numerics/InternalError.h"
 #include "core/numerics/RootFinding.h"
 
 #include <array>
@@ -27,7 +29,7 @@ double EnvelopedSine::envelopeAt(double tau) const {
 
 // e, e' and e'' from two exponentials: e^{-q tau} = e^{-p tau} (1 + m), m = expm1(-(q - p) tau),
 // and e = -e^{-p tau} m keeps its digits when q ~ p (NUMERICS.md §4 row 12).
-void EnvelopedSine::envelopeAndSlope(double tau, double& e, double& de, double* d2e) const {
+void EnvelopedSine::envelopeAndSlope(double tau, double& e, double& de) const {
     const double ep = std::exp(-p_ * tau);
     const double m = std::expm1(-(q_ - p_) * tau);
     // e' = -p e^{-p tau} + q e^{-q tau} = e^{-p tau} (d + q m) and
@@ -36,7 +38,16 @@ void EnvelopedSine::envelopeAndSlope(double tau, double& e, double& de, double* 
     const double d = q_ - p_;
     e = -ep * m;
     de = ep * (d + q_ * m);
-    if (d2e) *d2e = ep * (-d * (p_ + q_) - q_ * q_ * m);
+}
+
+// e'/e and e''/e from m = expm1(-(q - p) tau) alone (the forms above divided by e = -e^{-p tau} m):
+// the factor e^{-p tau} cancels before it is formed, so the ratios stay finite where e^{-p tau}
+// underflows (long times, low frequencies), where e'/e computed as a quotient is 0/0.
+void EnvelopedSine::logSlopes(double tau, double& r1, double& r2) const {
+    const double m = std::expm1(-(q_ - p_) * tau);
+    const double d = q_ - p_;
+    r1 = -(d + q_ * m) / m;
+    r2 = (d * (p_ + q_) + q_ * q_ * m) / m;
 }
 
 double EnvelopedSine::accel(double tau) const {
@@ -102,11 +113,11 @@ double EnvelopedSine::halfPeriodPeak(long k) const {
     const double hi = lo + halfPeriod_;
     // d/dtau log|e sin| = e'/e + omega cot(omega tau): strictly decreasing from +inf to -inf.
     auto fdf = [&](double t, double& f, double& df) {
-        double e = 0.0, e1 = 0.0, e2 = 0.0;
-        envelopeAndSlope(t, e, e1, &e2);
+        double r1 = 0.0, r2 = 0.0;
+        logSlopes(t, r1, r2);
         const double s = std::sin(omega_ * t), c = std::cos(omega_ * t);
-        f = e1 / e + omega_ * c / s;
-        df = (e2 * e - e1 * e1) / (e * e) - omega_ * omega_ / (s * s);
+        f = r1 + omega_ * c / s;
+        df = r2 - r1 * r1 - omega_ * omega_ / (s * s);
     };
     const double eps = 1e-12 * halfPeriod_;
     return safeguardedNewton(fdf, lo + eps, hi - eps, 1.0, -1.0, 200, peakGuess(k)).x;
@@ -116,9 +127,9 @@ double EnvelopedSine::halfPeriodPeak(long k) const {
 // cot(omega (tau - lo)) = -lambda/omega: within ~1e-3 of the true one.
 double EnvelopedSine::peakGuess(long k) const {
     const double lo = static_cast<double>(k) * halfPeriod_;
-    double e = 0.0, e1 = 0.0;
-    envelopeAndSlope(lo + 0.5 * halfPeriod_, e, e1);
-    return lo + (0.5 * std::numbers::pi + std::atan(e1 / e / omega_)) / omega_;
+    double lambda = 0.0, r2 = 0.0;
+    logSlopes(lo + 0.5 * halfPeriod_, lambda, r2);
+    return lo + (0.5 * std::numbers::pi + std::atan(lambda / omega_)) / omega_;
 }
 
 // A solver asks for a hump's rising and then its falling crossing: remember the last hump per
@@ -214,18 +225,27 @@ double EnvelopedSine::computeSMax() const {
         const double m = halfPeriodPeak(k);
         return std::abs(envelopeAt(m) * std::sin(omega_ * m));
     };
+    // The largest maximum is within a few half-periods of k0 (the envelope changes little over
+    // one where the sine is fast; where it is slow, k0 is 0 or 1): kMaxWalk ends a walk that a
+    // non-finite value would otherwise keep going, with an error instead of a wrong S_max.
+    constexpr long kMaxWalk = 1000;
     const long k0 = static_cast<long>(std::floor(tauEnvelopePeak_ / halfPeriod_));
     double best = peakOf(k0);
-    for (long k = k0 + 1;; ++k) {
+    bool ended = false;
+    for (long k = k0 + 1; k <= k0 + kMaxWalk && !ended; ++k) {
         const double v = peakOf(k);
-        if (v <= best) break;
+        ended = !(v > best);
+        if (!ended) best = v;
+    }
+    for (long k = k0 - 1; k >= 0 && k >= k0 - kMaxWalk && ended; --k) {
+        const double v = peakOf(k);
+        if (!(v > best)) break;
         best = v;
     }
-    for (long k = k0 - 1; k >= 0; --k) {
-        const double v = peakOf(k);
-        if (v <= best) break;
-        best = v;
-    }
+    if (!ended || !std::isfinite(best) || best <= 0.0)
+        throw InternalError("S_max of the enveloped sine (f t* = " +
+                            std::to_string(omega_ / (2.0 * std::numbers::pi)) +
+                            ") not found: peak " + std::to_string(best));
     return best;
 }
 
@@ -233,8 +253,10 @@ std::string validateEnvelopedSine(double amplitude, double frequencyHz, double t
     std::ostringstream s;
     if (!std::isfinite(amplitude) || amplitude < 0.0 || amplitude > 1000.0)
         s << "amplitude = " << amplitude << " g: must be between 0 and 1000";
-    else if (!std::isfinite(frequencyHz) || frequencyHz <= 0.0 || frequencyHz > 1000.0)
-        s << "frequency = " << frequencyHz << " Hz: must be > 0 and at most 1000";
+    else if (!std::isfinite(frequencyHz) || frequencyHz < kMinFrequencyHz ||
+             frequencyHz > kMaxFrequencyHz)
+        s << "frequency = " << frequencyHz << " Hz: must be between " << kMinFrequencyHz << " and "
+          << kMaxFrequencyHz;
     else if (!std::isfinite(tstar) || tstar <= 0.0 || tstar > 100.0)
         s << "tstar = " << tstar << " s: must be > 0 and at most 100";
     return s.str();

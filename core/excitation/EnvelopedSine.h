@@ -35,6 +35,9 @@ public:
     double peak() const override { return amplitude_; }
 
     double omega() const { return omega_; }
+    double decayP() const { return p_; } // alpha t*
+    double decayQ() const { return q_; } // beta t*
+    double halfPeriod() const { return halfPeriod_; }
     double sMax() const { return sMax_; }
     double amplitude() const { return amplitude_; }
     double envelopeAt(double tau) const; // e(t* tau), unscaled
@@ -46,7 +49,8 @@ public:
     double peakGuess(long k) const;
 
 private:
-    void envelopeAndSlope(double tau, double& e, double& de, double* d2e = nullptr) const;
+    void envelopeAndSlope(double tau, double& e, double& de) const;
+    void logSlopes(double tau, double& r1, double& r2) const; // e'/e and e''/e
     void accelAndSlope(double tau, double& a, double& da) const;
     double computeSMax() const;
     long halfPeriodIndex(double segmentStart) const; // as segmentEnd() cuts the time line

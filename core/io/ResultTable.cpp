@@ -1,5 +1,8 @@
 #include "core/io/ResultTable.h"
 
+#include "core/numerics/InternalError.h"
+
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -22,6 +25,10 @@ std::string sweepTable(const SweepResult& r, double tauRef) {
             const PointResult& p = r.points[k];
             if (!r.done[k])
                 std::snprintf(buf, sizeof buf, " %8s", "-");
+            else if (p.outcome == Outcome::Collapsed && !std::isfinite(p.tauC))
+                throw InternalError("sweep point A = " + std::to_string(r.grid.amplitudes[i]) +
+                                    " g, f = " + std::to_string(r.grid.frequencies[j]) +
+                                    " Hz collapsed with no finite tau_c");
             else if (p.outcome == Outcome::Collapsed)
                 std::snprintf(buf, sizeof buf, " %8.3f", tauRef / p.tauC);
             else if (p.outcome == Outcome::Stable)

@@ -4,8 +4,9 @@
 //  - paper RK4 at H = T/16 ... T/1024;
 //  - the exact solver with its stop/collapse times located to 1e-2 ... 1e-12 (absolute, tau);
 //  - tanh-regularized friction with RK4 at widths (1e-1, 1e-2, 1e-3) mu/omega.
-// Reference: the exact solver with events located to a few ulps (RunOptions::eventTolerance
-// = 0). Its own convergence is reported as its largest difference to the 1e-12 setting.
+// Reference: the exact solver's event sequence (events located to a few ulps) replayed in long
+// double by LongDoubleReplay.h, which solves every event time again in extended precision; it
+// shares the order of events with the solver, not its arithmetic.
 // The GUI's Numerics view plots error against wall time (log-log) from WorkPrecisionStudy.
 
 #include "core/numerics/Timing.h"
@@ -49,8 +50,9 @@ struct WorkPrecisionRow {
 struct WorkPrecisionStudy {
     std::vector<WorkPrecisionCase> cases;
     std::vector<WorkPrecisionRow> rows;
-    std::string reference;           // how the reference is made
-    double referenceConvergence = 0; // max |ref - exact at 1e-12| over all runs (tau_c, delta)
+    std::string reference; // how the reference is made
+    double referenceConvergence =
+        0; // max |ref - exact at tolerance 0| over all runs (tau_c, delta)
 };
 
 struct WorkPrecisionOptions {

@@ -2,6 +2,7 @@
 
 #include "core/numerics/RootFinding.h"
 #include "core/numerics/VectorState.h"
+#include "core/slab/FiniteResult.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,6 +12,10 @@
 namespace kinstab {
 
 namespace {
+
+// Bounds the time line: a run that needs more half-periods (mu tiny against a slowly decaying
+// envelope at a high frequency) is reported as failed after some seconds, not run for hours.
+constexpr long kMaxSegments = 100'000'000;
 
 class ExactRun {
 public:
@@ -97,6 +102,15 @@ private:
     }
     bool event(EventKind kind, int direction) {
         ++r_.work.events;
+        if (!std::isfinite(t_) || !std::isfinite(x_) || !std::isfinite(v_)) {
+            // Never carry a NaN on: the next event search would have no bracket.
+            finish(Outcome::Failed);
+            r_.failure = std::string(kInternalFailure) + "non-finite state at " +
+                         eventKindName(kind) + " event " + std::to_string(r_.work.events) +
+                         " (tau " + std::to_string(t_) + ", delta " + std::to_string(x_) +
+                         ", velocity " + std::to_string(v_) + ")";
+            return false;
+        }
         if (o_.recordEvents) r_.events.push_back({t_, kind, x_, v_, direction});
         if (r_.work.events > o_.maxEvents) {
             finish(Outcome::Failed);
@@ -157,7 +171,17 @@ SlabResult ExactRun::run() {
             return r_;
         }
         const double segEnd = std::min(a_.segmentEnd(segStart), end);
-        ++r_.work.steps;
+        if (!(segEnd > segStart) || ++r_.work.steps > kMaxSegments) {
+            t_ = segStart;
+            finish(Outcome::Failed);
+            r_.failure = !(segEnd > segStart)
+                             ? std::string(kInternalFailure) + "the time line stalls at tau " +
+                                   std::to_string(segStart)
+                             : "more than " + std::to_string(kMaxSegments) +
+                                   " segments (half-periods) before the excitation decays below "
+                                   "mu: set a shorter duration";
+            return r_;
+        }
         if (segment(segStart, segEnd) == Step::Done) return r_;
         segStart = segEnd;
     }
@@ -333,7 +357,9 @@ bool ExactRun::collapsesBy(double tEnd, double xEnd, double vEnd) {
 SlabResult solveExact(const Excitation1D& excitation, const SlabParams& params,
                       const RunOptions& options) {
     clearUpperVectorState(); // see VectorState.h: a host process may leave AVX state dirty
-    return ExactRun(excitation, params, options).run();
+    SlabResult r = ExactRun(excitation, params, options).run();
+    failIfNonFinite(r);
+    return r;
 }
 
 } // namespace kinstab

@@ -1,6 +1,7 @@
 #include "core/slab/PaperRk4Solver.h"
 
 #include "core/numerics/VectorState.h"
+#include "core/slab/FiniteResult.h"
 
 #include <array>
 #include <cmath>
@@ -224,6 +225,7 @@ SlabResult solvePaperRk4(const Excitation1D& excitation, const SlabParams& param
             r->work.rootIterations += total.rootIterations;
             r->work.steps += total.steps;
             r->work.restarts = failures;
+            failIfNonFinite(*r);
             return *r;
         }
         total.accelEvaluations += run.work().accelEvaluations;

@@ -2,6 +2,7 @@
 
 #include "core/codes/Building.h"
 #include "core/codes/CodeResult.h"
+#include "core/excitation/FrequencyRange.h"
 #include "core/excitation/RecordedMotion.h"
 
 namespace kinstab {
@@ -27,7 +28,7 @@ std::optional<VerticalSource> verticalSourceFromName(const std::string& name) {
 std::string validatePlanarSettings(const PlanarSettings& s) {
     try {
         // The same ranges as kinstab-cli's --fy, --ay-ratio and --theta (app/cli/PlanarFlags.cpp).
-        requireAbove("planar.fy_hz", s.fyHz, 0.0, 1000.0, "Hz");
+        requireRange("planar.fy_hz", s.fyHz, kMinFrequencyHz, kMaxFrequencyHz, "Hz");
         requireRange("planar.ay_ratio", s.ayRatio, 0.0, 100.0);
         requireAbove("planar.theta", s.theta, 0.0, 1e6);
     } catch (const InputError& e) {

@@ -1,7 +1,9 @@
 #include "core/slab/Slab1DCase.h"
 
 #include "core/excitation/EnvelopedSine.h"
+#include "core/numerics/InternalError.h"
 #include "core/slab/ExactSolver.h"
+#include "core/slab/FiniteResult.h"
 
 #include <cmath>
 #include <numbers>
@@ -36,11 +38,27 @@ std::string validateCase(const Slab1DCase& c) {
 
 SlabResult runSlab1D(const Slab1DCase& c, double amplitude, double frequencyHz,
                      const RunOptions& options) {
-    const EnvelopedSine a(c.envelope, amplitude, frequencyHz, c.tstar);
-    if (c.solver == SolverKind::Exact) return solveExact(a, c.slab, options);
-    PaperSettings settings;
-    settings.step = 2.0 * std::numbers::pi / a.omega() / c.paperStepsPerPeriod;
-    return solvePaperRk4(a, c.slab, settings, options);
+    try {
+        const EnvelopedSine a(c.envelope, amplitude, frequencyHz, c.tstar);
+        if (c.solver == SolverKind::Exact) return solveExact(a, c.slab, options);
+        PaperSettings settings;
+        settings.step = 2.0 * std::numbers::pi / a.omega() / c.paperStepsPerPeriod;
+        return solvePaperRk4(a, c.slab, settings, options);
+    } catch (const InternalError& e) {
+        // A failed point, not an exception: sweeps run this on worker threads.
+        SlabResult failed;
+        failed.failure = std::string(kInternalFailure) + e.what();
+        return failed;
+    }
+}
+
+std::string caseName(const Slab1DCase& c, double amplitude, double frequencyHz) {
+    std::ostringstream s;
+    s.precision(17);
+    s << "slab1d " << solverName(c.solver) << " solver, A = " << amplitude
+      << " g, f = " << frequencyHz << " Hz, mu = " << c.slab.mu << ", envelope "
+      << c.envelope.name() << ", t* = " << c.tstar << " s";
+    return s.str();
 }
 
 double collapseFactor(double tauRef, const SlabResult& r) {

@@ -29,8 +29,13 @@ double tstarFromWallWidthInches(double inches);
 
 std::string validateCase(const Slab1DCase& c); // empty when fine
 
+// A result whose numbers are all finite, or a Failed one (see FiniteResult.h); never throws
+// for a valid case.
 SlabResult runSlab1D(const Slab1DCase& c, double amplitude, double frequencyHz,
                      const RunOptions& options = {});
+
+// The case and point in words, for messages ("slab1d exact solver, A = 3 g, f = 30 Hz, ...").
+std::string caseName(const Slab1DCase& c, double amplitude, double frequencyHz);
 
 // gamma_c = tau_ref / tau_c, 0 when the slab does not collapse.
 double collapseFactor(double tauRef, const SlabResult& r);

@@ -1,9 +1,17 @@
 #include "core/sweep/CriticalAmplitude.h"
 
+#include "core/numerics/InternalError.h"
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
 
 namespace kinstab {
+
+double smallestTolerance(double maxAmplitude) {
+    return 4.0 * std::numeric_limits<double>::epsilon() * std::abs(maxAmplitude);
+}
 
 CriticalResult criticalAmplitude(const PointFunction& point, double frequencyHz, double mu,
                                  const CriticalSearch& search) {
@@ -23,7 +31,12 @@ CriticalResult criticalAmplitude(const PointFunction& point, double frequencyHz,
     bool found = false;
     // A limit on the scan grid within rounding ((0.65 - 0.6) / 0.01 = 5.000000000000004) is its
     // last point, not one more step that the clamp below would only repeat.
-    const long steps = static_cast<long>(std::ceil((search.to - base) / search.scanStep - 1e-9));
+    const double span = std::ceil((search.to - base) / search.scanStep - 1e-9);
+    if (!(span <= static_cast<double>(kMaxScanPoints)))
+        throw InternalError("critical amplitude scan: " + std::to_string(span) + " points from " +
+                            std::to_string(base) + " g to " + std::to_string(search.to) +
+                            " g exceed " + std::to_string(kMaxScanPoints));
+    const long steps = static_cast<long>(span);
     for (long k = 1; k <= steps; ++k) {
         hi = std::min(search.to, base + static_cast<double>(k) * search.scanStep);
         if (collapses(hi)) {
@@ -33,8 +46,12 @@ CriticalResult criticalAmplitude(const PointFunction& point, double frequencyHz,
         lo = hi;
     }
     if (!found) return r;
-    while (hi - lo > search.tolerance) {
+    // Below the bracket's resolution the midpoint is one of its ends and halving stops there:
+    // a tolerance finer than double precision ends at adjacent doubles, not in a loop.
+    const double tolerance = std::max(search.tolerance, smallestTolerance(hi));
+    for (int halvings = 0; hi - lo > tolerance && halvings < kMaxHalvings; ++halvings) {
         const double mid = 0.5 * (lo + hi);
+        if (!(mid > lo && mid < hi)) break;
         if (collapses(mid))
             hi = mid;
         else

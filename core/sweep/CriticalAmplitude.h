@@ -21,6 +21,15 @@ struct CriticalResult {
     long runs = 0;
 };
 
+// Bounds of the search: a scan of more points than this is refused (an InternalError: inputs
+// are to be checked against it first, as kinstab-cli's --scan-step is); the bisection halves a
+// 0.01 g step to 1e-16 g in 47 halvings, so 200 is never reached by a valid tolerance.
+inline constexpr long kMaxScanPoints = 1'000'000;
+inline constexpr int kMaxHalvings = 200;
+// The finest tolerance double precision resolves near maxAmplitude (4 ulps); a finer one is
+// taken as this.
+double smallestTolerance(double maxAmplitude);
+
 CriticalResult criticalAmplitude(const PointFunction& point, double frequencyHz, double mu,
                                  const CriticalSearch& search = {});
 

@@ -94,10 +94,10 @@ private slots:
     void badField_data() {
         QTest::addColumn<QByteArray>("planar");
         QTest::addColumn<QString>("message");
-        QTest::newRow("negative f_y")
-            << QByteArray(R"({"fy_hz": -1})") << "planar.fy_hz = -1 Hz: must be > 0";
+        QTest::newRow("negative f_y") << QByteArray(R"({"fy_hz": -1})")
+                                      << "planar.fy_hz = -1 Hz: must be between 0.001 and 1000";
         QTest::newRow("zero f_y") << QByteArray(R"({"fy_hz": 0})")
-                                  << "planar.fy_hz = 0 Hz: must be > 0";
+                                  << "planar.fy_hz = 0 Hz: must be between 0.001 and 1000";
         QTest::newRow("f_y not a number")
             << QByteArray(R"({"fy_hz": "fast"})") << "planar.fy_hz: expected a number";
         QTest::newRow("negative ratio") << QByteArray(R"({"ay_ratio": -0.5})")
