@@ -416,31 +416,37 @@ void MainWindow::exportSurface() {
                                      tr("CSV (*.csv);;JSON (*.json)"));
     if (path.isEmpty()) return;
     std::string text;
-    if (path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive)) {
-        using nlohmann::json;
-        json j = sweepJson(sweep, sweepCase.tauRef());
-        j["model"] = "slab1d";
-        j["solver"] = solverName(sweepCase.solver);
-        j["envelope"] = {{"name", sweepCase.envelope.name()},
-                         {"alpha", sweepCase.envelope.alpha},
-                         {"beta", sweepCase.envelope.beta},
-                         {"scale", tauScaleName(sweepCase.scale)}};
-        j["mu"] = sweepCase.slab.mu;
-        j["tstar"] = sweepCase.tstar;
-        j["limit"] = sweepCase.slab.limit;
-        if (sweepPlanar) {
-            const PlanarCase& c = *sweepPlanar;
-            j.update({{"model", "planar"},
-                      {"solver", "dop853"},
-                      {"fy", c.fyHz},
-                      {"ay_ratio", c.ayRatio},
-                      {"theta", c.slab.theta},
-                      {"normalization", normalizationName(c.normalization)},
-                      {"vertical_peak_g", c.vertical ? json(c.vertical->peak()) : json()}});
+    try { // the writers refuse a non-finite number where one is promised
+        if (path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive)) {
+            using nlohmann::json;
+            json j = sweepJson(sweep, sweepCase.tauRef());
+            j["kinstab_version"] = KINSTAB_VERSION;
+            j["model"] = "slab1d";
+            j["solver"] = solverName(sweepCase.solver);
+            j["envelope"] = {{"name", sweepCase.envelope.name()},
+                             {"alpha", sweepCase.envelope.alpha},
+                             {"beta", sweepCase.envelope.beta},
+                             {"scale", tauScaleName(sweepCase.scale)}};
+            j["mu"] = sweepCase.slab.mu;
+            j["tstar"] = sweepCase.tstar;
+            j["limit"] = sweepCase.slab.limit;
+            if (sweepPlanar) {
+                const PlanarCase& c = *sweepPlanar;
+                j.update({{"model", "planar"},
+                          {"solver", "dop853"},
+                          {"fy", c.fyHz},
+                          {"ay_ratio", c.ayRatio},
+                          {"theta", c.slab.theta},
+                          {"normalization", normalizationName(c.normalization)},
+                          {"vertical_peak_g", c.vertical ? json(c.vertical->peak()) : json()}});
+            }
+            text = j.dump(1) + "\n";
+        } else {
+            text = sweepCsv(sweep, sweepCase.tauRef());
         }
-        text = j.dump(1) + "\n";
-    } else {
-        text = sweepCsv(sweep, sweepCase.tauRef());
+    } catch (const std::exception& e) {
+        QMessageBox::warning(this, tr("Export surface"), QString::fromStdString(e.what()));
+        return;
     }
     // Atomic: a failed write leaves the old file alone (ui/AtomicSave.h).
     if (const QString e = saveAtomically(path, QByteArray::fromStdString(text)); !e.isEmpty())

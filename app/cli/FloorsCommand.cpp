@@ -83,8 +83,7 @@ int runFloors(const ArgList& argv) {
     j["damping"] = in.settings.damping;
     j["wall_time_s"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (args.has("history-csv"))
-        writeOutput(args, "history-csv", floorHistoryCsv(a, in.ground));
+    if (args.has("history-csv")) writeOutput(args, "history-csv", floorHistoryCsv(a, in.ground));
     std::cout << jsonText(j, 2) << "\n";
     return 0;
 }

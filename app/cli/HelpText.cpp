@@ -157,10 +157,12 @@ const char* kReport =
 
 const char* kFloors =
     "usage: kinstab-cli floors --project FILE [--record FILE] [--stiffness uniform|weight]\n"
-    "                          [--damping Z] [--slab-level N] [--history-csv FILE] [--no-critical]\n"
+    "                          [--damping Z] [--slab-level N] [--history-csv FILE] "
+    "[--no-critical]\n"
     "The building as a shear building (one level a degree of freedom, all modes): peak floor\n"
     "accelerations under a ground record, the ASCE 7-22 and EN 1998-1 floor demands per level,\n"
-    "the critical PGA at which the slab on each level falls, and the verdicts at the slab's level.\n"
+    "the critical PGA at which the slab on each level falls, and the verdicts at the slab's "
+    "level.\n"
     "  --project FILE               a kinstab project (.json)\n"
     "  --record FILE                the ground record [the project's excitation.record]\n"
     "  --stiffness uniform|weight   storey stiffness profile [the project's, else uniform]\n"

@@ -104,8 +104,9 @@ int runSimulateRecord(const Args& args) {
     if (args.has("history")) {
         if (const std::string e = validateHistoryStep(a.run.tauEnd, historyStep); !e.empty())
             throw UsageError("--history-step " + args.text("history-step", "0.05") + ": " + e);
-        writeOutput(args, "history", historyCsv(sampleHistory(motion, c.slab.mu, a.run.events,
-                                                                   a.run.tauEnd, historyStep)));
+        writeOutput(
+            args, "history",
+            historyCsv(sampleHistory(motion, c.slab.mu, a.run.events, a.run.tauEnd, historyStep)));
     }
     std::cout << jsonText(j, 2) << "\n";
     return 0;

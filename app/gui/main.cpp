@@ -17,9 +17,10 @@ namespace {
 
 const QCommandLineOption kShot("screenshot", "Run the sweep, save the window to FILE and quit.",
                                "FILE");
-const QCommandLineOption kScenario(
-    "scenario", "With --screenshot: one step after the sweep (open:PROJECT, codes, mu, cancel).",
-    "STEP");
+const QCommandLineOption
+    kScenario("scenario",
+              "With --screenshot: one step after the sweep (open:PROJECT, codes, mu, cancel).",
+              "STEP");
 
 void describe(QCoreApplication& app, QCommandLineParser& parser) {
     QCoreApplication::setApplicationName("kinstab");

@@ -1,5 +1,6 @@
 #include "core/sweep/Grid.h"
 
+#include "core/excitation/FrequencyRange.h"
 #include "core/io/InputLimits.h"
 #include "core/io/TextInput.h"
 
@@ -93,8 +94,8 @@ std::string validateGrid(const SweepGrid& g) {
         if (!std::isfinite(a) || a < 0.0 || a > 1000.0)
             return "amplitudes: " + formatDouble(a) + " g is out of range (0 to 1000)";
     for (double f : g.frequencies)
-        if (!std::isfinite(f) || f <= 0.0 || f > 1000.0)
-            return "frequencies: " + formatDouble(f) + " Hz is out of range (> 0, at most 1000)";
+        if (!std::isfinite(f) || !frequencyRangeError(f).empty())
+            return "frequencies: " + formatDouble(f) + " Hz " + frequencyRangeError(f);
     // Each axis may be long; the product is what a sweep computes and stores.
     if (g.amplitudes.size() > limits::kMaxGridPoints / g.frequencies.size())
         return "amplitudes: " + std::to_string(g.amplitudes.size()) + " amplitudes x " +
