@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Configure and build kinstab into ${BUILD_DIR:-build} (extra CMake arguments pass through).
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds the libFuzzer harnesses (tests/fuzz) with clang under ASan + UBSan into build-fuzz,
 # cuts seed corpora from the shipped files, replays tests/fuzz/regressions, then fuzzes each
 # reader for FUZZ_SECONDS (default 30). Any crash, leak of an exception or sanitizer report

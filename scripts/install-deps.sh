@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Debian 12 packages kinstab needs to build, test and write reports (SPEC §1).
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Debian 12 packages kinstab needs to build, test and write reports (README.md "Layout").
 set -euo pipefail
 packages=(cmake g++ make qt6-base-dev qt6-charts-dev qt6-datavisualization-dev qt6-declarative-dev
           qt6-svg-dev libqt6opengl6-dev libeigen3-dev nlohmann-json3-dev xvfb xauth libgl1-mesa-dri

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The main job: install, build, check the paper's 16-story building (Furgerson 1980 ch. V) and
 # write its PDF design report to paper-16-story.pdf.
 set -euo pipefail

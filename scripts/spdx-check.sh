@@ -27,5 +27,5 @@ while IFS= read -r f; do
   esac
   chmod --reference="$f" "$f.spdx"
   mv "$f.spdx" "$f"
-done < <(git ls-files -- '*.cpp' '*.h' '*.sh' 'CMakeLists.txt' '*/CMakeLists.txt' '.ci/run')
+done < <(git ls-files -- '*.cpp' '*.h' '*.sh' '*.py' '*.pyi' 'CMakeLists.txt' '*/CMakeLists.txt' '.ci/run')
 exit $missing

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Install, build, and run every test: offscreen for most, under Xvfb for the few that need OpenGL.
 set -euo pipefail
 cd "$(dirname "$0")/.."

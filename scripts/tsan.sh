@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # ThreadSanitizer run of the threaded sweep: runSweep's worker threads, its progress counter and
 # its cancel (core/sweep/Sweep.cpp; tst_sweep). Builds only that test into build-tsan; any data
 # race fails. The GUI's sweep worker (ui/SweepRunner.cpp) is not run here: it hands its job to

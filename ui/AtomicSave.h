@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The GUI's saves and exports go through core's atomic writer (core/io/AtomicFile.h), as the
 // CLI's do: the old file stays until the new one is complete, and a full disk is reported.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // `kinstab --screenshot FILE`: run the sweep of the open inputs, pick the paper's Fig. 35 point
 // (A = 1.0 g, f = 1.125 Hz, or the nearest grid point), save the window as an image and quit.

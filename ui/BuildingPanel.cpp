@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/BuildingPanel.h"
 
 #include "core/codes/Atc306.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Building: what every code needs (units, stories, height, plan dimension, period entered or
 // estimated by each code's formula, lateral system, occupancy). Story weights and heights that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Writes a chart as PNG (raster, 2x) or SVG (vector, via QSvgGenerator), by file suffix.
 

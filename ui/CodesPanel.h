@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Codes: which building codes to check and each code's own inputs (zone, soil or site class,
 // force-reduction factor, importance). A code is checked when its box is ticked.

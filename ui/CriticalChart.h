@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The critical amplitude A_crit(f) — below it the slab does not fall — with each code's
 // top-floor ratio as a horizontal line and the building's frequency as a vertical one. A code

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The frame the docked charts share (slice, histories, A_crit(f)): legend on one side, a title,
 // antialiasing, and a small minimum size so that their docks can shrink.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A small plot of the acceleration envelope e(t), normalized to its peak, with the rise, peak
 // and duration times marked: what the chosen preset or alpha/beta means as an earthquake.

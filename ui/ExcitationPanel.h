@@ -1,7 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Excitation: one of the paper's envelope presets (Table 4) or a user alpha/beta, with a plot
 // of the envelope and its characteristic times; or a record (RecordInput: file, preview, floor
-// filter, target peak) instead of the enveloped sine (SPEC §10).
+// filter, target peak) instead of the enveloped sine (docs/user-guide.md).
 
 #include "core/excitation/Envelope.h"
 #include "core/excitation/RecordExcitation.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The charts of the Floors view (ui/FloorsView.h), also drawn into the report:
 //  - the height profile of the peak floor acceleration: the model's for the record, the SDOF

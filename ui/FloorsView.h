@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The Floors view (issue 19): the project's building as a shear building under a ground record.
 // Left, the height profile of the peak floor acceleration (the model's for the record, the

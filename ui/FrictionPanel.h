@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The friction-law calibration panel (Furgerson 1980 ch. III, SPEC §8): load triplet shear
-// tests (CSV, or the paper's Table 1 built in), see the test curves and fitted decay laws per
+// The friction-law calibration panel (Furgerson 1980 ch. III, docs/theory.md §8): load triplet
+// shear tests (CSV, or the paper's Table 1 built in), see the test curves and fitted decay laws per
 // confining pressure (Figs. 18-20), V_inf or tau_inf against CP with the Coulomb line (Fig. 21),
 // the table of fits, and send the resulting mu_inf to the stability model ("Use this mu").
 // Self-contained: the main window only docks it and connects useMu.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Grid: the ranges and steps of amplitude A and frequency f that a sweep covers.
 

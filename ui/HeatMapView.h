@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The 2D stand-in for the 3D γc surface when OpenGL is not available (headless, remote
 // desktops): γc(A, f) as a colour map with the same overlays, selectable by click.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The history of one picked point (the paper's Fig. 35): relative displacement δ(τ), the floor
 // acceleration a(τ) inside its envelope, the ±μ slip thresholds, and the slip intervals shaded.

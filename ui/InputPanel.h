@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Base of the input panels: a form of checked fields. A panel is valid when all its fields are;
 // MainWindow disables Run while any panel is not.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The main window: input panels and the verdict in docks on the left, the γc surface in the
 // middle, the linked charts in docks below. Run/Cancel drive a SweepRunner.

@@ -1,5 +1,6 @@
-// MainWindow, continued: the planar model (SPEC §10 "model (1-DOF / planar)"). The sweep, the
-// A_crit(f) curve and the design check run planarPoint of the project's planar case; a picked
+// SPDX-License-Identifier: GPL-3.0-or-later
+// MainWindow, continued: the planar model (docs/user-guide.md "model (1-DOF / planar)"). The sweep,
+// the A_crit(f) curve and the design check run planarPoint of the project's planar case; a picked
 // point shows its planar history (δx, δy). Everything else (surface, overlays, slice, verdict)
 // is model-blind.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MainWindow, continued: the project (New/Open/Save/Save As, recent files), the code ratios
 // that follow the building, and what QSettings keeps between sessions.
 

@@ -1,7 +1,8 @@
-// MainWindow, continued: a record as the excitation (SPEC §7, §10). Run computes, in the
-// record runner's worker, the single run of the slab under the scaled record and the critical
-// scale; the history chart shows delta(tau) and the motion, the verdict panel compares the
-// critical peak with the code ratios. A record has no (A, f) surface.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// MainWindow, continued: a record as the excitation (docs/theory.md §7; docs/user-guide.md). Run
+// computes, in the record runner's worker, the single run of the slab under the scaled record and
+// the critical scale; the history chart shows delta(tau) and the motion, the verdict panel compares
+// the critical peak with the code ratios. A record has no (A, f) surface.
 
 #include "ui/ExcitationPanel.h"
 #include "ui/HistoryChart.h"

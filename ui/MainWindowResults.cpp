@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MainWindow, continued: the shown results against the inputs now on the panels
 // (ui/ResultState.h). New and Open clear every result; an input change re-judges the verdicts
 // where the kept A_crit serves and dims every result made with other inputs, with the line

@@ -1,7 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Model: the 1-DOF slab (across the walls) or the planar 2-DOF slab with vertical motion
-// (SPEC §10 "model (1-DOF / planar)", Furgerson 1980 ch. VI). The planar fields (f_y, A_y/A_x,
-// Θ, normalization, vertical motion) are shown, checked and gate Run only when planar is chosen.
+// (docs/user-guide.md "model (1-DOF / planar)", Furgerson 1980 ch. VI). The planar fields (f_y,
+// A_y/A_x, Θ, normalization, vertical motion) are shown, checked and gate Run only when planar is
+// chosen.
 
 #include "core/slab/PlanarSettings.h"
 #include "ui/InputPanel.h"

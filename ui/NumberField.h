@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A number input with its check: the reason it is invalid is shown beside the field, so the
 // engineer sees what to fix without pressing Run first.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The history of one picked point of a planar surface: δx (across the walls, collapse at
 // ±limit) and δy (along them, collapse at ±Θ) against τ, on their own axes because Θ is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One picked point of a planar surface, run again with its path recorded (a sweep keeps only
 // tau_c, the outcome and the exit side): the relative displacements δx (across) and δy (along

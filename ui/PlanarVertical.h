@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The vertical motion a planar project names (core/slab/PlanarSettings.h), read for a run: the
 // shipped RSN68 UP from the application's resources (:/records/...), or a record file. Shared by

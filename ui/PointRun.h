@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One picked point of the surface, run again on demand with its events recorded and its
-// history sampled (a sweep keeps only tau_c and the outcome, SPEC §11).
+// history sampled (a sweep keeps only tau_c and the outcome, docs/theory.md §6.6).
 
 #include "core/slab/History.h"
 #include "core/slab/Slab1DCase.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The File > Recent submenu, kept in QSettings (most recent first, at most maxFiles).
 

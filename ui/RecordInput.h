@@ -1,8 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The record half of the Excitation panel (SPEC §7, §10): an accelerogram file with a preview
-// (ground, floor through the floor filter, spectra: RecordPreview, whose floor-filter switch, T
-// and zeta are the excitation's), and the peak (g) the motion under the slab is scaled to. A
-// file that cannot be read shows its reason beside the file field.
+// The record half of the Excitation panel (docs/theory.md §7; docs/user-guide.md): an accelerogram
+// file with a preview (ground, floor through the floor filter, spectra: RecordPreview, whose
+// floor-filter switch, T and zeta are the excitation's), and the peak (g) the motion under the slab
+// is scaled to. A file that cannot be read shows its reason beside the file field.
 
 #include "core/excitation/RecordExcitation.h"
 

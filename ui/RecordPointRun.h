@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The record run as a PointRun for HistoryChart: delta(tau), the scaled motion under the slab,
 // the +-mu slip thresholds and the fitted envelope (Fig. 27) scaled like the motion.

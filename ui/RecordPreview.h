@@ -1,7 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// A preview of an accelerogram for record import (SPEC §7, §10; paper Figs. 25-27): the ground
-// record, the floor motion through the floor filter with |floor acc| and its fitted envelope,
-// and the normalized Fourier amplitude spectra of both. Standalone: the main window docks it.
+// A preview of an accelerogram for record import (docs/theory.md §7; docs/user-guide.md; paper
+// Figs. 25-27): the ground record, the floor motion through the floor filter with |floor acc| and
+// its fitted envelope, and the normalized Fourier amplitude spectra of both. Standalone: the main
+// window docks it.
 
 #include "core/excitation/EnvelopeFit.h"
 #include "core/excitation/FloorFilter.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Runs a record analysis off the GUI thread (core/sweep/RecordAnalysis.h: the single run, the
 // critical scale and the verdicts), like SweepRunner: QtConcurrent::run with a QPromise adapted

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The Records tab: import an accelerogram (AT2, COSMOS, CSMIP, text) and preview the ground
 // motion, the floor motion through the floor filter, the spectra and the fitted envelope

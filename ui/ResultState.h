@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Every result the main window shows, each bound to a fingerprint of the inputs that made it,
 // so that no result is ever shown under inputs it was not computed with.

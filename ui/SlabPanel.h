@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Slab & walls: the wall width (or t* directly), the bearing limit, the friction coefficient
 // and the solver. Everything of the 1-DOF case except the excitation.

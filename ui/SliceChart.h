@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // γc and τc against amplitude A at one frequency (the paper's Fig. 34): how steeply the
 // collapse factor rises past the critical amplitude.

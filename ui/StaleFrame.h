@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A frame around a result view that can mark it stale: the view is dimmed and a line above it
 // says "inputs changed — Run to update", until the view shows a result of the current inputs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What the γc surface shows, as plain values: the grid, γc per point (NaN where not yet
 // computed) and the overlays (code ratios, the building's frequency, A_crit(f)).

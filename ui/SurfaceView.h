@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The γc(A, f) surface. All Qt Data Visualization code lives in this class (the module is
 // deprecated after Qt 6.10, so a port touches one file). Without an OpenGL context it shows

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Runs a sweep (and the A_crit(f) curve) off the GUI thread: QtConcurrent::run with a QPromise,
 // adapted to core's SweepControl. Partial results are polled a few times a second (never per

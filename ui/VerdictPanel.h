@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The verdict: per code, the top-floor ratio F_top / w_top, the critical amplitude A_crit at
 // the building's frequency, the margin A_crit / ratio and what governs, in words.

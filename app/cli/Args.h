@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Command-line flags of one subcommand: --name value pairs, checked against the flags the
 // subcommand declares. Every problem is a UsageError naming the flag and the value (exit 2).

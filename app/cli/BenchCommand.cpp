@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // kinstab-cli bench: the surface speed target (exact against paper at T/16, one process);
 // with --model planar, the planar surface against the 1-DOF one on the same grid.
 

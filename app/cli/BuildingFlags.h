@@ -1,6 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The building and code flags of `kinstab-cli codes` (SPEC §12): a code is selected by its key
-// flag (--zone UBC 1976, --av/--map-area ATC 3-06, --ubc97-zone UBC 1997, --sds ASCE 7-22,
+// The building and code flags of `kinstab-cli codes` (docs/user-guide.md "The command line"): a
+// code is selected by its key flag (--zone UBC 1976, --av/--map-area ATC 3-06, --ubc97-zone UBC
+// 1997, --sds ASCE 7-22,
 // --ag EC8); its other inputs are then required or take the code's documented default.
 
 #include "app/cli/Args.h"

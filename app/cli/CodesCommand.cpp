@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/cli/Args.h"
 #include "app/cli/BuildingFlags.h"
 #include "app/cli/Commands.h"

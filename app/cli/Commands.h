@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One function per kinstab-cli subcommand. Each returns the exit code; a UsageError thrown
 // from one becomes exit 2 in main.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // kinstab-cli floors: the building's own floor motions under a ground record (shear-building
 // model, all modes), the codes' floor-acceleration demands per level, the critical PGA at which
 // the slab on each level falls and the verdicts at the slab's level

@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // kinstab-cli friction: the friction-law calibration of Furgerson (1980) ch. III on triplet
-// shear test data (SPEC §8): decay-law fits per configuration and CP, the outlier test, the
-// confidence intervals and mu_inf, as JSON.
+// shear test data (docs/theory.md §8): decay-law fits per configuration and CP, the outlier test,
+// the confidence intervals and mu_inf, as JSON.
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The model flags shared by simulate, surface and critical (SPEC §12).
+// The model flags shared by simulate, surface and critical (docs/user-guide.md "The command line").
 
 #include "app/cli/Args.h"
 #include "core/slab/Slab1DCase.h"

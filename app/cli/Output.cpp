@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every file kinstab-cli writes goes through here: stdout for "-" (or no -o), otherwise the
 // atomic writer of core/io/AtomicFile.h. A bad name is a UsageError (exit 2) found before any
 // work; a write that fails (full disk, full stdout) is a WriteError (exit 3).

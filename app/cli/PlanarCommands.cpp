@@ -1,6 +1,7 @@
-// simulate and surface with --model planar (SPEC §12): the JSON of the 1-DOF model with keys
-// added, never renamed: exit_side ("across" | "along", null unless collapsed), tau_lift_off,
-// max_abs_delta_y, residual_delta_y, and the planar case.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// simulate and surface with --model planar (docs/user-guide.md "The command line"): the JSON of the
+// 1-DOF model with keys added, never renamed: exit_side ("across" | "along", null unless
+// collapsed), tau_lift_off, max_abs_delta_y, residual_delta_y, and the planar case.
 
 #include "app/cli/Commands.h"
 #include "app/cli/JsonText.h"

@@ -1,5 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The planar model's flags (SPEC §12): --ay-ratio R (0.9), --fy F (Hz, required), --theta X (20),
+// The planar model's flags (docs/user-guide.md "The command line"): --ay-ratio R (0.9), --fy F (Hz,
+// required), --theta X (20),
 // --vertical FILE (none: gravity only), --normalization product|envelope (product).
 
 #include "app/cli/Args.h"

@@ -1,9 +1,10 @@
-// kinstab-cli simulate --model planar --record FILE [--record-y FILE] (SPEC §5, §7, §12): the
-// planar slab with a_x from the record (scaled by --amplitude PEAK_G or --scale-factor F) and
-// a_y from a second component scaled by the same factor (none: no motion along the walls),
-// both through the floor filter when --floor-period is given, and the vertical --vertical FILE
-// as for the sine. The JSON is simulate's planar object with the record keys of
-// simulate --record.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// kinstab-cli simulate --model planar --record FILE [--record-y FILE] (docs/theory.md §5, §7;
+// docs/user-guide.md "The command line"): the planar slab with a_x from the record (scaled by
+// --amplitude PEAK_G or --scale-factor F) and a_y from a second component scaled by the same factor
+// (none: no motion along the walls), both through the floor filter when --floor-period is given,
+// and the vertical --vertical FILE as for the sine. The JSON is simulate's planar object with the
+// record keys of simulate --record.
 
 #include "app/cli/Commands.h"
 #include "app/cli/JsonText.h"

@@ -1,4 +1,6 @@
-// kinstab-cli precision: the work-precision study (SPEC §11), printed as a table, CSV with -o.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// kinstab-cli precision: the work-precision study (docs/theory.md §6.6), printed as a table, CSV
+// with -o.
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"

@@ -1,5 +1,7 @@
-// kinstab-cli record: what a record file holds (SPEC §7) — summary, Fourier amplitude spectrum
-// peaks of the ground (and floor) motion and the envelope fitted over |floor acc| (Figs. 25-27).
+// SPDX-License-Identifier: GPL-3.0-or-later
+// kinstab-cli record: what a record file holds (docs/theory.md §7) — summary, Fourier amplitude
+// spectrum peaks of the ground (and floor) motion and the envelope fitted over |floor acc| (Figs.
+// 25-27).
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"

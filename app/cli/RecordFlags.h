@@ -1,6 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Flags that name an accelerogram file and how to read it (SPEC §7, §12), shared by
-// `simulate --record`, `record --file` and the planar model's `--vertical`:
+// Flags that name an accelerogram file and how to read it (docs/theory.md §7; docs/user-guide.md
+// "The command line"), shared by `simulate --record`, `record --file` and the planar model's
+// `--vertical`:
 //   --record-format auto|at2|cosmos|csmip|values|time-accel   --record-dt S
 //   --record-unit g|m/s2|cm/s2|ft/s2|in/s2   --record-channel N|NAME (CSMIP V2)
 //   --floor-period T [--damping Z]: pass the record through the floor filter first.

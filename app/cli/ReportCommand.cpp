@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // kinstab-cli report --project FILE -o FILE.pdf [--page a4|letter] [--figure-grid N]
 // Runs the analyses the report needs and writes the same PDF as the GUI's File → Export
 // report…; `-o -` writes the PDF to stdout and the summary to stderr. Needs no display: a

@@ -1,9 +1,11 @@
-// kinstab-cli simulate --record FILE: the 1-DOF slab driven by a recorded motion (SPEC §3, §12),
-// optionally through the floor filter and scaled to a target peak (--amplitude, g) or by a
-// factor (--scale-factor). The exact solver is exact for the linearly interpolated record;
-// gamma_c uses the characteristic times of the envelope fitted to the driving motion (Fig. 27),
-// or 1 with --scale one. --critical adds the critical scale: the smallest peak (g) of the scaled
-// motion that collapses the slab (--max-amplitude, --scan-step, --tolerance as for `critical`).
+// SPDX-License-Identifier: GPL-3.0-or-later
+// kinstab-cli simulate --record FILE: the 1-DOF slab driven by a recorded motion (docs/theory.md
+// §3; docs/user-guide.md "The command line"), optionally through the floor filter and scaled to a
+// target peak (--amplitude, g) or by a factor (--scale-factor). The exact solver is exact for the
+// linearly interpolated record; gamma_c uses the characteristic times of the envelope fitted to the
+// driving motion (Fig. 27), or 1 with --scale one. --critical adds the critical scale: the smallest
+// peak (g) of the scaled motion that collapses the slab (--max-amplitude, --scan-step, --tolerance
+// as for `critical`).
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"

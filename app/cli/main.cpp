@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // kinstab-cli: batch work, scripting and automated checks (docs/user-guide.md, "The command line").
 // Exit codes: 0 success; 2 bad input (the message names the flag and value); 3 no result could be
 // delivered: an output could not be written (full disk, full or closed stdout, no permission;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The floor-motion check of a project, shared by `kinstab-cli floors`, the GUI's Floors view and
 // the report: the shear-building model of the building, every level's motion under a ground

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The absolute acceleration of every level of a shear building under a ground record, by modal
 // superposition of all modes with damping ratio zeta in each:

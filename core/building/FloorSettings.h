@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The inputs of the floor-motion check that are not the building's or a code's: where the slab
 // sits, how the storey stiffness is distributed, the modal damping, the ASCE 7-22 overstrength

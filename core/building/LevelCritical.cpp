@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/building/LevelCritical.h"
 
 #include "core/sweep/CriticalRecordScale.h"

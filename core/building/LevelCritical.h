@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The stability of a slab at each level: the ground record's critical peak ground acceleration
 // (PGA) at which the slab on that level falls. The building is linear, so scaling the ground

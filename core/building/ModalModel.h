@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The undamped modes of a shear building, all of them, from K phi = omega^2 M phi (Eigen's
 // generalized self-adjoint solver): periods, mode shapes and participation factors

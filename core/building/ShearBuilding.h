@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The building as a shear building: one horizontal degree of freedom per level (level n = the
 // roof), level masses from the level weights, storeys as springs between levels. Storey i joins

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // ASCE/SEI 7-22 §13.3.1: the horizontal seismic design force on a nonstructural component,
 //   F_p = 0.4 S_DS I_p W_p (H_f / R_mu) (C_AR / R_po),  0.3 S_DS I_p W_p <= F_p <= 1.6 S_DS I_p

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/codes/Asce7_22.h"
 
 #include <algorithm>
@@ -35,7 +36,7 @@ std::string validateAsce7(const Asce7Inputs& in) {
     return {};
 }
 
-// Table 1.5-1 (mapping of occupancy, CODES.md §5.6).
+// Table 1.5-1 (mapping of occupancy, docs/codes.md §5.5).
 int asceRiskCategory(Occupancy o) {
     return occupancyClass(o);
 }
@@ -80,7 +81,7 @@ void addPeriod(CodeResult& r, const Building& b, double sd1) {
         r.periodSource = "formula";
         return;
     }
-    // §12.8.2: the period used may not exceed C_u T_a (CODES.md pitfall 13).
+    // §12.8.2: the period used may not exceed C_u T_a (docs/codes.md §8).
     const double cu = asceUpperLimitCoefficient(sd1);
     r.periodSeconds = std::min(*b.period, cu * ta);
     r.periodSource = *b.period > cu * ta ? "entered, capped at C_u T_a" : "entered";
@@ -104,7 +105,7 @@ CodeResult asce7_22(const Building& b, const Asce7Inputs& in) {
     const double eq5 = std::max(0.044 * in.sds * ie, 0.01); // eq. 12.8-5
     const bool nearFault = in.s1 && *in.s1 >= 0.6;
     const double eq6 = nearFault ? 0.5 * *in.s1 / rie : 0.0; // eq. 12.8-6
-    // Minimum of the spectrum branches first, then the floors (CODES.md pitfall 6).
+    // Minimum of the spectrum branches first, then the floors (docs/codes.md §8).
     const double cs = std::max({std::min(eq2, eq3), eq5, eq6});
     r.trail.push_back({"design spectral acceleration, short", "S_DS", in.sds,
                        "§11.4.5 (entered, site class " + in.siteClass + ")"});

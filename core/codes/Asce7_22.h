@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// ASCE/SEI 7-22 §12.8, equivalent lateral force procedure (CODES.md §5), with the two-period
+// ASCE/SEI 7-22 §12.8, equivalent lateral force procedure (docs/codes.md §5), with the two-period
 // spectrum (S_DS, S_D1, T_L) entered as the USGS service gives it for the site class:
 // C_s = max(min(S_DS/(R/I_e), S_D1/(T R/I_e) or S_D1 T_L/(T² R/I_e)), 0.044 S_DS I_e, 0.01
 // [, 0.5 S_1/(R/I_e) where S_1 ≥ 0.6]), T ≤ C_u T_a, F_x = C_vx V with exponent k.

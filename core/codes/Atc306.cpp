@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/codes/Atc306.h"
 
 #include <algorithm>
@@ -25,7 +26,7 @@ std::string validateAtc306(const Atc306Inputs& in) {
     return {};
 }
 
-// Table 1-B: map areas 7 … 3 → 0.40 … 0.10; areas 1–2 → 0.05 (CODES.md §4.2, L for 1–2).
+// Table 1-B: map areas 7 … 3 → 0.40 … 0.10; areas 1–2 → 0.05 (docs/codes.md §4.2, L for 1–2).
 double atcMapAreaCoefficient(int mapArea) {
     static const double a[] = {0.05, 0.05, 0.05, 0.10, 0.15, 0.20, 0.30, 0.40};
     return a[std::clamp(mapArea, 1, 7)];

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// ATC 3-06 (1978) Chapter 4, equivalent lateral force procedure (CODES.md §4):
+// ATC 3-06 (1978) Chapter 4, equivalent lateral force procedure (docs/codes.md §4):
 // C_s = 1.2 A_v S / (R T^(2/3)) ≤ 2.5 A_a / R (≤ 2.0 A_a / R on S3 soil with A_a ≥ 0.3),
 // F_x = C_vx V with C_vx = w_x h_x^k / Σ w_i h_i^k. No importance factor, no top force.
 

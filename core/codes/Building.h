@@ -1,7 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The building an engineer describes once for every code (SPEC §9, CODES.md §0): stories with
-// their weights and heights (uniform by default), total height h_n, plan dimension D parallel to
-// the force, period entered or left to each code's own formula, units, system, occupancy.
+// The building an engineer describes once for every code (docs/theory.md §9, docs/codes.md §0):
+// stories with their weights and heights (uniform by default), total height h_n, plan dimension D
+// parallel to the force, period entered or left to each code's own formula, units, system,
+// occupancy.
 
 #include <optional>
 #include <stdexcept>

@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// What every code module returns (SPEC §9): base shear coefficient, story forces, the top-floor
-// ratio F_top / w_top and the trail of every coefficient used, with its clause.
+// What every code module returns (docs/theory.md §9): base shear coefficient, story forces, the
+// top-floor ratio F_top / w_top and the trail of every coefficient used, with its clause.
 
 #include "core/codes/Building.h"
 

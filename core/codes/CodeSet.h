@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The codes a project selects, each with its own inputs: a code is selected when its inputs
 // are present. Runs them all on one building, in a fixed order.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The design check of the paper's chapter V: for each code, compare the top-floor ratio
 // F_top / w_top with the critical amplitude A_crit(f) of the 1-DOF slab at the building's

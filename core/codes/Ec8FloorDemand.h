@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // EN 1998-1:2004 §4.3.5.2: the seismic coefficient of a secondary element (appendage) at
 // height z of a building of height H,

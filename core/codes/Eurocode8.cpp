@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/codes/Eurocode8.h"
 
 #include <algorithm>
@@ -41,7 +42,7 @@ std::optional<Ec8Ground> ec8GroundFromName(const std::string& s) {
     return std::nullopt;
 }
 
-// Tables 3.2 (Type 1) and 3.3 (Type 2), recommended values (CODES.md §6.1).
+// Tables 3.2 (Type 1) and 3.3 (Type 2), recommended values (docs/codes.md §6.1).
 Ec8SpectrumParameters ec8Spectrum(Ec8Ground g, int type) {
     static const Ec8SpectrumParameters t1[] = {{1.00, 0.15, 0.40, 2.0},
                                                {1.20, 0.15, 0.50, 2.0},

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// EN 1998-1:2004 lateral force method of analysis, §4.3.3.2 (CODES.md §6), with the
+// EN 1998-1:2004 lateral force method of analysis, §4.3.3.2 (docs/codes.md §6), with the
 // recommended spectrum parameters (Tables 3.2, 3.3): F_b = S_d(T_1) m λ,
 // F_i = F_b z_i m_i / Σ z_j m_j (linear mode shape).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A code's peak floor acceleration (PFA) demand on a rigid element supported at each level,
 // in g, with the coefficient trail, and its verdict against the critical floor peak of the

@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The design check with a record (SPEC §9 with §7): each code's top-floor ratio against the
-// critical peak of the scaled record (core/sweep/CriticalRecordScale.h) instead of A_crit(f) of
+// The design check with a record (docs/theory.md §9 with §7): each code's top-floor ratio against
+// the critical peak of the scaled record (core/sweep/CriticalRecordScale.h) instead of A_crit(f) of
 // the enveloped sine. A record carries its own frequency content, so one critical peak serves
 // every code; the verdict rule is the sine's (judgeCode).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/codes/Ubc1976.h"
 
 #include <algorithm>
@@ -23,7 +24,7 @@ std::string validateUbc1976(const Ubc1976Inputs& in) {
 }
 
 // §2312(c): zone 4 added in 1976 with Z = 1; zones 1–3 3/16, 3/8, 3/4. Zone 0 has no
-// seismic force requirement (CODES.md §2.2).
+// seismic force requirement (docs/codes.md §2.2).
 double ubc1976ZoneFactor(int zone) {
     static const double z[] = {0.0, 3.0 / 16.0, 3.0 / 8.0, 3.0 / 4.0, 1.0};
     return z[std::clamp(zone, 0, 4)];
@@ -51,7 +52,7 @@ double ubc1976FormulaPeriod(const Building& b) {
 }
 
 // §2312(d): S from r = T/T_s, 1.5 when T_s is not established. T ≥ 0.3 s in S, T_s within
-// [0.5, 2.5] s, S ≥ 1.0 (CODES.md §2.7, pitfall 3).
+// [0.5, 2.5] s, S ≥ 1.0 (docs/codes.md §2.7, §8).
 double ubc1976SiteFactor(double period, std::optional<double> sitePeriod) {
     if (!sitePeriod) return 1.5;
     const double r = std::max(period, 0.3) / std::clamp(*sitePeriod, 0.5, 2.5);

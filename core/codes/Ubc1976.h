@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// UBC 1976 §2312, equivalent static force method (CODES.md §2): V = Z I K C S W,
+// UBC 1976 §2312, equivalent static force method (docs/codes.md §2): V = Z I K C S W,
 // C = 1/(15 √T) ≤ 0.12, S from T/T_s (1.5 when T_s is unknown), C S ≤ 0.14,
 // F_t = 0.07 T V ≤ 0.25 V (0 for T ≤ 0.7 s), F_x = (V − F_t) w_x h_x / Σ w_i h_i.
 

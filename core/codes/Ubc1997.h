@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// UBC 1997 §1630.2, static force procedure at strength level (CODES.md §3.4):
+// UBC 1997 §1630.2, static force procedure at strength level (docs/codes.md §3):
 // V = C_v I W / (R T) ≤ 2.5 C_a I W / R, ≥ 0.11 C_a I W, and in zone 4 ≥ 0.8 Z N_v I W / R;
 // F_t = 0.07 T V ≤ 0.25 V (0 for T ≤ 0.7 s), F_x = (V − F_t) w_x h_x / Σ w_i h_i.
 

@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Integrals of the enveloped sine's shape g(s) = (exp(-p s) - exp(-q s)) sin(w s), 0 <= p < q,
-// over [t0, t0 + h], in closed form and free of cancellation (NUMERICS.md §5.1 "numerical
+// over [t0, t0 + h], in closed form and free of cancellation (docs/theory.md §6.2 "numerical
 // hygiene"; §4 row 12):
 //  - a short span h (grazing slips last microseconds): the increments are formed from the
 //    phi-functions phi_k(z h) by their Taylor series, not as a difference of primitives;

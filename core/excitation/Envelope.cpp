@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/excitation/Envelope.h"
 
 #include "core/numerics/RootFinding.h"
@@ -9,7 +10,7 @@
 namespace kinstab {
 
 Envelope Envelope::fromPreset(EnvelopePreset p) {
-    // alpha, beta fitted to Table 4's tau_rise and tau_dur (SPEC §3): round values that
+    // alpha, beta fitted to Table 4's tau_rise and tau_dur (docs/theory.md §3): round values that
     // reproduce the table to 3 digits, surely the originals.
     switch (p) {
     case EnvelopePreset::Fast:

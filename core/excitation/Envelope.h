@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The envelope e(t) = exp(-alpha t) - exp(-beta t) of the paper's floor acceleration
 // (Furgerson 1980, ch. IV) and its three presets.

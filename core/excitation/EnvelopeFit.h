@@ -1,7 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The smooth envelope of a floor motion (paper Fig. 27): c (exp(-alpha t) - exp(-beta t))
 // fitted by least squares to the local peaks of |a(t)| (one per half cycle), which motivates
-// the enveloped sine of SPEC §3. alpha and beta in 1/s, t from the record's start.
+// the enveloped sine of docs/theory.md §3. alpha and beta in 1/s, t from the record's start.
 
 #include "core/io/Accelerogram.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/excitation/EnvelopedSine.h"
 
 #include "core/excitation/FrequencyRange.h"
@@ -28,7 +29,7 @@ double EnvelopedSine::envelopeAt(double tau) const {
 }
 
 // e, e' and e'' from two exponentials: e^{-q tau} = e^{-p tau} (1 + m), m = expm1(-(q - p) tau),
-// and e = -e^{-p tau} m keeps its digits when q ~ p (NUMERICS.md §4 row 12).
+// and e = -e^{-p tau} m keeps its digits when q ~ p (docs/theory.md §6.6 case 12).
 void EnvelopedSine::envelopeAndSlope(double tau, double& e, double& de) const {
     const double ep = std::exp(-p_ * tau);
     const double m = std::expm1(-(q_ - p_) * tau);
@@ -96,7 +97,7 @@ long EnvelopedSine::halfPeriodIndex(double segmentStart) const {
 
 double EnvelopedSine::segmentEnd(double segmentStart) const {
     // Half-periods of the sine: on each, |sin| and the envelope are log-concave, so |a| is
-    // unimodal and crosses a level at most twice (NUMERICS.md §5.2).
+    // unimodal and crosses a level at most twice (docs/theory.md §6.3).
     const double k = static_cast<double>(halfPeriodIndex(segmentStart));
     double end = (k + 1.0) * halfPeriod_;
     if (end <= segmentStart) end = (k + 2.0) * halfPeriod_;

@@ -1,5 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The paper's floor acceleration (Furgerson 1980, ch. IV; SPEC §3), in g, of dimensionless time:
+// The paper's floor acceleration (Furgerson 1980, ch. IV; docs/theory.md §3), in g, of
+// dimensionless time:
 //   a(tau) = (A / S_max) e(t* tau) sin(omega tau),  e(t) = exp(-alpha t) - exp(-beta t),
 //   omega = 2 pi f t*.
 // Its first and second integrals are elementary, so slip phases are integrated exactly.

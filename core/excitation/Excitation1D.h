@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What the event-driven 1-DOF solver needs to know about a base acceleration a(tau), in g,
 // as a function of dimensionless time. Implementations: EnvelopedSine (closed form),

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The floor filter (paper's eq. 6; SPEC §7): the absolute acceleration of a damped linear
+// The floor filter (paper's eq. 6; docs/theory.md §7): the absolute acceleration of a damped linear
 // single-degree-of-freedom oscillator (period T, damping ratio zeta) whose base moves with the
 // ground record,  x'' + 2 zeta w x' + w^2 x = -a_g(t),  floor = x'' + a_g = -(2 zeta w x' + w^2 x).
 // The ground record is linear between samples, so the step from sample to sample is exact

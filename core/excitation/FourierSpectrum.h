@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Fourier amplitude spectrum of an accelerogram, normalized so that its largest component is 1
 // (the paper's Figs. 25-26: "the modulus of the Fourier coefficients normalized so that the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The frequencies an enveloped sine accepts, in Hz (the command line's --frequency,
 // --frequencies and --fy, and the project files).

@@ -1,8 +1,10 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// A recorded horizontal motion as a project's excitation (SPEC §7, §10): the accelerogram file
-// and how to read it, the scaling (to a target peak in g, or by a factor) and the optional floor
-// filter (T, zeta) that turns a ground record into the floor motion the slab feels. The scaling
-// applies to the driving motion, i.e. after the floor filter: its peak is what the slab sees.
+// A recorded horizontal motion as a project's excitation (docs/theory.md §7; docs/user-guide.md):
+// the accelerogram file and how to read it, the scaling (to a target peak in g, or by a factor) and
+// the optional floor filter (T, zeta) that turns a ground record into the floor motion the slab
+// feels. The scaling applies to the driving motion, i.e. after the floor filter: its peak is what
+// the slab sees.
 
 #include "core/excitation/FloorFilter.h"
 #include "core/io/Accelerogram.h"

@@ -1,7 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// A recorded acceleration as the base motion of the 1-DOF slab (SPEC §3, §6): the samples,
-// optionally scaled to a target peak, linearly interpolated between samples and zero after the
-// last one, in the slab's dimensionless time tau = t / t*. On each sample interval a(tau) is
+// A recorded acceleration as the base motion of the 1-DOF slab (docs/theory.md §3, §6): the
+// samples, optionally scaled to a target peak, linearly interpolated between samples and zero after
+// the last one, in the slab's dimensionless time tau = t / t*. On each sample interval a(tau) is
 // linear, so the slip velocity and displacement are quadratic and cubic there and the exact
 // solver stays exact; the solver's segments are the sample intervals.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Confidence intervals for the mean, variance and standard deviation of a normal sample
 // (Furgerson 1980, Table 3c, for the per-run V_inf of BJ-F-NG-200 without run #7):

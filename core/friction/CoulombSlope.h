@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The asymptotic Coulomb law tau_inf = mu_inf * CP (Furgerson 1980, ch. III and Fig. 21):
 // tau_inf = V_inf / A_b, and mu_inf is the least-squares slope of tau_inf against the

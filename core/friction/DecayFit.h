@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Fitting the decay law to one curve: V_inf by a bracketed 1-D minimization of f_m
 // (Furgerson 1980, Eq. 5 and Fig. 17), c and b in closed form at each trial V_inf

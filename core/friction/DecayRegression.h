@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The post-fracture decay law and its linear regression for a given V_inf
 // (Furgerson 1980, ch. III, Eqs. 2-5):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The whole chapter III procedure on a set of triplet tests (Furgerson 1980):
 //  1. group the runs by configuration and confining pressure;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Grubbs' test for one outlier in a normal sample, used here to challenge a per-run V_inf
 // (Furgerson 1980, ch. III and Appendix 2, which is not in the surviving text: the paper only

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Triplet shear test data from CSV, one row per sample, in the layout of the transcribed
 // Furgerson (1980) Table 1 (resources/data/furgerson1980/table1_triplet_tests.csv):

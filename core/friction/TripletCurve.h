@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One masonry triplet shear test in its post-fracture region (Furgerson 1980, ch. III):
 // shear force V (kips) sampled at displacements delta (in) measured from the peak load.

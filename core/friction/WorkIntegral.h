@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The abscissa of the friction-law regression (Furgerson 1980, Eq. 2):
 //   xi(delta) = integral from 0 to delta of W(delta')^beta d delta',

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// A recorded acceleration time series (SPEC §7): equally spaced samples, in g, with the
+// A recorded acceleration time series (docs/theory.md §7): equally spaced samples, in g, with the
 // metadata of the file it came from. Every reader in core/io returns one of these.
 
 #include <optional>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // PEER strong-motion AT2 files (NGA-West2, older NGA, PEER 2000 and third-party variants;
 // data/records/SOURCES.md "Parser notes"): header lines, a line with NPTS and DT in one of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Whole-file output that never leaves a torn or half-written file behind (POSIX).
 //

@@ -1,6 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // JSON forms of the building, the codes' inputs, their results and the design check, with the
-// keys of the project file and of `kinstab-cli codes` / `check` (SPEC §12).
+// keys of the project file and of `kinstab-cli codes` / `check` (docs/user-guide.md "The command
+// line").
 
 #include "core/codes/Building.h"
 #include "core/codes/CodeSet.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // COSMOS strong-motion format, volumes 1 and 2 (".V1", ".V2", ".V1c", ".V2c"; COSMOS format
 // v01.20): text header ("with 13 text lines"), integer and real header blocks, comment lines

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/CsmipV2Reader.h"
 
 #include "core/io/InputLimits.h"

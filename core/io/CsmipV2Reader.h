@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // CDMG/CSMIP Volume 2 corrected accelerograms (old upper-case and newer mixed-case "Avol1"
 // styles; SOURCES.md §2, §6): one or more channels concatenated, each a text header, integer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The "floors" object of a project (the floor-motion check's own inputs):
 //   {"slab_level": null | 1..n, "stiffness": "uniform" | "weight", "damping": 0.05,

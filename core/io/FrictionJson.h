@@ -1,6 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// JSON form of a friction-law calibration (kinstab-cli friction, SPEC §8 and §12).
-// Forces in kips, displacements in inches, pressures in psi; missing numbers are null.
+// JSON form of a friction-law calibration (kinstab-cli friction, docs/theory.md §8;
+// docs/user-guide.md "The command line"). Forces in kips, displacements in inches, pressures in
+// psi; missing numbers are null.
 
 #include "core/friction/FrictionCalibration.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Every size limit on what kinstab reads, in one place, with the reason for its value. A file
 // or flag beyond a limit is refused with a message naming the input and the limit, before any

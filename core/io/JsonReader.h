@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Typed, path-aware access to a JSON object read from a file: every problem is a
 // JsonFieldError naming the field by its path ("building.height: expected a number, got

@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The project's excitation source as JSON (SPEC §10): the enveloped sine of "slab.envelope"
-// (today's default, and what a project without the key means) or a record:
+// The project's excitation source as JSON (docs/user-guide.md): the enveloped sine of
+// "slab.envelope" (today's default, and what a project without the key means) or a record:
 //   "excitation": {"source": "sine"}
 //   "excitation": {"source": "record", "record": {"file": "../records/X.AT2", "format": "auto",
 //       "dt": null, "unit": null, "channel": "", "target_peak_g": 0.4, "scale_factor": 1,

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The "planar" object of a project file (SPEC §10): the planar model's settings.
+// The "planar" object of a project file (docs/user-guide.md): the planar model's settings.
 //   {"fy_hz": 1, "ay_ratio": 0.9, "theta": 20, "normalization": "product",
 //    "vertical": "none" | "rsn68_up" | {"file": "path/to/record"}}
 // Every key is optional (defaults of PlanarSettings); a bad one is a JsonFieldError naming it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/Project.h"
 
 #include "core/io/AtomicFile.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A kinstab project: everything an engineer enters once — the building, the codes with their
 // own inputs, the 1-DOF slab case, the sweep grid and the model — saved as versioned JSON

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// One entry point for every accelerogram format (SPEC §7): picks the reader by the file's
+// One entry point for every accelerogram format (docs/theory.md §7): picks the reader by the file's
 // first lines unless told, and validates the result.
 
 #include "core/io/Accelerogram.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The text of an accelerogram file as numbered lines, and the number scanning every reader
 // shares. Every failure is a RecordError naming the file and the 1-based line.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/ResultJson.h"
 
 #include "core/numerics/InternalError.h"

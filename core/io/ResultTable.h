@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A sweep as a plain-text table for terminals and logs: gamma_c with amplitudes down and
 // frequencies across, "." where the slab stays on its walls.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What every reader of a text file shares: a size-bounded read, the UTF-8 byte-order mark
 // that Excel and Notepad write, header text that is not UTF-8 (old records are Latin-1),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Brent's bracketed 1-D minimization (golden section safeguarded by parabolic interpolation).
 // Source: R. P. Brent, "Algorithms for Minimization without Derivatives" (1973), ch. 5,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One step of the Dormand-Prince 8(5,3) pair, DOP853 (Hairer, Norsett & Wanner, Solving ODEs I,
 // 2nd ed., sec. II.10, code DOP853), with its combined 5th/3rd-order error estimate. Order 8: on

@@ -1,8 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One step of the Dormand-Prince 5(4) pair (Dormand & Prince 1980; Hairer, Norsett & Wanner,
 // Solving ODEs I, Table II.5.2), with its embedded error estimate and a cubic Hermite continuous
 // extension. Step-size control and events are the caller's: the planar slab needs its own
-// (tstops at onset roots, a change of independent variable near a stop; NUMERICS.md §6).
+// (tstops at onset roots, a change of independent variable near a stop; docs/theory.md §6.5).
 
 #include <Eigen/Core>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // 10-point Gauss-Legendre quadrature (Abramowitz & Stegun, Table 25.4): exact for polynomials
 // of degree 19, so on a piece much shorter than the sine's period it integrates the smooth

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Regularized incomplete beta function I_x(a, b). Basis of the Student t distribution.
 

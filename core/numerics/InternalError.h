@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A result the program cannot stand behind: a NaN or infinity where a number is promised, or a
 // bounded search that reached its bound. Not the user's fault (that is a usage error), so the

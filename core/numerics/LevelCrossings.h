@@ -1,7 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // All sign changes of a smooth function of time on an interval, found on sub-intervals short
 // enough to hold at most one interior extremum (the caller picks them from the time scales of
-// its inputs; NUMERICS.md §5.2 last item). In each sub-interval:
+// its inputs; docs/theory.md §6.3 last item). In each sub-interval:
 //  - a sign change at the ends gives one root, located by safeguarded Newton;
 //  - equal signs with the slope pointing toward zero at one end and away at the other mean an
 //    interior extremum; it is found as the root of f' by bisection and, when it crosses zero,

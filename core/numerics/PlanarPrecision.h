@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Work-precision study of the planar solver (issue 22): for a fixed set of planar cases, the
 // error of the adaptive planar solver at a sweep of tolerances against a reference at its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Safeguarded root finding on a bracket. Every event of the slab model is located here.
 // Bare Newton diverges at grazing events (f' -> 0 at a double root), so each Newton step

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Student's t distribution with nu degrees of freedom: CDF and quantile (percentage point).
 // Used for the confidence interval of a mean (Furgerson 1980 Table 3c) and Grubbs' test.

@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Wall-clock timing of repeated runs, the way DiffEqDevTools times work-precision points
-// (NUMERICS.md §3.1): one warm-up run, then n timed runs; report the minimum (least disturbed
+// (docs/theory.md §6.7): one warm-up run, then n timed runs; report the minimum (least disturbed
 // by other load on the machine) and the median. Process CPU time is kept beside it because
 // wall time on a shared machine measures the neighbours too.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Code built for baseline x86-64 (ours, and the legacy-SSE paths it calls) runs many times slower
 // while the upper halves of the AVX registers are "dirty": each SSE instruction then pays the

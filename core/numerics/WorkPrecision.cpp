@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/numerics/WorkPrecision.h"
 
 #include "core/excitation/EnvelopedSine.h"
@@ -199,7 +200,7 @@ std::vector<WorkPrecisionCase> workPrecisionCases() {
     c.push_back(
         {"grazing",
          "moderate, f 1 Hz, A = mu (1 + 1e-4) = 0.60006 g: one slip of about 3 sqrt(delta/k) "
-         "at the main peak (NUMERICS.md §4 row 3), residual ~2e-7",
+         "at the main peak (docs/theory.md §6.6 case 3), residual ~2e-7",
          modelWith(EnvelopePreset::Moderate),
          {0.6 * (1.0 + 1e-4)},
          1.0});

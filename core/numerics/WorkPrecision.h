@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Work-precision study (SPEC §11; NUMERICS.md §3): for a fixed, documented set of cases, the
-// error of each solver and setting against a converged reference, and its wall time.
+// Work-precision study (docs/theory.md §6.6; docs/theory.md §6.7): for a fixed, documented set of
+// cases, the error of each solver and setting against a converged reference, and its wall time.
 //  - paper RK4 at H = T/16 ... T/1024;
 //  - the exact solver with its stop/collapse times located to 1e-2 ... 1e-12 (absolute, tau);
 //  - tanh-regularized friction with RK4 at widths (1e-1, 1e-2, 1e-3) mu/omega.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/ExactSolver.h"
 
 #include "core/numerics/RootFinding.h"
@@ -316,7 +317,8 @@ ExactRun::Step ExactRun::slipThrough(double hi, AtStop atStop) {
         if (collapsesBy(tStop, xStop, 0.0)) return Step::Done;
         moveTo(tStop, xStop, 0.0);
         if (atStop == AtStop::Reverse || (atStop == AtStop::Decide && excessAt(tStop) != 0)) {
-            // |a| > mu at the stop: no sticking, it slides back at once (NUMERICS.md §4 row 5).
+            // |a| > mu at the stop: no sticking, it slides back at once (docs/theory.md §6.6 case
+            // 5).
             s_ = -s_;
             ++r_.slipIntervals;
             if (!event(EventKind::Reversal, s_)) return Step::Done;

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Event-driven exact solver of the 1-DOF slab (SPEC §4, §6; NUMERICS.md §1, §5).
+// Event-driven exact solver of the 1-DOF slab (docs/theory.md §4, §6; docs/theory.md §6.1-§6.3).
 // Between events the slip is a pure quadrature of a(tau) with closed-form integrals, so nothing
 // is integrated numerically. Events are located on brackets that cannot miss them:
 //  - slip onset is a time-only event, |a| = mu: all its roots come from per-segment crossings;

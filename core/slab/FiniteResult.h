@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Every number a slab result promises is finite: tau_c when it collapsed, where the run ended,
 // the residual and largest displacement, and each recorded event's time, displacement and

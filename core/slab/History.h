@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A sampled history of one run, rebuilt on demand from its event list: between events the
-// motion has a closed form, so a sweep never stores histories (SPEC §11).
+// motion has a closed form, so a sweep never stores histories (docs/theory.md §6.6).
 
 #include "core/excitation/Excitation1D.h"
 #include "core/slab/SlabTypes.h"

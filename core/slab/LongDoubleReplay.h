@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // An extended-precision reference for one run of the exact solver: its event sequence (which
 // events happen, in which order, with which slip sign) is replayed in long double (x87, 64-bit

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Moreau's time-stepping for the planar slab (NUMERICS.md §2.5): proximal implicit Euler on the
+// Moreau's time-stepping for the planar slab (docs/theory.md §6.5): proximal implicit Euler on the
 // differential inclusion u' in -mu n d|u| - a_h, with the closed-form step
 //   w = u_k - h a_h(tau_{k+1}),  u_{k+1} = w max(0, 1 - h mu n(tau_{k+1}) / |w|),
 //   delta_{k+1} = delta_k + h u_{k+1}.

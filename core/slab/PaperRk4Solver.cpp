@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/PaperRk4Solver.h"
 
 #include "core/numerics/VectorState.h"

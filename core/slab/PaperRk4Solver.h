@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The 1980 solver, kept as the baseline (Furgerson 1980, Appendix): classical RK4 with a fixed
 // step H, a first step of H/2, slip onset by Newton iteration from the step's midpoint, the

@@ -1,7 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// One planar stability case (Furgerson 1980, ch. VI; SPEC §5): everything but the across-wall
-// amplitude A_x and frequency f_x, which a sweep varies (Figs. 37-42). a_y is an enveloped sine
-// with A_y = ratio A_x and its own f_y; the vertical factor n = 1 + a_z takes any motion.
+// One planar stability case (Furgerson 1980, ch. VI; docs/theory.md §5): everything but the
+// across-wall amplitude A_x and frequency f_x, which a sweep varies (Figs. 37-42). a_y is an
+// enveloped sine with A_y = ratio A_x and its own f_y; the vertical factor n = 1 + a_z takes any
+// motion.
 
 #include "core/excitation/Envelope.h"
 #include "core/excitation/Excitation1D.h"

@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The planar slab driven by recorded horizontal motions (SPEC §5, §7): a_x from a record (the
-// across-wall component) and optionally a_y from a second component, in place of the enveloped
+// The planar slab driven by recorded horizontal motions (docs/theory.md §5, §7): a_x from a record
+// (the across-wall component) and optionally a_y from a second component, in place of the enveloped
 // sines of PlanarCase; mu, limit, theta, the vertical motion and the solver options come from
 // the PlanarCase. Both components are scaled by one factor (the one that brings a_x to its
 // target peak), so the pair keeps the ratio of its recorded peaks.

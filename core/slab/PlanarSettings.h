@@ -1,8 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The planar model's inputs a project keeps (SPEC §10 "model (1-DOF / planar)"; Furgerson 1980
-// ch. VI): what a PlanarCase needs beyond the 1-DOF slab case (envelope, t*, mu, limit, scale),
-// with the vertical motion named by its source rather than loaded. Reading the record is the
-// caller's job (the shipped RSN68 UP lives in the application's resources).
+// The planar model's inputs a project keeps (docs/user-guide.md "model (1-DOF / planar)"; Furgerson
+// 1980 ch. VI): what a PlanarCase needs beyond the 1-DOF slab case (envelope, t*, mu, limit,
+// scale), with the vertical motion named by its source rather than loaded. Reading the record is
+// the caller's job (the shipped RSN68 UP lives in the application's resources).
 
 #include "core/excitation/Excitation1D.h"
 #include "core/io/Accelerogram.h"

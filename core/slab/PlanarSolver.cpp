@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/PlanarSolver.h"
 
 #include "core/numerics/GaussLegendre.h"
@@ -91,7 +92,7 @@ double PlanarRun::dissipationRate(double tau, double ex, double ey) {
     return mu_ * m_.normal(tau) + a.x * ex + a.y * ey;
 }
 
-// Log-radius form (NUMERICS.md §5.6): with u = e^s (cos th, sin th), D = mu n + a.e,
+// Log-radius form (docs/theory.md §6.5): with u = e^s (cos th, sin th), D = mu n + a.e,
 //   dth/ds = (a.e_perp)/D,  dtau/ds = -e^s/D,  d delta/ds = e^s e dtau/ds.
 // Smooth as s -> -inf wherever D > 0 (where |u| decreases).
 Vec5 PlanarRun::rhsS(double s, const Vec5& z) {
@@ -151,7 +152,7 @@ PlanarResult PlanarRun::run() {
     }
     // Quadrature start of a slip: short against the horizontal time scale, so that the
     // neglected lag of the direction behind -a_h (relative size (omega h)^2) stays below the
-    // tolerances (NUMERICS.md F7: the direction is slaved at rate |a|/|u|).
+    // tolerances (docs/theory.md §6.1 F7: the direction is slaved at rate |a|/|u|).
     startLength_ = m_.horizontalTimeScale() / 250.0;
     if (m_.normal(0.0) <= 0.0) {
         r_.tauLiftOff = 0.0;
@@ -342,9 +343,9 @@ PlanarRun::Step PlanarRun::collapse(double tau, const Vec4& y, int comp) {
 }
 
 // Slaved slip: while |u| is tiny the direction of u relaxes to -a_h at rate |a|/|u| and lags it
-// by only Omega |u| / |a| (NUMERICS.md F7), so |u| is the quadrature of |a_h| - mu n and the
-// displacement its integral along -a_h: a slip's first stretch from u = 0, and grazing slips and
-// stops, where an explicit method would crawl at steps of |u| / |a|. The neglected lag changes
+// by only Omega |u| / |a| (docs/theory.md §6.1 F7), so |u| is the quadrature of |a_h| - mu n and
+// the displacement its integral along -a_h: a slip's first stretch from u = 0, and grazing slips
+// and stops, where an explicit method would crawl at steps of |u| / |a|. The neglected lag changes
 // |u| by O(Omega^2 |u|^2 / |a|) per unit time: below 1e-12 for |u| <= kSlaved.
 PlanarRun::Step PlanarRun::slaved(double end) {
     auto margin = [&](double s) {

@@ -1,13 +1,14 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Solver of the planar slab (SPEC §5, §6; NUMERICS.md F4, F7, §5.6, §6): adaptive Dormand-Prince
-// 8(5,3) (DOP853; order 8 takes steps several times longer than 5(4) on the smooth enveloped
-// sines at the default tolerance) with event location by brackets.
+// Solver of the planar slab (docs/theory.md §5, §6; docs/theory.md §6.1 F4, F7, §6.5): adaptive
+// Dormand-Prince 8(5,3) (DOP853; order 8 takes steps several times longer than 5(4) on the smooth
+// enveloped sines at the default tolerance) with event location by brackets.
 //  - Slip onset |a_h| = mu n is a time-only event: its roots are found ahead on brackets and
 //    are step boundaries (tstops). Lift-off n = 0 likewise.
 //  - A slip starts from u = 0 along -a_h; the first short stretch is integrated as a quadrature
 //    (the direction is slaved to -a_h there), which spares the explicit method the stiff
 //    alignment of the direction (rate |a|/|u|) near |u| = 0.
-//  - The stop |u| -> 0 is approached in the log-radius variable s = ln|u| (NUMERICS.md §5.6),
+//  - The stop |u| -> 0 is approached in the log-radius variable s = ln|u| (docs/theory.md §6.5),
 //    where the direction and time are smooth; the stop time is where s -> -inf. A test on the
 //    dot product of velocities would fire early (the direction swings by up to 180 degrees in
 //    the last instants, F7).

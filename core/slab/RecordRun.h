@@ -1,7 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The 1-DOF slab under a recorded motion scaled to a peak (SPEC §3, §7): the run an engineer
-// asks for when a record, not the enveloped sine, is the excitation. Only the exact solver runs
-// records (it is exact for the linearly interpolated samples, SPEC §6).
+// The 1-DOF slab under a recorded motion scaled to a peak (docs/theory.md §3, §7): the run an
+// engineer asks for when a record, not the enveloped sine, is the excitation. Only the exact solver
+// runs records (it is exact for the linearly interpolated samples, docs/theory.md §6).
 
 #include "core/io/Accelerogram.h"
 #include "core/slab/Slab1DCase.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/RegularizedSolver.h"
 
 #include <algorithm>
@@ -79,7 +80,7 @@ SlabResult solveRegularized(const Excitation1D& a, const SlabParams& p,
             y = {target, next.v};
             break;
         }
-        // tau from the step count, not by accumulation (NUMERICS.md §4 row 13).
+        // tau from the step count, not by accumulation (docs/theory.md §6.6 case 13).
         tau = hh < h ? tau + hh : static_cast<double>(n + 1) * h;
         y = next;
         r.maxAbsDelta = std::max(r.maxAbsDelta, std::abs(y.x));

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Regularized friction, for comparison only (NUMERICS.md §4 row 1, §6 baseline (c)): the sign
+// Regularized friction, for comparison only (docs/theory.md §6.6 case 1, §6 baseline (c)): the sign
 // of the slip velocity is smoothed to tanh(v / width),
 //   delta'' = -mu tanh(delta' / width) - a(tau),
 // and integrated with classical RK4 at a fixed step. It shows why regularization is the wrong

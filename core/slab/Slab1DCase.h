@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One 1-DOF stability case: everything but the amplitude and frequency, which a sweep varies.
 
@@ -23,7 +24,7 @@ struct Slab1DCase {
     double tauRef() const { return envelope.tauRef(scale, tstar); }
 };
 
-// t* = sqrt(d / (2 g)) for a wall of width d (SPEC §2).
+// t* = sqrt(d / (2 g)) for a wall of width d (docs/theory.md §2).
 double tstarFromWallWidth(double wallWidthMetres);
 double tstarFromWallWidthInches(double inches);
 

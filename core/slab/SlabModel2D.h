@@ -1,8 +1,10 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The planar two-degree-of-freedom slab (Furgerson 1980, ch. VI; SPEC §5): relative displacement
-// (dx across the walls, dy along them) and relative velocity u, driven by two horizontal base
-// accelerations a_x, a_y and a vertical factor n(tau) = 1 + a_z(tau) on the normal force.
-// Each excitation is any Excitation1D (enveloped sine, recorded motion), in g of tau = t / t*.
+// The planar two-degree-of-freedom slab (Furgerson 1980, ch. VI; docs/theory.md §5): relative
+// displacement (dx across the walls, dy along them) and relative velocity u, driven by two
+// horizontal base accelerations a_x, a_y and a vertical factor n(tau) = 1 + a_z(tau) on the normal
+// force. Each excitation is any Excitation1D (enveloped sine, recorded motion), in g of tau = t /
+// t*.
 
 #include "core/excitation/EnvelopedSine.h"
 #include "core/excitation/Excitation1D.h"
@@ -40,7 +42,7 @@ public:
     double onsetMargin(double tau) const;
     double onsetMarginSlope(double tau) const;
     // True when nothing can start any more after tau: the root-sum-square of both components'
-    // bounds is below mu times the least n can be (SPEC §5, "End").
+    // bounds is below mu times the least n can be (docs/theory.md §5, "End").
     bool quietAfter(double tau) const;
     // True when nothing can start inside [lo, hi] (cheap rigorous bounds).
     bool quietOn(double lo, double hi) const;

@@ -1,5 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Inputs and results of one run of a slab model (SPEC §4): value types shared by all solvers.
+// Inputs and results of one run of a slab model (docs/theory.md §4): value types shared by all
+// solvers.
 
 #include <limits>
 #include <optional>
@@ -11,7 +13,7 @@ namespace kinstab {
 enum class Outcome { Collapsed, Stable, LiftOff, Failed };
 std::string outcomeName(Outcome o);
 
-// Which way a planar slab leaves its walls (SPEC §5): across (|dx| > limit) or along
+// Which way a planar slab leaves its walls (docs/theory.md §5): across (|dx| > limit) or along
 // (|dy| > theta). The 1-DOF slab can only leave across.
 enum class ExitSide { None, Across, Along };
 std::string exitSideName(ExitSide s); // "across" | "along" | "none"
@@ -42,7 +44,7 @@ struct SlabParams {
 };
 std::string validateSlabParams(const SlabParams& p); // empty when fine
 
-// What a solver did, so that error can be reported against work (SPEC §6).
+// What a solver did, so that error can be reported against work (docs/theory.md §6).
 struct SolverWork {
     long accelEvaluations = 0; // a(tau) and closed-form integral evaluations
     long rootIterations = 0;

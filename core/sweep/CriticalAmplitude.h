@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A_crit(f): the smallest amplitude that collapses the slab. gamma_c need not be monotone in A,
 // so a bare bisection could land on a later transition: scan finely from below, then refine

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The critical scale of a record: the smallest peak acceleration (g) of the scaled driving
 // motion at which the 1-DOF slab collapses. gamma_c need not be monotone in the scale, so this

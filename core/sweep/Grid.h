@@ -1,6 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Grids of amplitude and frequency, and the LIST syntax of the command line (SPEC §12):
-// comma-separated numbers or start:stop:step (stop included when on the grid within 1e-9).
+// Grids of amplitude and frequency, and the LIST syntax of the command line (docs/user-guide.md
+// "The command line"): comma-separated numbers or start:stop:step (stop included when on the grid
+// within 1e-9).
 
 #include <string>
 #include <vector>

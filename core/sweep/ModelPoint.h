@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The point function of the model a sweep runs (SPEC §10 "model (1-DOF / planar)"), with where
-// its A_crit scans start: the 1-DOF slab (nothing slips below mu) or, when a planar case is
+// The point function of the model a sweep runs (docs/user-guide.md "model (1-DOF / planar)"), with
+// where its A_crit scans start: the 1-DOF slab (nothing slips below mu) or, when a planar case is
 // given, the planar slab of ch. VI (nothing slips below planarNoSlipAmplitude).
 
 #include "core/slab/PlanarCase.h"

@@ -1,8 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// What a record run gives an engineer (SPEC §7, §9, §10): the ground record and the motion
-// under the slab (through the floor filter when asked), one run of the slab under the scaled
-// motion, the critical scale (the smallest peak that collapses the slab) and each code's
-// verdict against it. Shared by kinstab-cli (simulate --record, check), the GUI's worker and
+// What a record run gives an engineer (docs/theory.md §7, §9; docs/user-guide.md): the ground
+// record and the motion under the slab (through the floor filter when asked), one run of the slab
+// under the scaled motion, the critical scale (the smallest peak that collapses the slab) and each
+// code's verdict against it. Shared by kinstab-cli (simulate --record, check), the GUI's worker and
 // the report.
 
 #include "core/codes/RecordCheck.h"
@@ -50,8 +51,8 @@ RecordAnalysis recordMotions(const RecordExcitation& record, const Slab1DCase& s
 // The envelope fitted to a motion (Fig. 27); none, with the reason in *why, when the motion has
 // fewer than 3 half cycles.
 std::optional<EnvelopeFit> fitOrNone(const Accelerogram& motion, std::string* why = nullptr);
-// gamma_c's reference time for a record: tau of the fitted envelope (SPEC §3's tau_rise, tau_max,
-// tau_dur computed from alpha, beta), 1 for TauScale::One; none when no fit.
+// gamma_c's reference time for a record: tau of the fitted envelope (docs/theory.md §3's tau_rise,
+// tau_max, tau_dur computed from alpha, beta), 1 for TauScale::One; none when no fit.
 std::optional<double> recordTauRef(const std::optional<EnvelopeFit>& fit, const Slab1DCase& c);
 
 } // namespace kinstab

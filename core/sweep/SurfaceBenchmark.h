@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The issue-2 speed target, measured (SPEC §11: speed claims come from benchmarks): the same
-// surface swept with the exact solver and with the paper's RK4 at H = T/16, in one process,
+// The issue-2 speed target, measured (docs/theory.md §6.6: speed claims come from benchmarks): the
+// same surface swept with the exact solver and with the paper's RK4 at H = T/16, in one process,
 // timed over repeated runs that alternate between the two. Also counts the grid points where the
 // two disagree on the outcome, so that a speed-up can never hide a change of answer.
 

@@ -1,7 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Sweeps over an (amplitude, frequency) grid on all cores. Per point they keep only what a
-// surface shows: the collapse time and the outcome (SPEC §11, "leave out what a scene does not
-// need"). A point function makes the same sweep serve every model.
+// surface shows: the collapse time and the outcome (docs/theory.md §6.6, "leave out what a scene
+// does not need"). A point function makes the same sweep serve every model.
 
 #include "core/slab/Slab1DCase.h"
 #include "core/sweep/Grid.h"

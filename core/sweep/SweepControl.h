@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Cancellation and progress for long work, shared between a worker and whoever watches it.
 // An atomic flag (a plain bool would be a data race, as in QGIS's QgsFeedback).

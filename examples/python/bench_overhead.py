@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Benchmark: what one `kinstab.simulate` call from Python costs beyond the core's own time.
 
     PYTHONPATH=build/python /usr/bin/python3 examples/python/bench_overhead.py [--repeats N]

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Notebook-style tour of the kinstab Python module: the paper's figures from a script.
 
     PYTHONPATH=build/python /usr/bin/python3 examples/python/paper_figures.py [OUT_DIR]

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """kinstab: can a floor slab held by friction slide off its walls in an earthquake?
 
 The engine of kinstab (Furgerson 1980 stick-slip model) in Python::

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Type stub of kinstab._core, the compiled engine (python/src/*.cpp)."""
 
 from typing import Optional, Sequence, Union

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The friction law of Furgerson 1980, ch. III, calibrated on triplet shear tests."""
 
 from __future__ import annotations

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Argument checks of the Python module. A bad argument raises ValueError with the message
 // kinstab-cli gives for the same value, the flag replaced by the keyword: the CLI's

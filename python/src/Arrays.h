@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // NumPy arrays from the core's vectors (copies: the arrays own their data).
 

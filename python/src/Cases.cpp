@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Envelope, SlabCase and PlanarCase: the inputs of every run, checked once when made.
 
 #include "python/src/Arguments.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // codes: the building-code lateral force ratios of one building, with each coefficient's
 // trail. The building and code inputs are the project file's objects ("building", "codes"), read
 // by the core's own readers, so a bad field raises ValueError naming it ("building.stories ...").

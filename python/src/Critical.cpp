@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // critical: A_crit(f), the smallest amplitude that collapses the slab, per frequency. Each
 // frequency's search runs with the GIL released; Ctrl+C is honoured between frequencies.
 

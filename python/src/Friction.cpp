@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // friction.calibrate: the friction-law calibration of Furgerson 1980 ch. III on a CSV of triplet
 // shear tests, checked as `kinstab-cli friction` checks its flags (app/cli/FrictionCommand.cpp).
 

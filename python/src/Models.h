@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What surface() and critical() accept: a SlabCase or a PlanarCase, and a grid axis given as
 // numbers or as the command line's LIST text ("0.7:1.15:0.05" or "1,2,3").

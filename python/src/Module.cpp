@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // kinstab._core: the Qt-free engine of kinstab as a Python extension (the public face is the
 // kinstab package, python/kinstab/__init__.py).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "python/src/PlanarArguments.h"
 
 #include "core/excitation/RecordedMotion.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The planar case (Furgerson 1980, ch. VI) from a 1-DOF case and keyword arguments, checked as
 // kinstab-cli checks --model planar's flags (app/cli/PlanarFlags.cpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // read_record, floor_filter and simulate_record: accelerograms as NumPy arrays, the floor
 // filter (Nigam & Jennings 1969 recurrence) and a run of the 1-DOF slab under a record.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The results of one run as Python sees them: SimulationResult (1-DOF) and PlanarResult.
 

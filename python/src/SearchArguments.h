@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The critical-amplitude search from keyword arguments, checked as kinstab-cli checks
 // --max-amplitude, --scan-step and --tolerance (app/cli/SearchFlags.cpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // simulate and simulate_planar: one run under the enveloped sine, with its events and sampled
 // history as NumPy arrays when asked.
 

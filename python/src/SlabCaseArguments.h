@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The 1-DOF case from keyword arguments, checked as kinstab-cli checks its model flags
 // (app/cli/ModelFlags.cpp): same limits, same messages, keyword for flag.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // surface: the (A, f) sweep on all cores with the GIL released. The calling thread stays in
 // charge: it polls for Ctrl+C while the workers run and cancels the sweep through its control,
 // so KeyboardInterrupt arrives within one grid point.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Runs kinstab-cli (or another program) as a user would, for the cli tests.
 

@@ -1,5 +1,7 @@
-// kinstab-cli codes | check as a user runs them (SPEC §12): the paper's numbers from the example
-// project and from building flags, and exit 2 with the bad flag named.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// kinstab-cli codes | check as a user runs them (docs/user-guide.md "The command line"): the
+// paper's numbers from the example project and from building flags, and exit 2 with the bad flag
+// named.
 
 #include <QFile>
 #include <QJsonArray>
@@ -28,11 +30,12 @@ class TestCliCodes : public QObject {
     Q_OBJECT
 private slots:
     void exampleProject() {
-        // Furgerson 1980 eqs. 9, 14, 16, 21; CODES.md §1 and §7.2 for F_t, ASCE 7-22 and EC8.
+        // Furgerson 1980 eqs. 9, 14, 16, 21; docs/codes.md §1 and §7.2 for F_t, ASCE 7-22 and EC8.
         const Run r = cli({"codes", "--project", kExample});
         QCOMPARE(r.code, 0);
         const QJsonObject j = QJsonDocument::fromJson(r.out).object();
-        QCOMPARE(j.keys(), QStringList({"asce7_22", "atc306", "ec8", "kinstab_version", "ubc1976"}));
+        QCOMPARE(j.keys(),
+                 QStringList({"asce7_22", "atc306", "ec8", "kinstab_version", "ubc1976"}));
         const QJsonObject u = j["ubc1976"].toObject();
         for (const char* key : {"base_shear_coefficient", "period_s", "top_ratio", "story_forces",
                                 "trail", "top_ratio_without_ft"})

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // kill -9 at random points of `surface -o` and `report -o` over an existing good file (issue
 // 14): afterwards the file is the old one or a complete new one, byte for byte, never anything
 // else. The kill times are drawn from a fixed seed (reproducible) over the whole run, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // kinstab-cli floors as a user runs it: the paper's building (16 levels, 177 ft, T = 1 s) under
 // the Pacoima Dam 164 record (NGA RSN77).
 //  - the JSON keys of issue 19; 16 modes, the first at T, participation summing the roof to 1

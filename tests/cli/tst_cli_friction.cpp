@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // kinstab-cli friction, run as a user would: JSON on the shipped Table 1, exit 2 with a message
 // naming the flag or the CSV line and column for bad input.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // kinstab-cli with hostile, foreign and nonsensical input: every case is exit 2 with a
 // message naming the input, the line or field and the limit, never a crash (exit -1 here), an
 // internal error (exit 1) or a silent exit 0. Latin-1 header text and a UTF-8 byte-order mark

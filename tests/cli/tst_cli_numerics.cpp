@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // kinstab-cli on inputs that once gave a silent NaN, a false collapse or a hang: each now gives
 // correct finite numbers, or exit status 2 naming the flag and the limit, in bounded time.
 

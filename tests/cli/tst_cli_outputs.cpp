@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Where kinstab-cli's outputs go and what a failed write leaves behind (issue 14): -o "" and
 // a missing folder are bad input (exit 2); -o - is stdout; a device or FIFO target is written
 // straight through, never replaced; a symlink at the old fixed temporary name is not

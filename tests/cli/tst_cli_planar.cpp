@@ -1,4 +1,5 @@
-// kinstab-cli with --model planar (SPEC §12), run as a user would.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// kinstab-cli with --model planar (docs/user-guide.md "The command line"), run as a user would.
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -25,7 +26,7 @@ QJsonObject json(const Run& r) {
 }
 } // namespace
 
-// SPEC §5: gravity only, f_y 0.2 Hz, f_x 2 Hz, A_x 0.9 leaves along the walls.
+// docs/theory.md §5: gravity only, f_y 0.2 Hz, f_x 2 Hz, A_x 0.9 leaves along the walls.
 void TestCliPlanar::simulateAlongWallExit() {
     const Run r = cli({"simulate", "--model", "planar", "--amplitude", "0.9", "--frequency", "2",
                        "--fy", "0.2", "--events"});

@@ -1,7 +1,8 @@
-// kinstab-cli with a record as the excitation (SPEC §7, §12): simulate --record --critical (the
-// critical scale, checked by re-running the CLI just above and below it), the planar model
-// driven by records (against the 1-DOF record run when nothing moves along the walls),
-// check --project with a record, and bad flags named with exit 2.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// kinstab-cli with a record as the excitation (docs/theory.md §7; docs/user-guide.md "The command
+// line"): simulate --record --critical (the critical scale, checked by re-running the CLI just
+// above and below it), the planar model driven by records (against the 1-DOF record run when
+// nothing moves along the walls), check --project with a record, and bad flags named with exit 2.
 
 #include "CliRun.h"
 

@@ -1,4 +1,6 @@
-// kinstab-cli record and simulate --record (SPEC §12), run as a user would.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// kinstab-cli record and simulate --record (docs/user-guide.md "The command line"), run as a user
+// would.
 
 #include <QJsonArray>
 #include <QJsonDocument>

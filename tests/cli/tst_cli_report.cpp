@@ -1,5 +1,6 @@
-// kinstab-cli report (issue #5, SPEC §10): the paper building's design report as a user makes
-// it, read back with poppler's pdftotext/pdfinfo/pdfimages. Needs poppler-utils.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// kinstab-cli report (issue #5, docs/user-guide.md): the paper building's design report as a user
+// makes it, read back with poppler's pdftotext/pdfinfo/pdfimages. Needs poppler-utils.
 
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -60,7 +61,7 @@ private slots:
     }
 
     // Furgerson 1980 ch. V: F16/w = 0.140 (UBC 1976, F_t left out) and 0.275 (ATC 3-06);
-    // CODES.md §1: 0.230 with F_t added to the top floor.
+    // docs/codes.md §1: 0.230 with F_t added to the top floor.
     void containsPaperRatios() {
         const QString text = pdfText(a4_);
         QVERIFY(text.contains("0.140"));

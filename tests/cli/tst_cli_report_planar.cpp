@@ -1,7 +1,8 @@
-// kinstab-cli report --project with the planar model (issue #7, SPEC §10): the report names the
-// model and its inputs (f_y, A_y/A_x, Θ, normalization, the vertical record with RSN68 UP as the
-// stand-in for the paper's Pacoima Dam vertical), and its A_crit is the planar one. Read back
-// with poppler's pdftotext. The 1-DOF report is tst_cli_report's.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// kinstab-cli report --project with the planar model (issue #7, docs/user-guide.md): the report
+// names the model and its inputs (f_y, A_y/A_x, Θ, normalization, the vertical record with RSN68 UP
+// as the stand-in for the paper's Pacoima Dam vertical), and its A_crit is the planar one. Read
+// back with poppler's pdftotext. The 1-DOF report is tst_cli_report's.
 
 #include <QFile>
 #include <QJsonArray>

@@ -1,8 +1,9 @@
-// kinstab-cli report for a project whose excitation is a record (SPEC §7, §10): the example
-// project resources/examples/paper-16-story-record.json (the paper's building under the 1971
-// Pacoima Dam record through the building's floor filter), read back with pdftotext. The
-// critical peak printed must be the one kinstab-cli simulate --record --critical computes.
-// Needs poppler-utils.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// kinstab-cli report for a project whose excitation is a record (docs/theory.md §7;
+// docs/user-guide.md): the example project resources/examples/paper-16-story-record.json (the
+// paper's building under the 1971 Pacoima Dam record through the building's floor filter), read
+// back with pdftotext. The critical peak printed must be the one kinstab-cli simulate --record
+// --critical computes. Needs poppler-utils.
 
 #include "CliRun.h"
 

@@ -1,5 +1,6 @@
-// kinstab-cli simulate | surface | critical as a user runs them (SPEC §12): JSON keys, exit codes,
-// and messages that name the bad flag.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// kinstab-cli simulate | surface | critical as a user runs them (docs/user-guide.md "The command
+// line"): JSON keys, exit codes, and messages that name the bad flag.
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The desktop application in a German locale (decimal comma): it opens the shipped examples
 // and runs them. QApplication sets the C locale from LANG, so any number parsed with the C
 // library (std::stod) read "0.70" as 0 and refused the example's grid "0.70:1.15:0.05".

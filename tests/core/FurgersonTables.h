@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Test access to the shipped Furgerson (1980) transcriptions
 // (resources/data/furgerson1980/, see PROVENANCE.md there).

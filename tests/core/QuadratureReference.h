@@ -1,8 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// An independent solution of the 1-DOF slab equations for the tests (SPEC §4), sharing nothing
-// with the exact solver but the excitation's a(tau): it marches in fixed small steps, integrates
-// v and delta by 10-point Gauss-Legendre quadrature of a(tau) (no closed forms), detects events
-// by sign changes sampled at several points per step (no log-concavity brackets) and refines
+// An independent solution of the 1-DOF slab equations for the tests (docs/theory.md §4), sharing
+// nothing with the exact solver but the excitation's a(tau): it marches in fixed small steps,
+// integrates v and delta by 10-point Gauss-Legendre quadrature of a(tau) (no closed forms), detects
+// events by sign changes sampled at several points per step (no log-concavity brackets) and refines
 // each by plain bisection to ~1e-15.
 
 #include "core/excitation/Excitation1D.h"

@@ -1,7 +1,8 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The shipped sample records (resources/records, provenance in its SOURCES.md) as the core
 // tests drive slabs with them: the ground motion, or the floor motion through the 2 % floor
-// filter of period T (SPEC §7).
+// filter of period T (docs/theory.md §7).
 
 #include "core/excitation/FloorFilter.h"
 #include "core/io/RecordReader.h"

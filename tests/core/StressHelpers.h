@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Shared by the stress tests (tst_stress_*): a finite-and-bounded check for every result,
 // an excitation wrapper for the a -> -a metamorphic test, and independent integrals of a(tau)
@@ -28,7 +29,7 @@ inline void checkDefined(const SlabResult& r, long maxEvents = 1'000'000) {
     }
 }
 
-// a(tau) -> -a(tau): every answer must come out mirrored (NUMERICS.md §4, metamorphic tests).
+// a(tau) -> -a(tau): every answer must come out mirrored (docs/theory.md §6.6, metamorphic tests).
 class NegatedExcitation final : public Excitation1D {
 public:
     explicit NegatedExcitation(const Excitation1D& a) : a_(a) {}

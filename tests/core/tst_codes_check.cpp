@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The design check of the paper's chapter V (eq. 22): at f = 1 Hz with the moderate envelope
 // and μ = 0.6, A_crit ≈ 0.95 g (read off Fig. 29 by the paper); both code ratios (0.140 / 0.2296
 // UBC, 0.275 ATC) are far below it → "overstress governs".

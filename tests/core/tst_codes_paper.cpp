@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The paper's building (Furgerson 1980, chapter V, eqs. 7–21): 16 equal stories,
 // h_n = 177 ft, D = 78.62 ft, zone 4, soft clay.
 
@@ -47,7 +48,7 @@ private slots:
     void ubc1976Paper() {
         // Eqs. 8–14 with T = 1.0 s: Z = 1, I = 1, K = 0.8, C = 0.06667, S = 1.5 → V = 0.08 W;
         // F16/w = 0.93 · 16² · 0.08 / 136 = 0.140 (F_t left out); with F_t = 0.07 T V at the
-        // top: 0.229647 (CODES.md §1 and §7.2).
+        // top: 0.229647 (docs/codes.md §1 and §7.2).
         const CodeResult r = ubc1976(paperBuilding(1.0), {});
         QCOMPARE_LE(std::abs(r.baseShearCoefficient - 0.080), 1e-12);
         QCOMPARE_LE(std::abs(entry(r, "C") - 0.06667), 5e-6);
@@ -73,7 +74,7 @@ private slots:
         QTest::addColumn<double>("v");
         QTest::addColumn<double>("noFt");
         QTest::addColumn<double>("withFt");
-        // CODES.md §7.2 derived vectors, T = 1.0 s.
+        // docs/codes.md §7.2 derived vectors, T = 1.0 s.
         QTest::newRow("CODES 7.2 Ts=0.5") << 0.5 << 1.2 << 0.064 << 0.112038 << 0.183718;
         QTest::newRow("CODES 7.2 Ts=0.8") << 0.8 << 1.48125 << 0.079 << 0.138296 << 0.226776;
         QTest::newRow("CODES 7.2 Ts=1.0") << 1.0 << 1.5 << 0.080 << 0.140047 << 0.229647;
@@ -109,7 +110,7 @@ private slots:
         QCOMPARE_LE(std::abs(entry(r, "k") - 1.25), 1e-12);
         QCOMPARE_LE(std::abs(entry(r, "C_vn") - 0.131301), 5e-7);
         QCOMPARE_LE(std::abs(r.topRatio - 0.275), 5e-4);
-        QCOMPARE_LE(std::abs(r.topRatio - 0.27502), 5e-6); // CODES.md §1
+        QCOMPARE_LE(std::abs(r.topRatio - 0.27502), 5e-6); // docs/codes.md §1
         QVERIFY(!r.topRatioWithoutFt.has_value());         // ATC 3-06 has no F_t
         // Caps 2.5 A_a/R = 0.18182 and (S3, A_a >= 0.3) 2.0 A_a/R = 0.14545 do not govern.
         QCOMPARE_LE(std::abs(entry(r, "2.0A_a/R") - 0.145455), 5e-7);

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Bad input is refused with a message naming the field, the value and the allowed range;
-// nothing is computed from it (SPEC §9, issue #3).
+// nothing is computed from it (docs/theory.md §9, issue #3).
 
 #include "core/codes/CodeSet.h"
 #include "core/codes/DesignCheck.h"
@@ -134,7 +135,7 @@ private slots:
         QVERIFY2(got.contains(message), qPrintable("got: '" + got + "'"));
     }
     void zoneZeroIsNoRequirement() {
-        // CODES.md §2.2: zone 0 has no seismic force requirement: V = 0, ratio 0.
+        // docs/codes.md §2.2: zone 0 has no seismic force requirement: V = 0, ratio 0.
         Ubc1976Inputs in;
         in.zone = 0;
         const CodeResult r = ubc1976(Building{}, in);

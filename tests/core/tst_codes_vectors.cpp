@@ -1,4 +1,5 @@
-// CODES.md §7 test vectors for UBC 1997, ASCE 7 and EN 1998-1, to the digits printed there.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// docs/codes.md §7 test vectors for UBC 1997, ASCE 7 and EN 1998-1, to the digits printed there.
 
 #include "core/codes/Asce7_22.h"
 #include "core/codes/Eurocode8.h"
@@ -33,7 +34,7 @@ class TestCodesVectors : public QObject {
     Q_OBJECT
 private slots:
     void ubc1997Spreadsheet() {
-        // CODES.md §7.1 #3 [S16]: zone 2B, S_B, I = 1.25, dual concrete shear walls R = 6.5,
+        // docs/codes.md §7.1 #3 [S16]: zone 2B, S_B, I = 1.25, dual concrete shear walls R = 6.5,
         // C_t = 0.020, h_n = 191 ft → T = 1.03 s; C_vI/(RT) = 0.037; 2.5C_aI/R = 0.096;
         // 0.11C_aI = 0.0275; V = 0.037 W.
         Building b;
@@ -56,7 +57,7 @@ private slots:
         near(r.baseShearCoefficient / 1.4, 0.027, 0.0005); // allowable-stress level
     }
     void ubc1997Paper() {
-        // CODES.md §7.2: zone 4, S_D, N_a = N_v = 1, I = 1, R = 8.5, T = 1.0 → V/W = 0.075294
+        // docs/codes.md §7.2: zone 4, S_D, N_a = N_v = 1, I = 1, R = 8.5, T = 1.0 → V/W = 0.075294
         // (max 0.12941, min 0.0484, zone-4 min 0.037647); F16/w = 0.216138 with F_t.
         Ubc1997Inputs in;
         const CodeResult r = ubc1997(paperBuilding(), in);
@@ -67,15 +68,15 @@ private slots:
         near(r.topRatio, 0.216138, 1e-6); // printed 0.216138; exact 0.2161384
     }
     void ubc1997SpectrumTable() {
-        // CODES.md §7.1 #8 [S14]: zone 1, S_D: C_a = 0.12, C_v = 0.18 → T_s = C_v/(2.5 C_a) = 0.6
-        // s.
+        // docs/codes.md §7.1 #8 [S14]: zone 1, S_D: C_a = 0.12, C_v = 0.18 → T_s = C_v/(2.5 C_a) =
+        // 0.6 s.
         near(ubc97Ca(Ubc97Soil::SD, Ubc97Zone::Z1, 1.0), 0.12, 0);
         near(ubc97Cv(Ubc97Soil::SD, Ubc97Zone::Z1, 1.0), 0.18, 0);
         // Zone 4 columns scale with the near-source factors (Tables 16-Q/R).
         near(ubc97Cv(Ubc97Soil::SD, Ubc97Zone::Z4, 1.6), 0.64 * 1.6, 1e-15);
     }
     void asceTedds() {
-        // CODES.md §7.1 #4 [S37]: S_DS = 1.2, S_D1 = 0.5, h_n = 66 ft, C_t = 0.02, x = 0.75,
+        // docs/codes.md §7.1 #4 [S37]: S_DS = 1.2, S_D1 = 0.5, h_n = 66 ft, C_t = 0.02, x = 0.75,
         // R = 3.25, I_e = 1 → T_a = 0.463 s; eq. 12.8-2 = 0.3692; eq. 12.8-3 = 0.3322 = C_s.
         Building b;
         b.stories = 5;
@@ -90,7 +91,7 @@ private slots:
         near(r.baseShearCoefficient, 0.3322, 0.00005);
     }
     void asceEnercalc() {
-        // CODES.md §7.1 #5 [S36]: S_DS = 1.0, R = 6.5, I_e = 1, levels w = 41.40 k at 8 ft and
+        // docs/codes.md §7.1 #5 [S36]: S_DS = 1.0, R = 6.5, I_e = 1, levels w = 41.40 k at 8 ft and
         // 20.90 k at 17 ft, k = 1 → C_s = 0.1538, V = 9.58 k, C_vx = 0.517 / 0.482,
         // F2 = 4.96 k, F1 = 4.62 k, F2/w2 = 0.2373. S_D1 is not printed there: 0.6 keeps eq. 12.8-2
         // governing (S_D1/T > S_DS for T_a = 0.167 s).
@@ -115,7 +116,7 @@ private slots:
         near(r.topRatio, 0.2373, 0.00005);
     }
     void ascePaper() {
-        // CODES.md §7.2: S_DS = 1.0, S_D1 = 0.6, R = 6, I_e = 1, T = 1.0 (T_a = 0.9705 s,
+        // docs/codes.md §7.2: S_DS = 1.0, S_D1 = 0.6, R = 6, I_e = 1, T = 1.0 (T_a = 0.9705 s,
         // C_u T_a = 1.359) → C_s = 0.100, k = 1.25, F16/w = 0.210081.
         const CodeResult r = asce7_22(paperBuilding(), Asce7Inputs{});
         near(entry(r, "T_a"), 0.9705, 0.00005);
@@ -126,7 +127,7 @@ private slots:
         near(r.topRatio, 0.210081, 5e-7);
     }
     void asceFloorsAfterMinimum() {
-        // CODES.md pitfall 6: min of 12.8-2/12.8-3 first, then the floors. Long period, low
+        // docs/codes.md §8: min of 12.8-2/12.8-3 first, then the floors. Long period, low
         // S_D1: S_D1/(T R) = 0.1/(4·8) = 0.003125 < 0.044·S_DS = 0.022 → C_s = 0.022.
         Building b = paperBuilding();
         b.period = 4.0;
@@ -139,14 +140,14 @@ private slots:
         near(asce7_22(b, in).baseShearCoefficient, 0.046875, 1e-15);
     }
     void ascePeriodCap() {
-        // §12.8.2: an entered T above C_u T_a is cut to C_u T_a (CODES.md pitfall 13).
+        // §12.8.2: an entered T above C_u T_a is cut to C_u T_a (docs/codes.md §8).
         Building b = paperBuilding();
         b.period = 3.0;
         const CodeResult r = asce7_22(b, Asce7Inputs{});
         near(r.periodSeconds, 1.4 * 0.02 * std::pow(177.0, 0.75), 1e-12);
     }
     void ec8Paper() {
-        // CODES.md §7.2: Type 1, ground C, a_g = 0.25 g, q = 3.9, T_1 = 1.0, λ = 0.85 →
+        // docs/codes.md §7.2: Type 1, ground C, a_g = 0.25 g, q = 3.9, T_1 = 1.0, λ = 0.85 →
         // S_d = 0.110577 g; F_b/W = 0.093990; F16/w (linear) = 0.176923.
         const CodeResult r = eurocode8(paperBuilding(), Eurocode8Inputs{});
         near(entry(r, "S_d(T_1)/g"), 0.110577, 5e-7);

@@ -1,4 +1,5 @@
-// The cancellation-free closed forms of core/excitation/DecaySineIntegrals (NUMERICS.md §5.1
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The cancellation-free closed forms of core/excitation/DecaySineIntegrals (docs/theory.md §6.2
 // "numerical hygiene", §4 row 12) against composite Gauss-Legendre quadrature of a(tau),
 // over short and long spans and with beta close to alpha.
 

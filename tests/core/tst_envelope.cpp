@@ -1,5 +1,6 @@
-// The enveloped sine of SPEC §3: presets against Table 4, S_max against a brute-force maximum,
-// closed-form integrals against quadrature.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The enveloped sine of docs/theory.md §3: presets against Table 4, S_max against a brute-force
+// maximum, closed-form integrals against quadrature.
 
 #include "core/excitation/EnvelopedSine.h"
 
@@ -27,8 +28,9 @@ private slots:
         QCOMPARE_LE(std::abs(got.tauDur / want.tauDur - 1.0), 0.005);
     }
     void peakOfEnvelopeDiffersFromTable4() {
-        // SPEC §3: with the round alpha, beta the peak of e falls at 26.90 / 39.64 / 64.60
-        // (ln(beta/alpha)/(beta-alpha)/t*: 26.894, 39.629, 64.598; SPEC rounds the second up).
+        // docs/theory.md §3: with the round alpha, beta the peak of e falls at 26.90 / 39.64
+        // / 64.60 (ln(beta/alpha)/(beta-alpha)/t*: 26.894, 39.629, 64.598; SPEC rounds the second
+        // up).
         QCOMPARE_LE(
             std::abs(Envelope::fromPreset(EnvelopePreset::Fast).computedTimes(0.099).tauMax -
                      26.90),

@@ -1,5 +1,6 @@
-// The event-driven exact solver (SPEC §4, §6): the paper's critical ratio, and agreement with an
-// independent quadrature reference to 1e-9 relative in tau_c.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The event-driven exact solver (docs/theory.md §4, §6): the paper's critical ratio, and agreement
+// with an independent quadrature reference to 1e-9 relative in tau_c.
 
 #include "QuadratureReference.h"
 #include "core/excitation/EnvelopedSine.h"

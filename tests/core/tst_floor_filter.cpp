@@ -1,4 +1,5 @@
-// The floor filter (SPEC §7, paper eq. 6) and the spectra and envelope of Figs. 25-27.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The floor filter (docs/theory.md §7, paper eq. 6) and the spectra and envelope of Figs. 25-27.
 //  - Nigam-Jennings recurrence vs the closed-form harmonic steady state (to 1e-6);
 //  - vs an independent RK4 integration with fine sub-steps on a real record;
 //  - the paper's observation (Figs. 25-26): the floor motion of the Pacoima Dam record through
@@ -187,8 +188,8 @@ void TestFloorFilter::envelopeFitRecoversSyntheticEnvelope_data() {
     QTest::addColumn<double>("alpha");
     QTest::addColumn<double>("beta");
     QTest::addColumn<double>("hz");
-    // SPEC §3 presets. The fast envelope rises in ~0.5 s: at 1 Hz only one half cycle samples
-    // the rise and beta is undetermined, so that row uses 5 Hz (several peaks on the rise).
+    // docs/theory.md §3 presets. The fast envelope rises in ~0.5 s: at 1 Hz only one half cycle
+    // samples the rise and beta is undetermined, so that row uses 5 Hz (several peaks on the rise).
     QTest::newRow("moderate 0.15 0.40 at 1 Hz") << 0.15 << 0.40 << 1.0;
     QTest::newRow("slow 0.04 0.40 at 1 Hz") << 0.04 << 0.40 << 1.0;
     QTest::newRow("fast 0.01 2.0 at 5 Hz") << 0.01 << 2.0 << 5.0;

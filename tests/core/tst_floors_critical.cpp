@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The critical PGA per level: the record search driven by each level's motion against a
 // brute-force scan that scales the ground record itself (step 0.005 g of PGA), recomputes
 // every floor motion from the scaled ground and runs the slab until it first collapses. The

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The codes' floor-acceleration demands:
 //  - ASCE 7-22 eq. 13.3-4 (H_f) at the worked values T_a = 1.0 s (a_1 = 1, a_2 = 0.84,
 //    H_f(roof) = 2.84) and T_a = 0.4 s (a_1 = 2.5, a_2 = 0, H_f(roof) = 3.5), evaluated by hand

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The shear-building model of the floor-motion check:
 //  - 2 levels against the closed form of the 2-DOF frequency equation
 //    m1 m2 w^4 - (m1 k2 + m2 (k1 + k2)) w^2 + k1 k2 = 0 and its mode shapes;

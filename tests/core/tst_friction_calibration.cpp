@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The chapter III procedure end to end on the shipped Table 1 (core/friction/FrictionCalibration):
 // the outlier test drops run #7 of BJ-F-NG-200 exactly as the paper did, and the composite of
 // the kept runs is Table 3b (iv).

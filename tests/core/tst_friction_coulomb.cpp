@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // mu_inf as the least-squares slope of tau_inf = V_inf / A_b against CP (Furgerson 1980 ch. III,
 // Fig. 21): 0.55 (BJ-F-NG), 0.60 (HJ-F-NG), 0.66 (BJ-F-G), CP <= 400 psi. The bearing area A_b is
 // not in the surviving text, so the paper's mu_inf can be tested only through what does not

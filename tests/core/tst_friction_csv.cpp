@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Triplet test CSV import (layout of the transcribed Furgerson 1980 Table 1): the shipped
 // table reads back as 46 curves, and every broken input is refused naming line and column.
 

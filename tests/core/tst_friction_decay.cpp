@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The post-fracture decay law and its fit (Furgerson 1980 ch. III, Eqs. 2-5): the work
 // abscissa, the closed-form regression, the V_inf minimization, and the paper's Table 3a/3b.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Percentage points, Grubbs' outlier test and the confidence intervals of Furgerson (1980)
 // Table 3c.
 

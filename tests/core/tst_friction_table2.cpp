@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Furgerson (1980) Table 2: the composite fits per configuration and CP, refitted from the
 // Table 1 transcription. TRANSCRIPTION_NOTES.md (check 7) shows which rows the data reproduce:
 // BJ-F-NG 100 and 200 fully, BJ-F-NG 300 (tests 6, 44, 13) except c. The other rows' composites

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hostile and foreign input files: every limit of core/io/InputLimits.h is enforced with a
 // message naming the input and the limit; a UTF-8 byte-order mark and Latin-1 header text are
 // read; numbers parse the same in a German locale (decimal comma) as in C; header counts are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The precision study's reference (core/slab/LongDoubleReplay.h): the exact solver's event
 // sequence replayed in long double. Where double suffices it agrees with the solver to double
 // rounding; on the high-frequency case it finds the solver's accumulated rounding, which an

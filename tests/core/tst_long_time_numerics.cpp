@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Long runs and extreme inputs of the 1-DOF exact solver: no NaN, no false collapse, no hang.
 // Each case reproduces a failure seen before the envelope's integrals were written so that no
 // intermediate leaves the range of double (a long slip at tau > 709.78 / (d t*) multiplied an

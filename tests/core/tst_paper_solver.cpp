@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The 1980 RK4 baseline (Appendix) against the exact solver on the paper's grid
 // (A 0.70..1.15 by 0.05, f 0.5..1.125 by 0.125, three envelopes): it converges as H shrinks
 // and agrees on every outcome at H = T/1024.

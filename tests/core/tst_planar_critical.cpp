@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Critical amplitudes of the planar model (Furgerson 1980, ch. VI, Figs. 37-42): "the critical
 // zones from the result of the two-degree-of-freedom model occur at lower lateral accelerations
 // than do the critical zone results from the one-degree-of-freedom model", and "as the constant

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Golden comparison of the planar solver over the paper's planar surfaces (Furgerson 1980,
 // ch. VI, Figs. 37-42: moderate envelope, mu 0.6, A_y = 0.9 A_x, f_y = 0.2, 0.5, 1, 2, 5, 10 Hz),
 // on the paper grid A_x 0.70:0.05:1.15, f_x 0.5:0.125:1.125, gravity only and with the shipped

@@ -1,9 +1,11 @@
-// The two S_max normalizations of the planar model (SPEC §5) and the side a slab leaves by.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The two S_max normalizations of the planar model (docs/theory.md §5) and the side a slab leaves
+// by.
 //  - product (default, ch. IV): each component peaks at its amplitude;
 //  - envelope (as printed in ch. VI): each peaks at A max(e sin) / max(e).
 // Both peaks are checked against an independent fine sampling of the paper's formula.
-// SPEC §5: with the default, gravity only, f_y = 0.2 Hz and f_x = 2 Hz the slab leaves along
-// the walls from A_x = 0.85 (the paper reports no such collapse).
+// docs/theory.md §5: with the default, gravity only, f_y = 0.2 Hz and f_x = 2 Hz the slab leaves
+// along the walls from A_x = 0.85 (the paper reports no such collapse).
 
 #include "core/slab/PlanarCase.h"
 

@@ -1,6 +1,7 @@
-// With A_y = 0 and no vertical motion the planar model is the 1-DOF model (SPEC §5; the paper
-// checks this in ch. VI): its collapse time must agree with the closed-form event-driven 1-DOF
-// solver to 1e-8 relative over the paper's grid (A 0.70:1.15:0.05, f 0.5:1.125:0.125) for the
+// SPDX-License-Identifier: GPL-3.0-or-later
+// With A_y = 0 and no vertical motion the planar model is the 1-DOF model (docs/theory.md §5; the
+// paper checks this in ch. VI): its collapse time must agree with the closed-form event-driven
+// 1-DOF solver to 1e-8 relative over the paper's grid (A 0.70:1.15:0.05, f 0.5:1.125:0.125) for the
 // three envelope presets.
 
 #include "core/slab/PlanarCase.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The planar work-precision study (core/numerics/PlanarPrecision.h): what the tolerance of the
 // planar solver buys. Its reference (the solver at rel 1e-13) must agree with an independent
 // method, Moreau's implicit Euler at h = 2e-3 and 1e-3 with Richardson extrapolation, as in

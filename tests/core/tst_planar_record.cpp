@@ -1,8 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The planar slab driven by records (core/slab/PlanarRecordCase.h): with no motion along the
 // walls and no vertical motion it is the 1-DOF slab under the same record, so its collapse time
 // must agree with the event-driven 1-DOF solver (exact for the interpolated record) to 1e-8
-// relative (SPEC §5's check, here for records); a second component moves the slab along the
-// walls, scaled by the first component's factor.
+// relative (docs/theory.md §5's check, here for records); a second component moves the slab along
+// the walls, scaled by the first component's factor.
 
 #include "core/excitation/FloorFilter.h"
 #include "core/io/RecordReader.h"

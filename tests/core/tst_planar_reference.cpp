@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Genuinely two-dimensional runs of the planar solver against two independent references:
-//  - Moreau's proximal implicit Euler (NUMERICS.md §2.5), first order, at steps h and h/2 with
+//  - Moreau's proximal implicit Euler (docs/theory.md §6.5), first order, at steps h and h/2 with
 //    Richardson extrapolation (no event location at all, so it shares no logic with the solver);
 //  - the solver itself at a much tighter tolerance (self-convergence).
 // And lift-off: a vertical motion that reaches -1 g ends the run at the first n = 0, which is
@@ -33,7 +34,7 @@ void TestPlanarReference::agreesWithMoreau_data() {
     QTest::newRow("A_x 0.9, f_x 0.75, f_y 2") << 0.9 << 0.75 << 2.0 << 0.0 << 1;
     QTest::newRow("A_x 0.9, f_x 1, f_y 1.25, vertical 0.4 g at 3 Hz")
         << 0.9 << 1.0 << 1.25 << 0.4 << 1;
-    QTest::newRow("SPEC §5 along-wall exit, A_x 0.9, f_x 2, f_y 0.2")
+    QTest::newRow("docs/theory.md §5 along-wall exit, A_x 0.9, f_x 2, f_y 0.2")
         << 0.9 << 2.0 << 0.2 << 0.0 << 2;
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The project file: round trip of every field, the shipped example, and broken files.
 
 #include "core/io/Project.h"

@@ -1,5 +1,6 @@
-// The planar settings in the project file (SPEC §10, core/io/PlanarJson.h): round trip, old
-// projects without the key, and a message naming each bad field and its value.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The planar settings in the project file (docs/user-guide.md, core/io/PlanarJson.h): round trip,
+// old projects without the key, and a message naming each bad field and its value.
 
 #include "core/io/Project.h"
 

@@ -1,6 +1,7 @@
-// The project's record excitation (SPEC §7, §10): JSON round trip with the file stored relative
-// to the project, each bad field named with its value, a missing or broken record file, and
-// projects without the key (the sine) loading unchanged.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The project's record excitation (docs/theory.md §7; docs/user-guide.md): JSON round trip with the
+// file stored relative to the project, each bad field named with its value, a missing or broken
+// record file, and projects without the key (the sine) loading unchanged.
 
 #include "core/io/MotionJson.h"
 #include "core/io/Project.h"

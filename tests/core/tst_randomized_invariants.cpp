@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A seeded random walk over the documented input ranges of the 1-DOF model (README, "Numerics":
 // f 0.01-100 Hz, A up to 100 g, mu from near 0 to above the peak, the three envelopes and
 // custom ones, walls of 3-12 in): every run ends with a defined outcome and every number it

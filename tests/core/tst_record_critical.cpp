@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The critical scale of a record (core/sweep/CriticalRecordScale.h): the smallest peak (g) of
 // the scaled driving motion that collapses the 1-DOF slab, checked against an independent
 // brute-force scan in steps of 0.001 g (each step a direct exact-solver run of the scaled

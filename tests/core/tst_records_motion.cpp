@@ -1,4 +1,5 @@
-// RecordedMotion (SPEC §3, §6): a linearly interpolated record as the slab's base motion.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// RecordedMotion (docs/theory.md §3, §6): a linearly interpolated record as the slab's base motion.
 // Its integrals are checked against the Cauchy formula integrated by Simpson's rule (exact for
 // the piecewise-quadratic integrand), its crossings and bounds against dense sampling, and the
 // exact solver driven by a record against an independent small-step integration.
@@ -48,8 +49,8 @@ template <class F> double simpson(const Interp& in, double t0, double t1, F&& w)
     return sum;
 }
 
-// Independent reference: explicit small steps with the slab rules of SPEC §4; each step uses
-// the trapezoid of a, a stop is placed by linear interpolation of the velocity.
+// Independent reference: explicit small steps with the slab rules of docs/theory.md §4; each step
+// uses the trapezoid of a, a stop is placed by linear interpolation of the velocity.
 struct Reference {
     double tauC = std::nan("");
     double maxAbs = 0, residual = 0;

@@ -1,6 +1,8 @@
-// Accelerogram readers (SPEC §7): every shipped sample record parses with its header's point
-// count, dt and the peak values listed in resources/records/SOURCES.md; header variants listed
-// in SOURCES.md "Parser notes" parse; every broken-file mode is a RecordError with a line number.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Accelerogram readers (docs/theory.md §7): every shipped sample record parses with its header's
+// point count, dt and the peak values listed in resources/records/SOURCES.md; header variants
+// listed in SOURCES.md "Parser notes" parse; every broken-file mode is a RecordError with a line
+// number.
 
 #include "core/io/At2Reader.h"
 #include "core/io/CsmipV2Reader.h"

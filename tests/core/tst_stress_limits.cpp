@@ -1,6 +1,7 @@
-// Stress suite, limits of the friction model (SPEC §11; NUMERICS.md §4 rows 3, 5, 6, 7, 16):
-// mu = 0, mu at and above the peak, grazing onset against its asymptotic closed form, slip
-// reversal without sticking, duration caps, the chattering guard. Every run must end with a
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Stress suite, limits of the friction model (docs/theory.md §6.6; docs/theory.md §6.6 cases 3, 5,
+// 6, 7, 16): mu = 0, mu at and above the peak, grazing onset against its asymptotic closed form,
+// slip reversal without sticking, duration caps, the chattering guard. Every run must end with a
 // defined outcome and no NaN, and agree with its reference.
 
 #include "QuadratureReference.h"
@@ -40,7 +41,7 @@ double globalPeak(const EnvelopedSine& a) {
 class TestStressLimits : public QObject {
     Q_OBJECT
 private slots:
-    // mu = 0: v = -int a, delta = -int int a exactly (NUMERICS.md §4 row 6), here against
+    // mu = 0: v = -int a, delta = -int int a exactly (docs/theory.md §6.6 case 6), here against
     // composite Gauss-Legendre quadrature of a(tau) (no closed forms).
     void zeroFriction_data() {
         QTest::addColumn<double>("A");
@@ -71,7 +72,7 @@ private slots:
         QCOMPARE_LE(std::abs(r.events.back().velocity + want.first), 1e-11 * std::max(1.0, A));
     }
 
-    // mu above the peak: never slips, delta stays exactly 0 (NUMERICS.md §4 row 7); mu just
+    // mu above the peak: never slips, delta stays exactly 0 (docs/theory.md §6.6 case 7); mu just
     // above by 1e-12 relative is the same; mu = peak exactly touches without crossing.
     void noSlipAtOrAbovePeak_data() {
         QTest::addColumn<double>("A");
@@ -117,7 +118,7 @@ private slots:
         QCOMPARE(rows, 201);
     }
 
-    // Grazing onset (NUMERICS.md §4 row 3, [derived, numerically verified]): where
+    // Grazing onset (docs/theory.md §6.6 case 3, [derived, numerically verified]): where
     // |a| - mu = d - k (t - t_m)^2 near the peak, the slip lasts 3 sqrt(d/k) and leaves
     // (9/4) d^2 / k. The relative error of that asymptote is O(sqrt(d)) (NUMERICS: 4.4e-3 at
     // d = 1e-2, 7e-5 at 1e-5; here below 0.01 sqrt(d)), hence the tolerance 0.1 sqrt(d). Plus
@@ -167,8 +168,8 @@ private slots:
         QCOMPARE_LE(std::abs(std::abs(r.residualDelta) / want - 1.0), tol);
     }
 
-    // Reversal without sticking (NUMERICS.md §4 row 5): at v = 0 with |a| > mu the slab slides
-    // back at once; with |a| <= mu it sticks. Against the independent quadrature reference.
+    // Reversal without sticking (docs/theory.md §6.6 case 5): at v = 0 with |a| > mu the slab
+    // slides back at once; with |a| <= mu it sticks. Against the independent quadrature reference.
     void reversalWithoutSticking_data() {
         QTest::addColumn<double>("A");
         QTest::addColumn<double>("f");
@@ -209,8 +210,8 @@ private slots:
                     1e-9 * std::max(1.0, std::abs(want.residualDelta)));
     }
 
-    // Duration cap (SPEC §4 tau_out): stable at the cap, with the state the uncapped run has
-    // there (rebuilt from its events by History's closed forms); a cap after tau_c changes
+    // Duration cap (docs/theory.md §4 tau_out): stable at the cap, with the state the uncapped run
+    // has there (rebuilt from its events by History's closed forms); a cap after tau_c changes
     // nothing. Moderate, A = 1, f = 1 collapses at tau_c = 40.540 (tst_exact_solver).
     void durationCap_data() {
         QTest::addColumn<double>("cap");
@@ -258,7 +259,7 @@ private slots:
         QCOMPARE_GT(r.slipIntervals, 300); // a slip in every half-period once e is large
     }
 
-    // The chattering guard (NUMERICS.md §4 row 16): a run that needs more events than
+    // The chattering guard (docs/theory.md §6.6 case 16): a run that needs more events than
     // allowed ends as failed with the reason, after exactly that many.
     void chatteringGuard() {
         const EnvelopedSine a = moderate(100.0, 20.0); // ~1800 events (precision study)

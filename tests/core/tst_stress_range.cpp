@@ -1,7 +1,8 @@
-// Stress suite, range of the inputs (SPEC §11; NUMERICS.md §4 rows 8, 10, 11, 12, 13 and the
-// metamorphic tests): f from 0.01 to 100 Hz, A up to 100 g, alpha close to beta, against the
-// independent quadrature reference; a -> -a, amplitude scaling and time scaling, which need
-// no reference at all.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Stress suite, range of the inputs (docs/theory.md §6.6; docs/theory.md §6.6 cases 8, 10, 11, 12,
+// 13 and the metamorphic tests): f from 0.01 to 100 Hz, A up to 100 g, alpha close to beta, against
+// the independent quadrature reference; a -> -a, amplitude scaling and time scaling, which need no
+// reference at all.
 
 #include "QuadratureReference.h"
 #include "StressHelpers.h"
@@ -25,7 +26,7 @@ struct Case {
 // Against the independent quadrature reference (tests/core/QuadratureReference.h). Its event
 // times come from bisection to 1e-15 relative: an error dt there moves the velocity by at most
 // (A + mu) dt and the displacement, over a slip no longer than a half-period pi / omega, by
-// (A + mu) dt pi / omega. The flow is non-expansive (NUMERICS.md §1 F5), so these add up over
+// (A + mu) dt pi / omega. The flow is non-expansive (docs/theory.md §6.1 F5), so these add up over
 // the slips: that sum (or 1e-9 relative) bounds the residual difference.
 void compareWithReference(const Case& c, const SlabResult& r) {
     const EnvelopedSine a(c.envelope, c.A, c.f, 0.099);

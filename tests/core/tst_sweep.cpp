@@ -1,4 +1,5 @@
-// Sweeps over (A, f) grids (SPEC §4, §11): same numbers as single runs, on all threads,
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Sweeps over (A, f) grids (docs/theory.md §4, §6.6): same numbers as single runs, on all threads,
 // cancellable; the shape of the paper's gamma_c surfaces (Figs. 28-34); A_crit.
 
 #include "core/sweep/CriticalAmplitude.h"
@@ -25,7 +26,8 @@ class TestSweep : public QObject {
     Q_OBJECT
 private slots:
     void listSyntax() {
-        // SPEC §12: start:stop:step includes stop when it lies on the grid within 1e-9.
+        // docs/user-guide.md "The command line": start:stop:step includes stop when it lies on the
+        // grid within 1e-9.
         QCOMPARE(parseList("0.7:1.15:0.05").values.size(), std::size_t(10));
         QCOMPARE(parseList("0.5:2.25:0.0078125").values.size(), std::size_t(225));
         QCOMPARE(parseList("0.5:1.5:0.00390625").values.size(), std::size_t(257));

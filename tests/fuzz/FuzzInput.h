@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // libFuzzer harnesses (built and run by scripts/fuzz.sh): each feeds the bytes to one reader
 // and lets only that reader's documented error through. Anything else — a crash, a sanitizer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes core/io/CsmipV2Reader: any bytes give a record or a RecordError.
 #include "FuzzInput.h"
 #include "core/io/CsmipV2Reader.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the friction test CSV reader (core/friction/TripletCsv): any bytes give curves or a
 // TripletCsvError.
 #include "FuzzInput.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes core/io/PlainTextReader (a column of values, and time-acceleration pairs) and the
 // format detection in front of it: any bytes give a record or a RecordError.
 #include "FuzzInput.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes the project loader (core/io/Project): any bytes give a project or a ProjectError.
 #include "FuzzInput.h"
 #include "core/io/Project.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The 3D γc surface under xcb + Xvfb (Mesa software OpenGL): it renders, reports picks as
 // (amplitude index, frequency index), keeps its overlays, and the window's screenshot carries
 // the rendered surface (a plain grab() of the GL window would be blank).

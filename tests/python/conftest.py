@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Shared fixtures: kinstab-cli (to compare the module with) and the repository's files.
 
 CTest sets KINSTAB_CLI, KINSTAB_SOURCE_DIR and PYTHONPATH=build/python (tests/CMakeLists.txt);

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """NumPy shapes and dtypes of what the module returns."""
 
 import numpy as np

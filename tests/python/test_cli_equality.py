@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The module computes what kinstab-cli computes, bit for bit.
 
 The CLI prints doubles in nlohmann::json's shortest round-trip form and Python's json parses

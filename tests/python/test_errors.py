@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Bad arguments raise ValueError with kinstab-cli's message for the same value: the CLI's
 "--mu 11: friction coefficient must be between 0 and 10" is "mu=11.0: friction coefficient must
 be between 0 and 10" in Python. Each case runs both and compares the text after the name."""

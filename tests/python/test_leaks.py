@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """No memory grows over 10^4 calls (resident set size, after a warm-up)."""
 
 import kinstab

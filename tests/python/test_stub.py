@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The type stub shipped next to the extension names everything the extension exports, and the
 package's public functions carry docstrings."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The GIL is released while the engine works, and Ctrl+C cancels a surface."""
 
 import os

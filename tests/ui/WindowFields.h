@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Finds an input field of the main window by its objectName, as the GUI tests address them;
 // a missing one stops the test (a renamed field must not pass silently).

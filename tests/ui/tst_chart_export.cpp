@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Chart exports (File → Export chart…) go through core's atomic writer (issue 14): a complete
 // SVG or PNG replaces the old file whole; a failed write names the file and the reason and
 // leaves the old file alone.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Floors view: the example project (paper building, Pacoima Dam 164) runs off the GUI
 // thread and shows the PFA profile (model, SDOF roof point, three code demands), the critical
 // PGA of all 16 levels and a picked level's motion with the slab's run; a bad record path is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The friction panel offscreen: it starts with the paper's Table 1, fills the table of fits,
 // offers "Use this mu" only with a bearing area, emits useMu(mu) with the Coulomb slope / A_b,
 // and shows a CSV error instead of failing. Set KINSTAB_SCREENSHOT_DIR to keep a PNG of it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The desktop window, offscreen (2D heat map instead of the 3D surface): input checks gate
 // Run, a cancelled sweep keeps its points, a finished sweep shows exactly what runSweep (and
 // kinstab-cli surface) computes, and picking a point shows that point's history.
@@ -87,7 +88,8 @@ private slots:
     }
 
     // The paper's verdict (ch. V): A_crit(1 Hz) = 0.95 against F16/w = 0.140 (UBC 1976) and
-    // 0.275 (ATC 3-06): overstress governs. SPEC §4: A = 0.95 is stable, A = 1.00 collapses.
+    // 0.275 (ATC 3-06): overstress governs. docs/theory.md §4: A = 0.95 is stable, A = 1.00
+    // collapses.
     void paperExampleVerdict() {
         smallGrid();
         w->runAction()->trigger();

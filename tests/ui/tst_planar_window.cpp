@@ -1,7 +1,8 @@
-// The main window's model switch (SPEC §10 "model (1-DOF / planar)", issue #7), offscreen:
-// the planar fields appear only with the planar model and gate Run there; a planar sweep shows
-// what runPlanar computes for each point (independent calls, the vertical record read from the
-// source tree rather than the Qt resource); its A_crit and verdict come from the planar model;
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The main window's model switch (docs/user-guide.md "model (1-DOF / planar)", issue #7),
+// offscreen: the planar fields appear only with the planar model and gate Run there; a planar sweep
+// shows what runPlanar computes for each point (independent calls, the vertical record read from
+// the source tree rather than the Qt resource); its A_crit and verdict come from the planar model;
 // picking shows the planar history; the project keeps the settings; a cancel stops the sweep.
 
 #include "WindowFields.h"

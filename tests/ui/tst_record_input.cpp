@@ -1,6 +1,7 @@
-// A record as the excitation in the desktop window (SPEC §7, §10), offscreen: choosing Record,
-// a sample file and Run gives the same single run and critical scale as the core call
-// (core/sweep/RecordAnalysis.h, itself checked against a brute-force scan in
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A record as the excitation in the desktop window (docs/theory.md §7; docs/user-guide.md),
+// offscreen: choosing Record, a sample file and Run gives the same single run and critical scale as
+// the core call (core/sweep/RecordAnalysis.h, itself checked against a brute-force scan in
 // tst_record_critical), a broken file shows its reason beside the field and blocks Run, and a
 // project with a record survives save and open.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // RecordPreview (ui): loads shipped records from the Qt resources, plots ground, |floor| with
 // its fitted envelope, and the normalized spectra; a broken file leaves a line-numbered
 // message and the previous record. Offscreen; saves a screenshot for inspection.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // File → Export report in the GUI (issue #5): the window's project goes through the same
 // worker analysis and writer as `kinstab-cli report`; read back with poppler's pdftotext.
 // Independent check: A_crit at the building's f = 1/T found here with core's search on the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The report's page layout (issue #5): tables break between rows with the header repeated,
 // figures never split across pages, every page says "page n of N". Read back with pdftotext.
 

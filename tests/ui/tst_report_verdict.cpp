@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One verdict per report (issue 13), read back with poppler's pdftotext. The record example
 // resources/examples/paper-16-story-record.json: page 1 says the verdict rests on the record,
 // gives the record's critical peak (the number core's record analysis finds, the GUI's) with

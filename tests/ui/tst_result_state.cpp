@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Results bound to their inputs (issue 13, ui/ResultState.h), in the offscreen window (2D heat
 // map): Open clears every result; a code-only change keeps A_crit and re-judges the verdict at
 // once; a sweep-input change dims every dependent result until a run with the new inputs; after

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Export of the Teaching view (issue #9): the current frame as PNG and SVG, and a whole run
 // as a numbered PNG sequence; a bad folder gets a message naming it.
 

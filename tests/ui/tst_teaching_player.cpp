@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Teaching view plays a run in step with the solver (issue #9): driven by the player's
 // clock deterministically (advance() with fixed real-time ticks, no waits), the state the
 // drawing shows must be, at every tick, the state of the solver's last event, and the
@@ -62,7 +63,7 @@ private slots:
         QTest::addColumn<TeachingParams>("params");
         QTest::addColumn<double>("speed");
         QTest::addColumn<int>("outcome");
-        // SPEC §4 paper checks: moderate envelope, mu 0.6, t* 0.099, f = 1 Hz.
+        // docs/theory.md §4 paper checks: moderate envelope, mu 0.6, t* 0.099, f = 1 Hz.
         QTest::newRow("SPEC4: A=1.00 f=1 collapses, 1x")
             << paperCase(1.00, 1.0) << 1.0 << int(Outcome::Collapsed);
         QTest::newRow("SPEC4: A=0.95 f=1 stable, 10x")

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One-click presets for the paper's figures and the sliders that re-run (issue #9).
 // Expected settings are the paper's captions (Furgerson 1980, list of figures, Figs. 28-35):
 // Figs. 28-30 gamma_c = tau_max / tau_c and Figs. 31-33 tau_rise / tau_c for the fast,
@@ -126,8 +127,8 @@ private slots:
     }
 
     void fig29PointCollapsesAtPaperCritical() {
-        // Ch. V: for f = 1 Hz on Fig. 29's surface the largest safe A is 0.95; SPEC §4: 1.00
-        // collapses.
+        // Ch. V: for f = 1 Hz on Fig. 29's surface the largest safe A is 0.95; docs/theory.md
+        // §4: 1.00 collapses.
         TeachingView view;
         QVERIFY(view.applyPreset(QStringLiteral("fig29")));
         QCOMPARE(view.run().result().outcome, Outcome::Collapsed);
@@ -170,7 +171,8 @@ private slots:
         QTest::addColumn<int>("sliderValue");
         QTest::addColumn<double>("value");
         using Q = ParameterPanel::Quantity;
-        // A steps of 0.005 g: 190 -> 0.95 g (SPEC §4: stable at f = 1 Hz), 200 -> 1.00 (collapses).
+        // A steps of 0.005 g: 190 -> 0.95 g (docs/theory.md §4: stable at f = 1 Hz), 200 -> 1.00
+        // (collapses).
         QTest::newRow("A slider to 0.95 g") << int(Q::Amplitude) << 190 << 0.95;
         QTest::newRow("A slider to 1.00 g") << int(Q::Amplitude) << 200 << 1.00;
         QTest::newRow("f slider to 0.75 Hz") << int(Q::Frequency) << 150 << 0.75;
@@ -205,7 +207,7 @@ private slots:
         case ParameterPanel::Quantity::WallWidth:
             QCOMPARE(p.wallWidthM, value / 1000.0);
             QCOMPARE_LE(std::abs(view.run().tstar() - std::sqrt(0.1 / (2 * 9.80665))),
-                        1e-15); // SPEC §2
+                        1e-15); // docs/theory.md §2
             break;
         }
         QVERIFY(view.currentPresetId().isEmpty()); // no longer the figure's settings

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Screenshots of the Teaching view at a slip and at collapse (issue #9), rendered offscreen with
 // grab(). Written to $KINSTAB_SCREENSHOT_DIR when set (docs/screenshots/ holds the committed
 // ones), else to a temporary folder; the test checks the view shows the state it claims.

@@ -1,5 +1,7 @@
-// The Records and Numerics tabs of the main window (SPEC §7, §11): a record loads or is refused
-// with its reason; the work-precision study plots one curve per case and solver and cancels.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The Records and Numerics tabs of the main window (docs/theory.md §7, §6.6): a record loads or is
+// refused with its reason; the work-precision study plots one curve per case and solver and
+// cancels.
 
 #include "ui/FrictionPanel.h"
 #include "ui/MainWindow.h"

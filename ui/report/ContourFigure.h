@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Filled contour map of γc over (A, f) with the design overlays: the A_crit(f) curve (the
 // stable/collapse boundary), the code ratios as lines at A = ratio, the building frequency

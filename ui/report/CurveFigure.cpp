@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/report/CurveFigure.h"
 
 #include "ui/report/PlotFrame.h"

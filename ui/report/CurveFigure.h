@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A plain line plot for the report: a few named curves on linear axes with a legend (the
 // record's time histories and Fourier spectra, Figs. 25-27 style).

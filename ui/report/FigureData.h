@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What the report's figures draw: γc on an (A, f) grid and the design overlays. Plain values,
 // filled from a core SweepResult and the design check.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The report's floor-motion section (issue 19), when the project has a "floors" object and a
 // record: the building as a shear building under the ground record, the peak floor
 // acceleration per level against the ASCE 7-22 §13.3.1 and EN 1998-1 §4.3.5.2 demands, the

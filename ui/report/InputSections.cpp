@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Inputs, building-code trails and the excitation: what the engineer entered and what the
 // codes made of it.
 #include "core/excitation/EnvelopedSine.h"

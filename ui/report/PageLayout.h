@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Breaks a ReportDocument into pages and paints them. Layout is done once for a given paint
 // device (fonts are measured on it), so the page count is known before the first page is

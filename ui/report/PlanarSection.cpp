@@ -1,5 +1,6 @@
-// The planar model's inputs in the report (SPEC §10, Furgerson 1980 ch. VI): shown only when
-// the project's model is planar; the surfaces, A_crit(f) and the check then come from it.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The planar model's inputs in the report (docs/user-guide.md, Furgerson 1980 ch. VI): shown only
+// when the project's model is planar; the surfaces, A_crit(f) and the check then come from it.
 #include "ui/PlanarVertical.h"
 #include "ui/report/ReportSections.h"
 

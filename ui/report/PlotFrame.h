@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A 2D plot frame for the report's figures: linear axes with round ticks, mapped into a
 // rectangle, drawn as vector line art and text. Fonts and pens scale with the figure width so

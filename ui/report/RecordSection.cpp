@@ -1,6 +1,7 @@
-// The report's record section (SPEC §7, §10): where the record comes from, how it was scaled and
-// filtered, what it looks like in time and frequency (the paper's Figs. 25-27), what it does to
-// the slab, and the critical peak against the code ratios.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The report's record section (docs/theory.md §7; docs/user-guide.md): where the record comes from,
+// how it was scaled and filtered, what it looks like in time and frequency (the paper's Figs.
+// 25-27), what it does to the slab, and the critical peak against the code ratios.
 
 #include "core/excitation/FourierSpectrum.h"
 #include "ui/RecordPreview.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/report/ReportAnalysis.h"
 
 #include "core/codes/CodeSet.h"
@@ -107,7 +108,7 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
     ReportAnalysis a;
     const Slab1DCase& c = project.slab;
     const bool planar = project.model == "planar";
-    // Every sweep, A_crit search and the check below run the project's model (SPEC §10).
+    // Every sweep, A_crit search and the check below run the project's model (docs/user-guide.md).
     const std::optional<PlanarCase> planarCase =
         planar ? std::optional(projectPlanarCase(c, project.planar)) : std::nullopt;
     const ModelPoint model = modelPoint(c, planarCase);

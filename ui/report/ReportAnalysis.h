@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The analyses a design report shows, run from a project: the codes, the design check, the
 // project's γc sweep, finer sweeps for the figures, A_crit(f), the slice at the building
@@ -19,7 +20,7 @@
 namespace kinstab::ui::report {
 
 // The exact solver's τc checked against the paper's RK4 solver at H = T / paperSteps on the
-// project grid (SPEC §11): an estimate of the τc error, independent of the exact solver.
+// project grid (docs/theory.md §6.6): an estimate of the τc error, independent of the exact solver.
 struct SolverCrossCheck {
     double paperSteps = 1024;
     std::size_t compared = 0;        // points where both collapsed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Assembles the report: title block, summary, then the sections whose analyses ran.
 #include "ui/report/ReportSections.h"
 #include "ui/report/ReportWriter.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A report as a flow of blocks — headings, paragraphs, tables, figures — independent of the
 // page size. PageLayout breaks it into pages: tables break between rows (the header repeats),

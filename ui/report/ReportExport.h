@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // File → Export report… in the GUI: asks for a file name, runs the report's analyses in a
 // worker (busy dialog, cancellable) and writes the same PDF as `kinstab-cli report`.

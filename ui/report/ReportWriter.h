@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The design report (SPEC §10, issue #5): one function builds the document from a project and
-// the analyses already computed, one writes it as a vector PDF. The GUI's File → Export report…
+// The design report (docs/user-guide.md, issue #5): one function builds the document from a project
+// and the analyses already computed, one writes it as a vector PDF. The GUI's File → Export report…
 // and `kinstab-cli report` both call writeReport, so they produce the same document.
 
 #include "core/io/Project.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The γc surface figures, the slice at the building frequency, the verdicts, the numerics and
 // the references.
 #include "ui/report/ContourFigure.h"

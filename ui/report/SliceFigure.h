@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // γc(A) at one frequency (the building's, like the paper's Fig. 34), with A_crit and the code
 // ratios marked; and the excitation plot a(t)/A with its envelope.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The report's summary on page 1: one verdict, and the excitation it rests on. With a record
 // as the project's excitation the record's critical peak governs and the enveloped-sine check is
 // one labelled secondary line; otherwise the enveloped sine's A_crit(1/T) governs. Every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The γc(A, f) surface as a projected wireframe net, like Figs. 28–33 of Furgerson (1980):
 // lines parallel to the A and f axes following the surface, hidden lines removed by painting

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The run's event list (time, kind, delta); the event the clock last reached is highlighted,
 // and a click on a row asks to jump there.

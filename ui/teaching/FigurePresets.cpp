@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/teaching/FigurePresets.h"
 
 namespace kinstab::ui {
@@ -10,7 +11,7 @@ TeachingParams paperParams(EnvelopePreset e, TauScale s, double a, double f) {
     p.scale = s;
     p.amplitude = a;
     p.frequencyHz = f;
-    p.mu = 0.6;                               // the model default (SPEC §8)
+    p.mu = 0.6;                               // the model default (docs/theory.md §8)
     p.wallWidthM = wallWidthFromTstar(0.099); // the "8 inch" wall, t* = 0.099 s (Table 4)
     p.limit = 1.0;                            // bearing = d/2 (ch. IV)
     return p;

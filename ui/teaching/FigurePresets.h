@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One-click settings that reproduce the figures of Furgerson (1980), ch. IV: the gamma_c
 // surfaces of Figs. 28-33 (three envelopes, gamma_c = tau_max / tau_c or tau_rise / tau_c),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Export of what the Teaching view shows: the current frame (drawing above, traces below) as
 // PNG or SVG, and a whole run as a numbered PNG sequence (frame_00000.png, ...) for slides

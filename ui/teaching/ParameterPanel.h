@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Sliders (with exact spin boxes) for A, f, mu and the wall width, plus the envelope, the
 // gamma_c scaling and the bearing limit. Every change emits paramsChanged at once: a run takes

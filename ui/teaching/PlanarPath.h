@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The planar slab's state at any tau from the solver's recorded path (every accepted step and
 // every event): cubic Hermite interpolation of the displacement with the velocities at both

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The side view of the slab on its two walls, drawn with QPainter so the same code paints the
 // widget, a PNG and an SVG. Wall width and bearing are to scale; the span between the walls is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One colour per displayed state, shared by the drawing, the traces and the event log, so a
 // student learns them once.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/teaching/SurfaceMarker.h"
 
 #include "ui/teaching/StateStyle.h"
@@ -29,7 +30,8 @@ MarkerMap computeMap(const TeachingParams& p, const MapRange& r, MapMode mode,
     m.mode = mode;
     const bool planar = p.model == TeachingModel::Planar;
     PlanarCase pc = p.toPlanarCase();
-    pc.solver.recordEvents = pc.solver.recordPath = false; // a sweep keeps tau_c only (SPEC §11)
+    pc.solver.recordEvents = pc.solver.recordPath =
+        false; // a sweep keeps tau_c only (docs/theory.md §6.6)
     const Slab1DCase c = p.toCase();
     m.tauRef = c.tauRef();
     SweepGrid grid;

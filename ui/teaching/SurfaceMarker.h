@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // "Where am I on the surface": a coarse gamma_c(A, f) map (or, for Fig. 34, tau_c against A at
 // the current f) of the current envelope, mu and wall, with the current run marked. The

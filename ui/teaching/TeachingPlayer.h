@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The Teaching view's clock: plays dimensionless time tau at a chosen speed (1x = real time,
 // tau advancing 1/t* per second), pauses, scrubs and steps from event to event. The QTimer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One 1-DOF run prepared for the Teaching view: the solver's event list, and the exact state at
 // any tau rebuilt from it (core/slab/History.h), plus the base motion for the drawing.
@@ -12,8 +13,8 @@
 
 namespace kinstab::ui {
 
-// The wall width whose t* is the given value: d = 2 g t*^2 (SPEC §2, g = 9.80665 m/s^2 as in
-// core's tstarFromWallWidth).
+// The wall width whose t* is the given value: d = 2 g t*^2 (docs/theory.md §2, g = 9.80665 m/s^2 as
+// in core's tstarFromWallWidth).
 constexpr double wallWidthFromTstar(double tstar) {
     return 2.0 * 9.80665 * tstar * tstar;
 }
@@ -21,7 +22,8 @@ constexpr double wallWidthFromTstar(double tstar) {
 // The 1-DOF slab of ch. IV, or the planar 2-DOF slab of ch. VI (gravity only vertically).
 enum class TeachingModel { Slab1D, Planar };
 
-// What the user sets in the Teaching view. The wall width fixes t* = sqrt(d / 2g) (SPEC §2).
+// What the user sets in the Teaching view. The wall width fixes t* = sqrt(d / 2g) (docs/theory.md
+// §2).
 struct TeachingParams {
     EnvelopePreset envelope = EnvelopePreset::Moderate;
     TauScale scale = TauScale::TauMax;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The Teaching view: the slab on its walls, animated in step with one run, the traces with a
 // cursor, the transport (play, pause, speed, scrub, event steps), the event log, parameter

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The planar model's top view (as the paper's Fig. 36b): the two walls in plan, to scale along
 // them (wall length = theta d / 2) and across (wall width d, bearing), the span shortened as in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The traces under the drawing: a(tau) with the +-mu band and the envelope, and delta(tau)
 // coloured by state with the bearing limit; a cursor at the current tau. Already-played time

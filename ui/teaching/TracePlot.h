@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The a(tau) and delta(tau) traces with the cursor (painted by paintTraces). Click or drag to
 // scrub.
