@@ -91,10 +91,8 @@ int runReport(const ArgList& argv) {
                               {"page", paper == PaperSize::A4 ? "a4" : "letter"},
                               {"analysis_wall_time_s", analysis.totalSeconds},
                               {"wall_time_s", seconds}};
-    (out == "-" ? std::cerr : std::cout) << jsonText(j, 2)
-                                         << "
-                                            "; // -o -: stdout holds the PDF
-        return 0;
+    (out == "-" ? std::cerr : std::cout) << jsonText(j, 2) << "\n"; // -o -: stdout holds the PDF
+    return 0;
 }
 
 } // namespace kinstab::cli
