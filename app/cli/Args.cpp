@@ -36,7 +36,8 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
             value = argv[++i];
         }
         if (values_.count(name)) throw UsageError("flag --" + name + " given twice");
-        if (name == "o" && value.empty()) throw UsageError("-o: needs a file name, got ''");
+        if (name == "o" && value.empty())
+            throw UsageError("-o \"\": the file name is empty (use - for stdout)");
         values_[name] = value;
     }
 }

@@ -107,8 +107,11 @@ std::string quotedToken(std::string_view token) {
 }
 
 std::optional<double> parseDouble(std::string_view token) {
-    if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-    if (token.empty() || token.front() == '+') return std::nullopt;
+    if (!token.empty() && token.front() == '+') {
+        token.remove_prefix(1); // "+1.5" as from_chars does not, but never "+-1" or "++1"
+        if (token.empty() || token.front() == '+' || token.front() == '-') return std::nullopt;
+    }
+    if (token.empty()) return std::nullopt;
     double x = 0;
     const char* end = token.data() + token.size();
     const auto [at, ec] = std::from_chars(token.data(), end, x);

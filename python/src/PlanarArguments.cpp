@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "python/src/PlanarArguments.h"
+#include "core/excitation/FrequencyRange.h"
 
 #include "core/excitation/RecordedMotion.h"
 #include "core/io/RecordReader.h"
@@ -29,8 +30,7 @@ PlanarCase planarCaseFrom(const Slab1DCase& common, const PlanarArguments& a) {
     if (!(c.ayRatio >= 0.0 && c.ayRatio <= 100.0))
         badArgument("ay_ratio", c.ayRatio, "A_y / A_x must be between 0 and 100");
     c.fyHz = finite("fy", a.fy);
-    if (!(c.fyHz > 0.0 && c.fyHz <= 1000.0))
-        badArgument("fy", c.fyHz, "must be > 0 and at most 1000 Hz");
+    if (const std::string e = frequencyRangeError(c.fyHz); !e.empty()) badArgument("fy", c.fyHz, e);
     c.slab.theta = finite("theta", a.theta);
     if (!(c.slab.theta > 0.0 && c.slab.theta <= 1e6))
         badArgument("theta", c.slab.theta, "must be > 0 (2 wall length / wall width)");

@@ -3,6 +3,7 @@
 // history as NumPy arrays when asked.
 
 #include "core/excitation/EnvelopedSine.h"
+#include "core/excitation/FrequencyRange.h"
 #include "core/slab/History.h"
 #include "core/slab/PlanarCase.h"
 #include "core/slab/Slab1DCase.h"
@@ -29,8 +30,8 @@ void checkAmplitudeFrequency(double amplitude, double frequency) {
     finite("frequency", frequency);
     if (!(amplitude >= 0.0 && amplitude <= 1000.0))
         badArgument("amplitude", amplitude, "must be between 0 and 1000 g");
-    if (!(frequency > 0.0 && frequency <= 1000.0))
-        badArgument("frequency", frequency, "must be > 0 and at most 1000 Hz");
+    if (const std::string e = frequencyRangeError(frequency); !e.empty())
+        badArgument("frequency", frequency, e);
 }
 
 SlabRun simulate(const Slab1DCase& c, double amplitude, double frequency, bool events, bool history,
