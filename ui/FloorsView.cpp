@@ -265,9 +265,9 @@ void FloorsView::showVerdicts() {
                      .arg([&a] {
                          QStringList m;
                          for (const FloorVerdict& v : a.sineVerdicts)
-                             m << QString::fromStdString(v.code) + " " +
+                             m << QString::fromStdString(v.title) + " " +
                                       (v.margin ? QString::number(*v.margin, 'f', 2) : "—");
-                         return m.join(", ");
+                         return m.join("; ");
                      }());
     if (a.demands.empty()) lines << tr("The project selects neither ASCE 7-22 nor EN 1998-1.");
     m_verdicts->setText(lines.join('\n'));
