@@ -153,7 +153,8 @@ private slots:
     }
     void nonsenseFlags() {
         refused(cli({"critical", "--frequencies", "1", "--mu", "0"}), "--mu 0: A_crit needs");
-        refused(cli({"report", "--project", kExample, "-o", ""}), "-o \"\": the file name is empty");
+        refused(cli({"report", "--project", kExample, "-o", ""}),
+                "-o \"\": the file name is empty");
         // 20.16 s of run (tau_end of this case) every 1e-7: 2e8 rows; it once took 24 GB.
         refused(cli({"simulate", "--amplitude", "1.2", "--frequency", "1", "--history",
                      QDir::temp().filePath("kinstab-never-written.csv"), "--history-step", "1e-7"}),
