@@ -14,6 +14,7 @@
 #include <QtTest>
 
 #include "CliRun.h"
+#include "FileBytes.h"
 
 #include <cstdlib>
 #include <functional>
@@ -21,17 +22,6 @@
 namespace {
 
 constexpr int kRuns = 50; // per command
-
-QByteArray readAll(const QString& path) {
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray("<missing>");
-}
-
-void writeBytes(const QString& path, const QByteArray& bytes) {
-    QFile f(path);
-    QVERIFY(f.open(QIODevice::WriteOnly));
-    QCOMPARE(f.write(bytes), bytes.size());
-}
 
 // Runs args to completion into out; returns the file and sets ms to the wall time.
 QByteArray completeRun(const QStringList& args, const QString& out, qint64& ms) {

@@ -14,6 +14,7 @@
 #include <QtTest>
 
 #include "CliRun.h"
+#include "FileBytes.h"
 
 #include <sys/mount.h>
 #include <sys/stat.h>
@@ -26,17 +27,6 @@ const QStringList kSurface = {"surface", "--amplitudes", "0.3,0.6", "--frequenci
                               "2,4",     "--format",     "csv"};
 const QString kProject =
     QStringLiteral(KINSTAB_SOURCE_DIR "/resources/examples/paper-16-story.json");
-
-QByteArray readAll(const QString& path) {
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray("<unreadable>");
-}
-
-void writeBytes(const QString& path, const QByteArray& bytes) {
-    QFile f(path);
-    QVERIFY(f.open(QIODevice::WriteOnly));
-    QCOMPARE(f.write(bytes), bytes.size());
-}
 
 bool isCharDevice(const char* path) {
     struct stat st {};
