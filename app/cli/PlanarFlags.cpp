@@ -2,9 +2,11 @@
 #include "app/cli/PlanarFlags.h"
 
 #include "app/cli/ModelFlags.h"
+#include "core/codes/Building.h"
 #include "core/excitation/FrequencyRange.h"
 #include "core/excitation/RecordedMotion.h"
 #include "core/io/RecordReader.h"
+#include "core/slab/PlanarSettings.h"
 
 namespace kinstab::cli {
 
@@ -21,9 +23,11 @@ std::shared_ptr<const Excitation1D> verticalFromFile(const std::string& path, do
     } catch (const RecordError& e) {
         throw UsageError("--vertical " + path + ": " + e.what());
     }
-    const std::string e = validateRecordedMotion(record, tstar, std::nullopt);
-    if (!e.empty()) throw UsageError("--vertical " + path + ": " + e);
-    return std::make_shared<RecordedMotion>(record, tstar);
+    try {
+        return verticalMotion(record, tstar, "--vertical " + path);
+    } catch (const InputError& e) {
+        throw UsageError(e.what());
+    }
 }
 } // namespace
 

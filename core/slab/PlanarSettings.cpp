@@ -41,8 +41,13 @@ std::string validatePlanarSettings(const PlanarSettings& s) {
 }
 
 std::shared_ptr<const Excitation1D> verticalMotion(const Accelerogram& record, double tstar) {
+    return verticalMotion(record, tstar, "planar.vertical " + record.sourceFile);
+}
+
+std::shared_ptr<const Excitation1D> verticalMotion(const Accelerogram& record, double tstar,
+                                                   const std::string& field) {
     const std::string e = validateRecordedMotion(record, tstar, std::nullopt);
-    if (!e.empty()) throw InputError("planar.vertical " + record.sourceFile + ": " + e);
+    if (!e.empty()) throw InputError(field + ": " + e);
     return std::make_shared<RecordedMotion>(record, tstar);
 }
 

@@ -40,6 +40,9 @@ std::string validatePlanarSettings(const PlanarSettings& s);
 // The upward base acceleration a_z (g) of a vertical record, from its first sample at tau = 0.
 // Throws InputError naming planar.vertical when the record cannot drive the slab.
 std::shared_ptr<const Excitation1D> verticalMotion(const Accelerogram& record, double tstar);
+// The same, naming the record as field in the message ("--vertical FILE", "vertical='FILE'").
+std::shared_ptr<const Excitation1D> verticalMotion(const Accelerogram& record, double tstar,
+                                                   const std::string& field);
 
 // The planar case of a project: the 1-DOF case's common inputs plus the settings; vertical is
 // null for gravity only. Throws InputError on bad settings or a bad combined case.

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "python/src/PlanarArguments.h"
+#include "core/codes/Building.h"
 #include "core/excitation/FrequencyRange.h"
 
 #include "core/excitation/RecordedMotion.h"
 #include "core/io/RecordReader.h"
+#include "core/slab/PlanarSettings.h"
 #include "python/src/Arguments.h"
 
 namespace kinstab::python {
@@ -16,9 +18,11 @@ std::shared_ptr<const Excitation1D> verticalFromFile(const std::string& path, do
     } catch (const RecordError& e) {
         badArgument("vertical='" + path + "': " + e.what());
     }
-    const std::string e = validateRecordedMotion(record, tstar, std::nullopt);
-    if (!e.empty()) badArgument("vertical='" + path + "': " + e);
-    return std::make_shared<RecordedMotion>(record, tstar);
+    try {
+        return verticalMotion(record, tstar, "vertical='" + path + "'");
+    } catch (const InputError& e) {
+        badArgument(e.what());
+    }
 }
 } // namespace
 
