@@ -24,6 +24,8 @@
 #include <QSettings>
 #include <QStatusBar>
 
+#include "core/codes/CodeCatalog.h"
+
 namespace kinstab::ui {
 
 namespace {
@@ -32,18 +34,12 @@ const QString lastProjectKey = QStringLiteral("project/lastInputs");
 const QString examplePath = QStringLiteral(":/examples/paper-16-story.json");
 
 QColor codeColour(const std::string& code) {
-    if (code == "ubc1976") return QColor(200, 30, 160);
-    if (code == "atc306") return QColor(240, 130, 0);
-    if (code == "ubc1997") return QColor(120, 70, 200);
-    if (code == "asce7_22") return QColor(0, 150, 70);
-    return QColor(0, 120, 200);
+    const CodeInfo* c = findCode(code);
+    return c ? QColor::fromRgb(c->rgb) : QColor(Qt::darkGray);
 }
-// "UBC 1976 §2312" -> "UBC 1976": the legend and charts have little room.
-QString shortTitle(const std::string& title) {
-    QString t = QString::fromStdString(title);
-    for (const QString& cut : {QStringLiteral(" §"), QStringLiteral(" ("), QStringLiteral(":")})
-        if (const qsizetype i = t.indexOf(cut); i > 0) t.truncate(i);
-    return t;
+QString shortName(const std::string& code) {
+    const CodeInfo* c = findCode(code);
+    return QString::fromUtf8(c ? c->shortName : code);
 }
 } // namespace
 
@@ -95,7 +91,7 @@ void MainWindow::updateCodes() {
             m_verdict->setError(QString::fromStdString(e.what()));
         }
         for (const CodeResult& r : m_codeResults)
-            m_overlays.codes.push_back({shortTitle(r.title), r.topRatio, codeColour(r.code)});
+            m_overlays.codes.push_back({shortName(r.code), r.topRatio, codeColour(r.code)});
         // The building's frequency: the entered period, else the first code's estimate.
         if (b.period)
             m_overlays.buildingFrequency = 1.0 / *b.period;

@@ -18,7 +18,7 @@ double asce7DuctilityFactor(double r, double importance, double omega0) {
 
 FloorDemand asce7FloorDemand(const Building& b, const Asce7Inputs& in, double omega0, int slabLevel,
                              bool mce) {
-    beginCodeResult(b, validateAsce7(in), "asce7_22", "");
+    beginCodeResult(b, validateAsce7(in), codeInfo(CodeKey::Asce7_22)); // validates only
     requireRange("floors.asce7_omega0", omega0, 1.0, 5.0);
     requireRange("floors.slab_level", slabLevel, 1, b.stories);
     FloorDemand d;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/codes/Asce7_22.h"
+#include "core/codes/CodeCatalog.h"
 
 #include <algorithm>
 #include <cmath>
@@ -92,8 +93,7 @@ void addPeriod(CodeResult& r, const Building& b, double sd1) {
 } // namespace
 
 CodeResult asce7_22(const Building& b, const Asce7Inputs& in) {
-    CodeResult r = beginCodeResult(b, validateAsce7(in), "asce7_22",
-                                   "ASCE/SEI 7-22 §12.8 (equivalent lateral force)");
+    CodeResult r = beginCodeResult(b, validateAsce7(in), codeInfo(CodeKey::Asce7_22));
     addPeriod(r, b, in.sd1);
     const double t = r.periodSeconds;
     const int rc = in.riskCategory.value_or(asceRiskCategory(b.occupancy));

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/codes/Atc306.h"
+#include "core/codes/CodeCatalog.h"
 
 #include <algorithm>
 #include <cmath>
@@ -76,7 +77,7 @@ void addPeriod(CodeResult& r, const Building& b) {
 } // namespace
 
 CodeResult atc306(const Building& b, const Atc306Inputs& in) {
-    CodeResult r = beginCodeResult(b, validateAtc306(in), "atc306", "ATC 3-06 (1978) §4.2");
+    CodeResult r = beginCodeResult(b, validateAtc306(in), codeInfo(CodeKey::Atc306));
     addPeriod(r, b);
     const double t = r.periodSeconds;
     const double aa = in.mapArea ? atcMapAreaCoefficient(*in.mapArea) : in.aa;

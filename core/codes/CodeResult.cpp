@@ -23,13 +23,12 @@ std::vector<double> distributedRatios(const std::vector<double>& weights,
     return r;
 }
 
-CodeResult beginCodeResult(const Building& b, const std::string& inputError,
-                           const std::string& code, const std::string& title) {
+CodeResult beginCodeResult(const Building& b, const std::string& inputError, const CodeInfo& code) {
     requireValidBuilding(b);
     if (!inputError.empty()) throw InputError(inputError);
     CodeResult r;
-    r.code = code;
-    r.title = title;
+    r.code = code.id;
+    r.title = code.title;
     return r;
 }
 

@@ -4,6 +4,7 @@
 // top-floor ratio F_top / w_top and the trail of every coefficient used, with its clause.
 
 #include "core/codes/Building.h"
+#include "core/codes/CodeCatalog.h"
 
 #include <optional>
 #include <string>
@@ -40,8 +41,7 @@ std::vector<double> distributedRatios(const std::vector<double>& weights,
 
 // Opens a code's result after checking the building and the code's inputs (inputError: the
 // code's validate message, empty when fine): throws InputError before anything is computed.
-CodeResult beginCodeResult(const Building& b, const std::string& inputError,
-                           const std::string& code, const std::string& title);
+CodeResult beginCodeResult(const Building& b, const std::string& inputError, const CodeInfo& code);
 
 // UBC 1976 eqs. 12-6/12-7 and UBC 1997 eqs. 30-14/30-15: V − F_t spread linearly with height,
 // F_t added at level n. Ratios F_x / w_x, bottom first; topWithoutFt leaves F_t off (the

@@ -1,10 +1,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/codes/CodeSet.h"
 
+#include "core/codes/CodeCatalog.h"
+
 namespace kinstab {
 
 std::vector<std::string> codeKeys() {
-    return {"ubc1976", "atc306", "ubc1997", "asce7_22", "ec8"};
+    std::vector<std::string> keys;
+    for (const CodeInfo& c : codeCatalog())
+        keys.emplace_back(c.id);
+    return keys;
+}
+
+bool isSelected(const CodeSelection& c, std::string_view id) {
+    if (id == "ubc1976") return c.ubc1976.has_value();
+    if (id == "atc306") return c.atc306.has_value();
+    if (id == "ubc1997") return c.ubc1997.has_value();
+    if (id == "asce7_22") return c.asce7_22.has_value();
+    return id == "ec8" && c.ec8.has_value();
 }
 
 std::string validateCodes(const CodeSelection& c) {

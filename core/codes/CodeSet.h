@@ -10,6 +10,7 @@
 #include "core/codes/Ubc1997.h"
 
 #include <optional>
+#include <string_view>
 #include <vector>
 
 namespace kinstab {
@@ -26,6 +27,9 @@ struct CodeSelection {
 
 // Keys in output order: ubc1976, atc306, ubc1997, asce7_22, ec8.
 std::vector<std::string> codeKeys();
+
+// Whether the selection holds the code with JSON key `id`.
+bool isSelected(const CodeSelection& codes, std::string_view id);
 
 std::string validateCodes(const CodeSelection& codes); // empty when fine, names "<key>.<field>"
 

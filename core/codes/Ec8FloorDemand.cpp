@@ -12,7 +12,7 @@ double ec8FloorFactor(double zOverH, double ta, double t1) {
 
 FloorDemand ec8FloorDemand(const Building& b, const Eurocode8Inputs& in,
                            std::optional<double> elementPeriod, int slabLevel) {
-    beginCodeResult(b, validateEurocode8(in), "ec8", "");
+    beginCodeResult(b, validateEurocode8(in), codeInfo(CodeKey::Ec8)); // validates only
     requireRange("floors.slab_level", slabLevel, 1, b.stories);
     if (elementPeriod) requireRange("floors.ec8_element_period_s", *elementPeriod, 0.0, 100.0, "s");
     FloorDemand d;

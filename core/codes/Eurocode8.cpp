@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/codes/Eurocode8.h"
+#include "core/codes/CodeCatalog.h"
 
 #include <algorithm>
 #include <cmath>
@@ -128,8 +129,7 @@ void checkApplicability(CodeResult& r, const Eurocode8Inputs& in, const Ec8Spect
 } // namespace
 
 CodeResult eurocode8(const Building& b, const Eurocode8Inputs& in) {
-    CodeResult r = beginCodeResult(b, validateEurocode8(in), "ec8",
-                                   "EN 1998-1:2004 §4.3.3.2 (lateral force method)");
+    CodeResult r = beginCodeResult(b, validateEurocode8(in), codeInfo(CodeKey::Ec8));
     addPeriod(r, b);
     const double t = r.periodSeconds;
     const Ec8SpectrumParameters p = ec8Spectrum(in.ground, in.spectrumType);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/codes/Ubc1976.h"
+#include "core/codes/CodeCatalog.h"
 
 #include <algorithm>
 #include <cmath>
@@ -82,7 +83,7 @@ void addPeriod(CodeResult& r, const Building& b) {
 } // namespace
 
 CodeResult ubc1976(const Building& b, const Ubc1976Inputs& in) {
-    CodeResult r = beginCodeResult(b, validateUbc1976(in), "ubc1976", "UBC 1976 §2312");
+    CodeResult r = beginCodeResult(b, validateUbc1976(in), codeInfo(CodeKey::Ubc1976));
     addPeriod(r, b);
     const double t = r.periodSeconds;
     const double z = ubc1976ZoneFactor(in.zone);

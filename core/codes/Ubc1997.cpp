@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/codes/Ubc1997.h"
+#include "core/codes/CodeCatalog.h"
 
 #include <algorithm>
 #include <cmath>
@@ -118,8 +119,7 @@ void addPeriod(CodeResult& r, const Building& b, Ubc97Zone zone) {
 } // namespace
 
 CodeResult ubc1997(const Building& b, const Ubc1997Inputs& in) {
-    CodeResult r =
-        beginCodeResult(b, validateUbc1997(in), "ubc1997", "UBC 1997 §1630.2 (strength level)");
+    CodeResult r = beginCodeResult(b, validateUbc1997(in), codeInfo(CodeKey::Ubc1997));
     addPeriod(r, b, in.zone);
     const double t = r.periodSeconds;
     const double z = ubc97ZoneFactor(in.zone);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/report/ReportAnalysis.h"
 
+#include "core/codes/CodeCatalog.h"
+
 #include "core/codes/CodeSet.h"
 #include "core/sweep/CriticalAmplitude.h"
 #include "core/sweep/ModelPoint.h"
@@ -86,13 +88,8 @@ SolverCrossCheck crossCheck(const Project& p, const SweepResult& exact, double s
 } // namespace
 
 QString shortCodeName(const std::string& key) {
-    static const std::map<std::string, QString> names{{"ubc1976", QStringLiteral("UBC 1976")},
-                                                      {"atc306", QStringLiteral("ATC 3-06")},
-                                                      {"ubc1997", QStringLiteral("UBC 1997")},
-                                                      {"asce7_22", QStringLiteral("ASCE 7-22")},
-                                                      {"ec8", QStringLiteral("EC8")}};
-    const auto it = names.find(key);
-    return it == names.end() ? QString::fromStdString(key) : it->second;
+    const CodeInfo* c = findCode(key);
+    return c ? QString::fromUtf8(c->shortName) : QString::fromStdString(key);
 }
 
 std::optional<double> designFrequency(const Project& project, const DesignCheckResult& check) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The γc surface figures, the slice at the building frequency, the verdicts, the numerics and
 // the references.
+#include "core/codes/CodeCatalog.h"
+#include "core/codes/CodeSet.h"
 #include "ui/report/ContourFigure.h"
 #include "ui/report/ReportSections.h"
 #include "ui/report/SliceFigure.h"
@@ -208,23 +210,8 @@ void addReferences(ReportDocument& doc, const Project& p) {
         "R. L. Furgerson, Seismic Stability of Block Structures, Report AMES TR-80/002, "
         "University of California, San Diego, 1980 (model, envelopes, Table 4, chapter V "
         "example).")};
-    if (p.codes.ubc1976)
-        refs << QStringLiteral("Uniform Building Code, 1976 edition, §2312, International "
-                               "Conference of Building Officials, Whittier, California.");
-    if (p.codes.atc306)
-        refs << QStringLiteral(
-            "ATC 3-06, Tentative Provisions for the Development of Seismic Regulations for "
-            "Buildings, Applied Technology Council, 1978 (NBS SP 510).");
-    if (p.codes.ubc1997)
-        refs << QStringLiteral("Uniform Building Code, 1997 edition, vol. 2, §1630, International "
-                               "Conference of Building Officials.");
-    if (p.codes.asce7_22)
-        refs << QStringLiteral(
-            "ASCE/SEI 7-22, Minimum Design Loads and Associated Criteria for Buildings and Other "
-            "Structures, ch. 11–12, American Society of Civil Engineers, 2022.");
-    if (p.codes.ec8)
-        refs << QStringLiteral("EN 1998-1:2004, Eurocode 8: Design of structures for earthquake "
-                               "resistance, Part 1, §3.2 and §4.3.3.2, CEN.");
+    for (const CodeInfo& c : codeCatalog())
+        if (isSelected(p.codes, c.id)) refs << QString::fromUtf8(c.citation);
     for (int k = 0; k < refs.size(); ++k)
         doc.addParagraph(QStringLiteral("[%1]  %2").arg(k + 1).arg(refs[k]), true);
 }
