@@ -20,7 +20,6 @@
 #include <QSpinBox>
 #include <QSplitter>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 
 namespace kinstab::ui {
 
@@ -114,20 +113,16 @@ FloorsView::FloorsView(std::function<Project()> source, QWidget* parent)
     connect(m_run, &QPushButton::clicked, this, &FloorsView::run);
     connect(m_cancel, &QPushButton::clicked, this, &FloorsView::cancel);
     connect(m_pick, &QSpinBox::valueChanged, this, &FloorsView::pickLevel);
-    connect(&m_watcher, &QFutureWatcherBase::finished, this, &FloorsView::onFinished);
 }
 
-FloorsView::~FloorsView() {
-    cancel();
-    m_watcher.waitForFinished();
-}
+FloorsView::~FloorsView() = default; // m_job cancels and waits
 
 void FloorsView::setRecordPath(const QString& path) {
     m_record->setText(path);
 }
 
 bool FloorsView::isRunning() const {
-    return m_watcher.isRunning();
+    return m_job.isRunning();
 }
 
 QString FloorsView::message() const {
@@ -178,34 +173,33 @@ void FloorsView::run() {
         m_status->setText(tr("Cannot run: %1").arg(QString::fromStdString(e)));
         return;
     }
-    m_control = std::make_shared<SweepControl>();
-    auto control = m_control;
-    m_watcher.setFuture(QtConcurrent::run([in, control]() -> std::shared_ptr<Outcome> {
-        auto o = std::make_shared<Outcome>();
-        try {
-            o->analysis = analyseFloors(in, control.get());
-        } catch (const std::exception&) {
-            return nullptr; // validated above; a throw here is a bug, shown as a failed run
-        }
-        o->ground = in.ground;
-        o->building = in.building;
-        o->slab = in.slab;
-        o->searchLimit = in.search.to;
-        return o;
-    }));
+    m_job.start<std::shared_ptr<Outcome>>(
+        [in](JobContext& job) -> std::shared_ptr<Outcome> {
+            auto o = std::make_shared<Outcome>();
+            try {
+                o->analysis = analyseFloors(in, &job.control);
+            } catch (const std::exception&) {
+                return nullptr; // validated above; a throw here is a bug, shown as a failed run
+            }
+            o->ground = in.ground;
+            o->building = in.building;
+            o->slab = in.slab;
+            o->searchLimit = in.search.to;
+            return o;
+        },
+        [this](std::shared_ptr<Outcome> o) { onFinished(std::move(o)); });
     m_status->setText(tr("Running: modes, floor motions, critical PGA of every level…"));
     m_run->setEnabled(false);
     m_cancel->setEnabled(true);
 }
 
 void FloorsView::cancel() {
-    if (m_control) m_control->cancel();
+    m_job.cancel();
 }
 
-void FloorsView::onFinished() {
+void FloorsView::onFinished(std::shared_ptr<Outcome> o) {
     m_run->setEnabled(true);
     m_cancel->setEnabled(false);
-    const std::shared_ptr<Outcome> o = m_watcher.result();
     if (!o) {
         m_status->setText(tr("The analysis failed."));
         return;

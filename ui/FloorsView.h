@@ -8,8 +8,8 @@
 
 #include "core/building/FloorAnalysis.h"
 #include "core/io/Project.h"
+#include "ui/BackgroundJob.h"
 
-#include <QFutureWatcher>
 #include <QWidget>
 
 #include <functional>
@@ -51,7 +51,7 @@ protected:
 private:
     struct Outcome;
     void applyProject(const Project& p);
-    void onFinished();
+    void onFinished(std::shared_ptr<Outcome> o);
     void showVerdicts();
 
     std::function<Project()> m_source;
@@ -67,8 +67,7 @@ private:
     QChartView* m_profile;
     QChartView* m_critical;
     QChartView* m_level;
-    QFutureWatcher<std::shared_ptr<Outcome>> m_watcher;
-    std::shared_ptr<SweepControl> m_control;
+    BackgroundJob m_job;
     std::shared_ptr<Outcome> m_shown;
     std::string m_appliedRecord; // the project's record file last applied to the fields
     std::string m_appliedFloors; // and its floors settings (JSON text)

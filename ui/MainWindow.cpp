@@ -21,6 +21,7 @@
 #include "ui/ModelPanel.h"
 #include "ui/PlanarHistoryChart.h"
 #include "ui/RecentFiles.h"
+#include "ui/RunProgress.h"
 #include "ui/SlabPanel.h"
 #include "ui/SliceChart.h"
 #include "ui/StaleFrame.h"
@@ -38,7 +39,6 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPainter>
-#include <QProgressBar>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStackedWidget>
@@ -80,7 +80,7 @@ MainWindow::MainWindow(QWidget* parent)
       m_slabPanel(new SlabPanel), m_excitation(new ExcitationPanel), m_gridPanel(new GridPanel),
       m_surface(new SurfaceView), m_slice(new SliceChart), m_history(new HistoryChart),
       m_critical(new CriticalChart), m_verdict(new VerdictPanel), m_runner(new SweepRunner(this)),
-      m_progress(new QProgressBar), m_status(new QLabel) {
+      m_progress(new RunProgress), m_status(new QLabel) {
     m_modelPanel = new ModelPanel;
     m_planarHistory = new PlanarHistoryChart;
     setWindowTitle(tr("kinstab — kinetic stability of friction-held slabs"));
@@ -104,9 +104,6 @@ MainWindow::MainWindow(QWidget* parent)
     buildActions();
     installHelpMenu(this);
     buildDocks();
-    m_progress->setMaximumWidth(260);
-    m_progress->setTextVisible(true);
-    m_progress->hide();
     m_status->setTextFormat(Qt::PlainText);
     statusBar()->addWidget(m_status, 1);
     statusBar()->addPermanentWidget(m_progress);
@@ -168,8 +165,9 @@ void MainWindow::buildFileMenu() {
                       [this] { exportChart(m_critical, QStringLiteral("acrit")); });
     file->addAction(tr("Export &report (PDF)…"), this, [this] {
         // The same document as `kinstab-cli report` (ui/report/ReportWriter.h).
-        const QString out = report::exportReportDialog(this, project(), m_path);
-        if (!out.isEmpty()) statusBar()->showMessage(tr("Report written to %1").arg(out), 5000);
+        report::exportReportDialog(this, project(), m_path, [this](const QString& out) {
+            statusBar()->showMessage(tr("Report written to %1").arg(out), 5000);
+        });
     });
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
@@ -296,13 +294,14 @@ void MainWindow::runSweep() {
     showVerdict();
     showStaleness();
     m_runner->start(job);
-    m_progress->setRange(0, 1000);
-    m_progress->setValue(0);
-    m_progress->show();
-    m_status->setText(
-        job.planar
-            ? tr("Running %1 points of the planar model (2–5 ms of CPU each)…").arg(job.grid.size())
-            : tr("Running %1 points…").arg(job.grid.size()));
+    const std::size_t steps = SweepRunner::stepCount(job); // the bar's total too
+    m_progress->start(static_cast<qint64>(steps), tr("steps"));
+    m_status->setText(tr("Running %1 steps: %2 points%3, A_crit at %4 frequencies%5…")
+                          .arg(steps)
+                          .arg(job.grid.size())
+                          .arg(job.planar ? tr(" of the planar model (2–5 ms of CPU each)") : "")
+                          .arg(job.grid.frequencies.size())
+                          .arg(job.codes.empty() ? QString() : tr(", the design check")));
     updateRunState();
 }
 
@@ -311,12 +310,8 @@ void MainWindow::cancelSweep() {
     m_recordRunner->cancel();
 }
 
-void MainWindow::showProgress(qint64 done, qint64 total, double secondsLeft) {
-    m_progress->setValue(total > 0 ? static_cast<int>(1000 * done / total) : 0);
-    m_progress->setFormat(
-        secondsLeft >= 0
-            ? tr("%1 / %2 — %3 s left").arg(done).arg(total).arg(secondsLeft, 0, 'f', 1)
-            : tr("%1 / %2").arg(done).arg(total));
+void MainWindow::showProgress(qint64 done, qint64 total) {
+    m_progress->update(done, total);
 }
 
 void MainWindow::showPartial(const SweepResult& r) {
@@ -331,7 +326,7 @@ void MainWindow::showPartial(const SweepResult& r) {
 
 void MainWindow::showFinished(const SweepOutput& out) {
     if (!m_results.awaits(ResultState::Run::Sweep)) { // a run of the project closed by Open/New
-        m_progress->hide();
+        m_progress->finish();
         updateRunState();
         emit sweepFinished();
         return;
@@ -349,7 +344,7 @@ void MainWindow::showFinished(const SweepOutput& out) {
     inputsChanged(); // code inputs changed while it ran: re-judge now
     if (!out.check && !out.checkError.empty())
         m_verdict->setError(QString::fromStdString(out.checkError));
-    m_progress->hide();
+    m_progress->finish();
     m_status->setText(out.cancelled ? tr("Cancelled: %1 of %2 points computed and shown (%3 s)")
                                           .arg(out.sweep.completed)
                                           .arg(out.sweep.grid.size())

@@ -20,7 +20,6 @@ class QAction;
 class QChartView;
 class QDockWidget;
 class QLabel;
-class QProgressBar;
 class QStackedWidget;
 class QTabWidget;
 
@@ -30,6 +29,7 @@ class BuildingPanel;
 class CodesPanel;
 class CriticalChart;
 class RecentFiles;
+class RunProgress;
 class VerdictPanel;
 class ExcitationPanel;
 class GridPanel;
@@ -126,7 +126,7 @@ private:
     void updateRunState();
     void showPartial(const SweepResult& r);
     void showFinished(const SweepOutput& out);
-    void showProgress(qint64 done, qint64 total, double secondsLeft);
+    void showProgress(qint64 done, qint64 total);
     void pickPoint(int ai, int fi);
     void updateSlice();
     void refreshOverlays();
@@ -173,7 +173,7 @@ private:
     QAction* m_run = nullptr;
     QAction* m_cancel = nullptr;
     QMenu* m_viewMenu = nullptr;
-    QProgressBar* m_progress;
+    RunProgress* m_progress;
     QLabel* m_status;
     std::vector<QDockWidget*> m_inputDocks;
 

@@ -9,12 +9,12 @@
 #include "ui/MainWindow.h"
 #include "ui/ModelPanel.h"
 #include "ui/RecordInput.h"
+#include "ui/RunProgress.h"
 #include "ui/VerdictPanel.h"
 
 #include <QAction>
 #include <QDockWidget>
 #include <QLabel>
-#include <QProgressBar>
 
 namespace kinstab::ui {
 
@@ -42,8 +42,7 @@ QString runSummary(const RecordAnalysis& a, double tstar) {
 
 void MainWindow::buildRecordRun() {
     m_recordRunner = new RecordRunner(this);
-    connect(m_recordRunner, &RecordRunner::progress, this,
-            [this](qint64 done, qint64 total) { showProgress(done, total, -1.0); });
+    connect(m_recordRunner, &RecordRunner::progress, this, &MainWindow::showProgress);
     connect(m_recordRunner, &RecordRunner::finished, this, &MainWindow::showRecordFinished);
 }
 
@@ -59,9 +58,7 @@ void MainWindow::runRecord() {
     showVerdict();
     showStaleness();
     m_recordRunner->start(in);
-    m_progress->setRange(0, 1000);
-    m_progress->setValue(0);
-    m_progress->show();
+    m_progress->start(0, tr("slab runs"));
     // The GUI runs records with the 1-DOF model; the planar slab under records is kinstab-cli's.
     const bool planar = m_modelPanel && m_modelPanel->model() == "planar";
     m_status->setText(tr("Running the record and searching its critical scale… (a record has "
@@ -73,7 +70,7 @@ void MainWindow::runRecord() {
 }
 
 void MainWindow::showRecordFinished(const RecordOutput& out) {
-    m_progress->hide();
+    m_progress->finish();
     if (!m_results.awaits(ResultState::Run::Record)) { // a run of the project closed by Open/New
         updateRunState();
         emit recordRunFinished();

@@ -14,7 +14,6 @@
 #include <QtCharts/QChartView>
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QLogValueAxis>
-#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -22,12 +21,11 @@
 namespace kinstab::ui {
 
 namespace {
-struct StudyCancelled {};
 // Errors of exactly zero (bit-identical to the reference) still need a place on a log axis.
 constexpr double kErrorFloor = 1e-17;
 } // namespace
 
-NumericsView::NumericsView(QWidget* parent) : QWidget(parent) {
+NumericsView::NumericsView(QWidget* parent) : QWidget(parent), m_job(this) {
     m_run = new QPushButton(tr("Run study"), this);
     m_run->setToolTip(
         tr("Times every solver and setting on the fixed case set (paper grid at 1 Hz, "
@@ -67,54 +65,48 @@ NumericsView::NumericsView(QWidget* parent) : QWidget(parent) {
 
     connect(m_run, &QPushButton::clicked, this, &NumericsView::startStudy);
     connect(m_cancel, &QPushButton::clicked, this, &NumericsView::cancelStudy);
-    connect(&m_watcher, &QFutureWatcherBase::finished, this, &NumericsView::onFinished);
-    connect(&m_watcher, &QFutureWatcherBase::progressRangeChanged, m_progress,
-            &QProgressBar::setRange);
-    connect(&m_watcher, &QFutureWatcherBase::progressValueChanged, m_progress,
-            &QProgressBar::setValue);
+    connect(&m_job, &BackgroundJob::progress, this, &NumericsView::onProgress);
+    connect(&m_job, &BackgroundJob::ended, this, &NumericsView::onEnded);
 }
 
-NumericsView::~NumericsView() {
-    cancelStudy();
-    m_watcher.waitForFinished();
-}
+NumericsView::~NumericsView() = default; // m_job cancels and waits
 
 bool NumericsView::isRunning() const {
-    return m_watcher.isRunning();
+    return m_job.isRunning();
 }
 
 void NumericsView::startStudy() {
     if (isRunning()) return;
-    m_cancelFlag = std::make_shared<std::atomic<bool>>(false);
     WorkPrecisionOptions options;
     options.includeRegularized = m_regularized->isChecked();
-    auto flag = m_cancelFlag;
-    m_watcher.setFuture(QtConcurrent::run(
-        [options, flag](QPromise<std::shared_ptr<WorkPrecisionStudy>>& promise) mutable {
-            options.onProgress = [&](std::size_t done, std::size_t total) {
-                promise.setProgressRange(0, static_cast<int>(total));
-                promise.setProgressValue(static_cast<int>(done));
-                if (flag->load()) throw StudyCancelled{};
+    m_job.start<WorkPrecisionStudy>(
+        [options](JobContext& job) mutable {
+            options.onProgress = [&job](std::size_t done, std::size_t total) {
+                job.total = total;
+                job.done = done;
             };
-            try {
-                promise.addResult(
-                    std::make_shared<WorkPrecisionStudy>(runWorkPrecisionStudy(options)));
-            } catch (const StudyCancelled&) {
-            }
-        }));
+            options.cancelled = [&job] { return job.isCancelled(); };
+            return runWorkPrecisionStudy(options);
+        },
+        [this](WorkPrecisionStudy study) {
+            if (!study.cancelled) showStudy(study);
+        });
     m_run->setEnabled(false);
     m_cancel->setEnabled(true);
 }
 
 void NumericsView::cancelStudy() {
-    if (m_cancelFlag) m_cancelFlag->store(true);
+    m_job.cancel();
 }
 
-void NumericsView::onFinished() {
+void NumericsView::onProgress(qint64 done, qint64 total) {
+    m_progress->setRange(0, static_cast<int>(std::max<qint64>(total, 1)));
+    m_progress->setValue(static_cast<int>(done));
+}
+
+void NumericsView::onEnded() {
     m_run->setEnabled(true);
     m_cancel->setEnabled(false);
-    const auto future = m_watcher.future();
-    if (future.resultCount() > 0) showStudy(*future.result());
 }
 
 int NumericsView::curveCount() const {

@@ -6,11 +6,9 @@
 // progress.
 
 #include "core/numerics/WorkPrecision.h"
+#include "ui/BackgroundJob.h"
 
-#include <QFutureWatcher>
 #include <QWidget>
-#include <atomic>
-#include <memory>
 
 class QChartView;
 class QCheckBox;
@@ -37,7 +35,8 @@ signals:
     void studyShown();
 
 private:
-    void onFinished();
+    void onProgress(qint64 done, qint64 total);
+    void onEnded();
 
     QPushButton* m_run = nullptr;
     QPushButton* m_cancel = nullptr;
@@ -45,8 +44,7 @@ private:
     QProgressBar* m_progress = nullptr;
     QChartView* m_chart = nullptr;
     QPlainTextEdit* m_table = nullptr;
-    QFutureWatcher<std::shared_ptr<WorkPrecisionStudy>> m_watcher;
-    std::shared_ptr<std::atomic<bool>> m_cancelFlag;
+    BackgroundJob m_job;
     int m_curves = 0;
 };
 

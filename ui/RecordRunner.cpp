@@ -3,17 +3,9 @@
 
 #include "ui/RecordPointRun.h"
 
-#include <QPromise>
-#include <QtConcurrent>
-
-#include <atomic>
+#include <algorithm>
 
 namespace kinstab::ui {
-
-struct RecordRunner::Live {
-    SweepControl control;
-    std::atomic<std::size_t> done{0}, total{1};
-};
 
 RecordOutput runRecordJob(const RecordAnalysisInput& input, SweepControl* control) {
     RecordOutput out;
@@ -31,51 +23,33 @@ RecordOutput runRecordJob(const RecordAnalysisInput& input, SweepControl* contro
     return out;
 }
 
-RecordRunner::RecordRunner(QObject* parent) : QObject(parent) {
-    m_timer.setInterval(250);
-    connect(&m_timer, &QTimer::timeout, this, &RecordRunner::poll);
-    connect(&m_watcher, &QFutureWatcher<RecordOutput>::finished, this, &RecordRunner::onFinished);
+RecordRunner::RecordRunner(QObject* parent) : QObject(parent), m_job(this) {
+    connect(&m_job, &BackgroundJob::progress, this, &RecordRunner::progress);
 }
 
-RecordRunner::~RecordRunner() {
-    cancel();
-    m_watcher.waitForFinished();
-}
+RecordRunner::~RecordRunner() = default;
 
 void RecordRunner::start(const RecordAnalysisInput& input) {
     if (isRunning()) return;
-    auto live = std::make_shared<Live>();
-    live->control.onProgress = [raw = live.get()](std::size_t done, std::size_t total) {
-        raw->done = done;
-        raw->total = std::max<std::size_t>(total, 1);
-    };
-    m_live = live;
-    // Inputs and the shared state by value: the task never touches `this`.
-    m_watcher.setFuture(QtConcurrent::run([input, live](QPromise<RecordOutput>& promise) {
-        promise.addResult(runRecordJob(input, &live->control));
-    }));
-    m_timer.start();
+    // The input by value: the work never touches `this`.
+    m_job.start<RecordOutput>(
+        [input](JobContext& job) {
+            job.total = 1;
+            job.control.onProgress = [&job](std::size_t done, std::size_t total) {
+                job.done = done;
+                job.total = std::max<std::size_t>(total, 1);
+            };
+            return runRecordJob(input, &job.control);
+        },
+        [this](RecordOutput out) { emit finished(out); });
 }
 
 void RecordRunner::cancel() {
-    if (m_live) m_live->control.cancel();
+    m_job.cancel();
 }
 
 bool RecordRunner::isRunning() const {
-    return m_watcher.isRunning();
-}
-
-void RecordRunner::poll() {
-    if (m_live)
-        emit progress(static_cast<qint64>(m_live->done.load()),
-                      static_cast<qint64>(m_live->total.load()));
-}
-
-void RecordRunner::onFinished() {
-    m_timer.stop();
-    if (m_watcher.future().resultCount() == 0) return;
-    poll();
-    emit finished(m_watcher.result());
+    return m_job.isRunning();
 }
 
 } // namespace kinstab::ui

@@ -1,17 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Runs a record analysis off the GUI thread (core/sweep/RecordAnalysis.h: the single run, the
-// critical scale and the verdicts), like SweepRunner: QtConcurrent::run with a QPromise adapted
-// to core's SweepControl, progress polled a few times a second, cancel within one slab run.
+// critical scale and the verdicts) on a BackgroundJob, like SweepRunner: progress polled a few
+// times a second, cancel within one slab run.
 
 #include "core/sweep/RecordAnalysis.h"
+#include "ui/BackgroundJob.h"
 #include "ui/PointRun.h"
 
-#include <QFutureWatcher>
 #include <QObject>
-#include <QTimer>
 
-#include <memory>
 #include <optional>
 
 namespace kinstab::ui {
@@ -27,26 +25,19 @@ class RecordRunner : public QObject {
     Q_OBJECT
 public:
     explicit RecordRunner(QObject* parent = nullptr);
-    ~RecordRunner() override; // cancels and waits
+    ~RecordRunner() override; // m_job cancels and waits
 
     void start(const RecordAnalysisInput& input);
     void cancel();
     bool isRunning() const;
-    void waitForFinished() { m_watcher.waitForFinished(); }
-
-    struct Live; // shared with the worker
+    void waitForFinished() { m_job.waitForFinished(); }
 
 signals:
     void progress(qint64 done, qint64 total);
     void finished(const kinstab::ui::RecordOutput& out);
 
 private:
-    void poll();
-    void onFinished();
-
-    std::shared_ptr<Live> m_live;
-    QFutureWatcher<RecordOutput> m_watcher;
-    QTimer m_timer;
+    BackgroundJob m_job;
 };
 
 // The work itself, synchronous (the runner calls it on its worker; tests call it directly).

@@ -4,9 +4,6 @@
 #include "core/sweep/CriticalAmplitude.h"
 #include "core/sweep/ModelPoint.h"
 
-#include <QPromise>
-#include <QtConcurrent>
-
 #include <algorithm>
 #include <atomic>
 #include <mutex>
@@ -21,13 +18,11 @@
 
 namespace kinstab::ui {
 
-// State shared by the GUI and the worker threads; outlives both through shared_ptr.
-struct SweepRunner::Live {
-    SweepControl control;
+// State shared by the GUI and the worker threads (cancel and counters from JobContext); outlives
+// both through shared_ptr.
+struct SweepRunner::Live : JobContext {
     std::mutex mutex;
     SweepResult partial; // guarded by mutex
-    std::atomic<std::size_t> completed{0};
-    std::size_t total = 0;
 };
 
 namespace {
@@ -78,7 +73,7 @@ SweepOutput runJob(const SweepJob& job, SweepRunner::Live& live) {
         ++live.partial.completed;
         return r;
     };
-    live.control.onProgress = [&live](std::size_t, std::size_t) { ++live.completed; };
+    live.control.onProgress = [&live](std::size_t, std::size_t) { ++live.done; };
 
     SweepOutput out;
     out.tauRef = model.tauRef;
@@ -91,7 +86,7 @@ SweepOutput runJob(const SweepJob& job, SweepRunner::Live& live) {
         parallelFor(nf, job.threads, live.control, [&](std::size_t j) {
             out.aCrit[j] =
                 criticalAmplitude(point, job.grid.frequencies[j], scanFrom, search).amplitude;
-            ++live.completed;
+            ++live.done;
         });
     }
     if (!job.codes.empty() && !live.control.isCancelled()) {
@@ -100,7 +95,7 @@ SweepOutput runJob(const SweepJob& job, SweepRunner::Live& live) {
         } catch (const std::exception& e) {
             out.checkError = e.what();
         }
-        ++live.completed;
+        ++live.done;
     }
     out.cancelled = live.control.isCancelled();
     if (out.cancelled) {
@@ -129,41 +124,36 @@ SweepOutput runNiced(const SweepJob& job, SweepRunner::Live& live) {
 
 } // namespace
 
-SweepRunner::SweepRunner(QObject* parent) : QObject(parent) {
-    m_timer.setInterval(updateIntervalMs);
-    connect(&m_timer, &QTimer::timeout, this, &SweepRunner::poll);
-    connect(&m_watcher, &QFutureWatcher<SweepOutput>::finished, this, &SweepRunner::onFinished);
+SweepRunner::SweepRunner(QObject* parent) : QObject(parent), m_job(this, updateIntervalMs) {
+    connect(&m_job, &BackgroundJob::progress, this, &SweepRunner::poll);
 }
 
-SweepRunner::~SweepRunner() {
-    cancel();
-    m_watcher.waitForFinished();
+SweepRunner::~SweepRunner() = default; // m_job cancels and waits
+
+std::size_t SweepRunner::stepCount(const SweepJob& job) {
+    return job.grid.size() + (job.criticalCurve ? job.grid.frequencies.size() : 0) +
+           (job.codes.empty() ? 0 : 1);
 }
 
 void SweepRunner::start(const SweepJob& job) {
     if (isRunning()) return;
     auto live = std::make_shared<Live>();
-    live->total = job.grid.size() + (job.criticalCurve ? job.grid.frequencies.size() : 0) +
-                  (job.codes.empty() ? 0 : 1);
+    live->total = stepCount(job);
     live->partial.grid = job.grid;
     live->partial.points.assign(job.grid.size(), PointResult{Outcome::Failed, std::nan("")});
     live->partial.done.assign(job.grid.size(), 0);
     m_live = live;
-    m_clock.start();
-    // Inputs and the shared state are captured by value: the task never touches `this`.
-    m_watcher.setFuture(QtConcurrent::run([job, live](QPromise<SweepOutput>& promise) {
-        promise.setProgressRange(0, static_cast<int>(std::min<std::size_t>(live->total, INT_MAX)));
-        promise.addResult(runNiced(job, *live));
-    }));
-    m_timer.start();
+    // Inputs and the shared state are captured by value: the work never touches `this`.
+    m_job.start<SweepOutput>([job, live](JobContext&) { return runNiced(job, *live); },
+                             [this](SweepOutput out) { emit finished(out); }, live);
 }
 
 void SweepRunner::cancel() {
-    if (m_live) m_live->control.cancel();
+    m_job.cancel();
 }
 
 bool SweepRunner::isRunning() const {
-    return m_watcher.isRunning();
+    return m_job.isRunning();
 }
 
 SweepResult SweepRunner::snapshot() const {
@@ -172,25 +162,9 @@ SweepResult SweepRunner::snapshot() const {
     return m_live->partial;
 }
 
-void SweepRunner::poll() {
-    if (!m_live) return;
-    const auto done = static_cast<qint64>(m_live->completed.load());
-    const auto total = static_cast<qint64>(m_live->total);
-    const double elapsed = m_clock.elapsed() / 1000.0;
-    const double left =
-        done > 0 ? elapsed * static_cast<double>(total - done) / static_cast<double>(done) : -1.0;
-    emit progress(done, total, left);
+void SweepRunner::poll(qint64 done, qint64 total) {
+    emit progress(done, total);
     emit partialResult(snapshot());
-}
-
-void SweepRunner::onFinished() {
-    m_timer.stop();
-    if (m_watcher.future().resultCount() == 0) return;
-    SweepOutput out = m_watcher.result();
-    if (m_live)
-        emit progress(static_cast<qint64>(m_live->completed.load()),
-                      static_cast<qint64>(m_live->total), 0);
-    emit finished(out);
 }
 
 } // namespace kinstab::ui

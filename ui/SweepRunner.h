@@ -1,18 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Runs a sweep (and the A_crit(f) curve) off the GUI thread: QtConcurrent::run with a QPromise,
-// adapted to core's SweepControl. Partial results are polled a few times a second (never per
-// point), and a cancel keeps everything already computed.
+// Runs a sweep (and the A_crit(f) curve) off the GUI thread on a BackgroundJob. Partial results
+// are polled a few times a second with its progress (never per point), and a cancel keeps
+// everything already computed.
 
 #include "core/codes/DesignCheck.h"
 #include "core/slab/PlanarCase.h"
 #include "core/slab/Slab1DCase.h"
 #include "core/sweep/Sweep.h"
+#include "ui/BackgroundJob.h"
 
-#include <QElapsedTimer>
-#include <QFutureWatcher>
 #include <QObject>
-#include <QTimer>
 
 #include <memory>
 #include <optional>
@@ -47,27 +45,27 @@ public:
     void start(const SweepJob& job);
     void cancel();
     bool isRunning() const;
-    void waitForFinished() { m_watcher.waitForFinished(); }
+    void waitForFinished() { m_job.waitForFinished(); }
     // Everything computed so far (unfinished points have done = 0).
     SweepResult snapshot() const;
 
-    static constexpr int updateIntervalMs = 250; // surface refresh while running
+    // The units progress counts: grid points, A_crit at each frequency, the design check.
+    static std::size_t stepCount(const SweepJob& job);
+    static constexpr int updateIntervalMs = BackgroundJob::defaultPollMs; // surface refresh
 
     struct Live; // state shared with the worker threads
 
 signals:
-    void progress(qint64 done, qint64 total, double secondsLeft);
+    // Units done of the total (grid points, A_crit frequencies, the design check).
+    void progress(qint64 done, qint64 total);
     void partialResult(const kinstab::SweepResult& r);
     void finished(const kinstab::ui::SweepOutput& out);
 
 private:
-    void poll();
-    void onFinished();
+    void poll(qint64 done, qint64 total);
 
     std::shared_ptr<Live> m_live;
-    QFutureWatcher<SweepOutput> m_watcher;
-    QTimer m_timer;
-    QElapsedTimer m_clock;
+    BackgroundJob m_job;
 };
 
 } // namespace kinstab::ui

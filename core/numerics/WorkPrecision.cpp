@@ -241,6 +241,10 @@ WorkPrecisionStudy runWorkPrecisionStudy(const WorkPrecisionOptions& options) {
             study.referenceConvergence = std::max(study.referenceConvergence, gap);
         }
         for (const Setting& s : all) {
+            if (options.cancelled && options.cancelled()) {
+                study.cancelled = true;
+                return study;
+            }
             WorkPrecisionRow row;
             row.caseId = c.id;
             row.solver = s.solver;

@@ -53,7 +53,8 @@ struct WorkPrecisionStudy {
     std::vector<WorkPrecisionRow> rows;
     std::string reference; // how the reference is made
     double referenceConvergence =
-        0; // max |ref - exact at tolerance 0| over all runs (tau_c, delta)
+        0;                  // max |ref - exact at tolerance 0| over all runs (tau_c, delta)
+    bool cancelled = false; // stopped early: rows holds only the settings finished
 };
 
 struct WorkPrecisionOptions {
@@ -61,6 +62,8 @@ struct WorkPrecisionOptions {
     bool includeRegularized = true;
     // Called after each row with (rows done, rows total); may be empty.
     std::function<void(std::size_t, std::size_t)> onProgress;
+    // Asked before each row; true stops the study there (a row takes up to a few seconds).
+    std::function<bool()> cancelled;
 };
 
 WorkPrecisionStudy runWorkPrecisionStudy(const WorkPrecisionOptions& options = {});

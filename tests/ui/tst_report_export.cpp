@@ -31,6 +31,13 @@ QString pdfText(const QString& pdf) {
     return QString::fromUtf8(p.readAllStandardOutput());
 }
 
+// Runs one export to its end (the window's event loop keeps running meanwhile).
+QString exportAndWait(QWidget* w, const Project& p, const QString& out) {
+    QSignalSpy done(report::exportReportTo(w, p, QString(), out), &report::ReportExport::done);
+    if (!done.wait(300000)) return QStringLiteral("(no result in 300 s)");
+    return done.at(0).at(0).toString();
+}
+
 } // namespace
 
 class TestReportExport : public QObject {
@@ -47,7 +54,7 @@ private slots:
         MainWindow w; // starts with the paper's 16-story example
         const Project p = w.project();
         const QString pdf = dir_.filePath("gui-report.pdf");
-        QCOMPARE(report::exportReportTo(&w, p, QString(), pdf), pdf);
+        QCOMPARE(exportAndWait(&w, p, pdf), pdf);
         const QString text = pdfText(pdf);
         QVERIFY(text.contains("Kinetic stability design report"));
         // Never saved: the title block hashes the project JSON as used and says so.
@@ -75,8 +82,7 @@ private slots:
                 if (auto* box = qobject_cast<QMessageBox*>(top)) box->close();
         });
         closer.start(50);
-        QCOMPARE(report::exportReportTo(&w, w.project(), QString(),
-                                        dir_.filePath("missing-dir/report.pdf")),
+        QCOMPARE(exportAndWait(&w, w.project(), dir_.filePath("missing-dir/report.pdf")),
                  QString());
     }
 };

@@ -5,26 +5,24 @@
 
 #include "ui/report/ReportWriter.h"
 
-#include <QEventLoop>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFutureWatcher>
 #include <QLocale>
 #include <QMessageBox>
 #include <QProgressDialog>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <memory>
 
 namespace kinstab::ui::report {
 
-namespace {
-
 struct AnalysisRun {
     std::optional<ReportAnalysis> analysis;
     QString error;
+    bool cancelled = false;
 };
+
+namespace {
 
 // The saved file when the panels still match it; otherwise the project JSON as used.
 ReportSource sourceFor(const Project& p, const QString& path) {
@@ -55,58 +53,78 @@ ReportSource sourceFor(const Project& p, const QString& path) {
 
 } // namespace
 
-QString exportReportDialog(QWidget* parent, const Project& project, const QString& projectPath) {
+void exportReportDialog(QWidget* parent, const Project& project, const QString& projectPath,
+                        const std::function<void(const QString&)>& written) {
     const QString base = projectPath.isEmpty() ? QStringLiteral("report.pdf")
                                                : QFileInfo(projectPath).completeBaseName() + ".pdf";
     const QString out = QFileDialog::getSaveFileName(parent, QObject::tr("Export design report"),
                                                      base, QObject::tr("PDF (*.pdf)"));
-    if (out.isEmpty()) return {};
-    return exportReportTo(parent, project, projectPath, out);
+    if (out.isEmpty()) return;
+    ReportExport* e = exportReportTo(parent, project, projectPath, out);
+    QObject::connect(e, &ReportExport::done, parent, [written](const QString& path) {
+        if (!path.isEmpty()) written(path);
+    });
 }
 
-QString exportReportTo(QWidget* parent, const Project& project, const QString& projectPath,
-                       const QString& out) {
-    auto control = std::make_shared<SweepControl>();
-    QFutureWatcher<AnalysisRun> watcher;
-    QEventLoop loop;
-    QObject::connect(&watcher, &QFutureWatcherBase::finished, &loop, &QEventLoop::quit);
-    QProgressDialog busy(QObject::tr("Computing the report's sweeps and design check…"),
-                         QObject::tr("Cancel"), 0, 0, parent);
-    busy.setWindowModality(Qt::WindowModal);
-    busy.setMinimumDuration(300);
-    QObject::connect(&busy, &QProgressDialog::canceled, &busy, [control] { control->cancel(); });
-    watcher.setFuture(QtConcurrent::run([project, control] {
-        AnalysisRun r;
-        try {
-            r.analysis = computeReportAnalysis(project, {}, control.get());
-        } catch (const std::exception& e) {
-            r.error = QString::fromUtf8(e.what());
-        }
-        return r;
-    }));
-    loop.exec();
-    busy.reset();
-    const AnalysisRun run = watcher.result();
-    if (control->isCancelled()) return {};
+ReportExport* exportReportTo(QWidget* parent, const Project& project, const QString& projectPath,
+                             const QString& out) {
+    return new ReportExport(parent, project, projectPath, out);
+}
+
+ReportExport::ReportExport(QWidget* parent, const Project& project, const QString& projectPath,
+                           const QString& out)
+    : QObject(parent), m_parent(parent), m_project(project), m_projectPath(projectPath), m_out(out),
+      m_job(this) {
+    m_busy = new QProgressDialog(QObject::tr("Computing the report's sweeps and design check…"),
+                                 QObject::tr("Cancel"), 0, 0, parent);
+    m_busy->setWindowModality(Qt::WindowModal);
+    m_busy->setMinimumDuration(300);
+    connect(m_busy, &QProgressDialog::canceled, &m_job, &BackgroundJob::cancel);
+    m_job.start<AnalysisRun>(
+        [project](JobContext& job) {
+            AnalysisRun r;
+            try {
+                r.analysis = computeReportAnalysis(project, {}, &job.control);
+            } catch (const std::exception& e) {
+                r.error = QString::fromUtf8(e.what());
+            }
+            r.cancelled = job.isCancelled();
+            return r;
+        },
+        [this](const AnalysisRun& run) { write(run); });
+}
+
+ReportExport::~ReportExport() {
+    delete m_busy; // (null when its parent went first)
+}
+
+void ReportExport::write(const AnalysisRun& run) {
+    if (m_busy) m_busy->reset();
+    if (run.cancelled) return finish({});
     if (!run.analysis) {
-        QMessageBox::warning(parent, QObject::tr("Export design report"), run.error);
-        return {};
+        QMessageBox::warning(m_parent, QObject::tr("Export design report"), run.error);
+        return finish({});
     }
     const PaperSize paper = QLocale().measurementSystem() == QLocale::ImperialUSSystem
                                 ? PaperSize::Letter
                                 : PaperSize::A4;
     try {
-        writeReport(sourceFor(project, projectPath), *run.analysis, out, paper);
+        writeReport(sourceFor(m_project, m_projectPath), *run.analysis, m_out, paper);
     } catch (const ReportError& e) {
-        QMessageBox::warning(parent, QObject::tr("Export design report"),
-                             out + ": " + QString::fromUtf8(e.what()));
-        return {};
+        QMessageBox::warning(m_parent, QObject::tr("Export design report"),
+                             m_out + ": " + QString::fromUtf8(e.what()));
+        return finish({});
     } catch (const kinstab::WriteError& e) { // names the file and the reason
-        QMessageBox::warning(parent, QObject::tr("Export design report"),
+        QMessageBox::warning(m_parent, QObject::tr("Export design report"),
                              QString::fromUtf8(e.what()));
-        return {};
+        return finish({});
     }
-    return out;
+    finish(m_out);
+}
+
+void ReportExport::finish(const QString& path) {
+    emit done(path);
+    deleteLater();
 }
 
 } // namespace kinstab::ui::report

@@ -6,7 +6,6 @@
 
 #include <QMouseEvent>
 #include <QPainter>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <cmath>
@@ -58,16 +57,12 @@ QColor gammaColor(double g, double gMax) {
 
 } // namespace
 
-SurfaceMarker::SurfaceMarker(QWidget* parent) : QWidget(parent) {
+SurfaceMarker::SurfaceMarker(QWidget* parent) : QWidget(parent), job_(this) {
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
     setToolTip(tr("Click to run that amplitude and frequency"));
-    connect(&watcher_, &QFutureWatcher<MarkerMap>::finished, this, &SurfaceMarker::onFinished);
 }
 
-SurfaceMarker::~SurfaceMarker() {
-    if (control_) control_->cancel();
-    watcher_.waitForFinished();
-}
+SurfaceMarker::~SurfaceMarker() = default;
 
 bool sameSweep(const SweepKey& a, const SweepKey& b) {
     return a.mode == b.mode && a.range == b.range && a.params.envelope == b.params.envelope &&
@@ -81,31 +76,23 @@ bool sameSweep(const SweepKey& a, const SweepKey& b) {
 void SurfaceMarker::setContext(const TeachingParams& p, const MapRange& range, MapMode mode) {
     current_ = {p, range, mode};
     const bool shown = hasMap_ && sameSweep(current_, {map_.context, map_.range, map_.mode});
-    const bool coming = isComputing() && !restart_ && sameSweep(current_, running_);
+    const bool coming = isComputing() && sameSweep(current_, running_);
     if (!shown && !coming) start();
     update();
 }
 
+// A sweep still running is superseded: the job cancels it and drops its result.
 void SurfaceMarker::start() {
-    if (watcher_.isRunning()) {
-        control_->cancel(); // onFinished starts again with the latest context
-        restart_ = true;
-        return;
-    }
-    restart_ = false;
     running_ = current_;
-    control_ = std::make_shared<SweepControl>();
-    watcher_.setFuture(QtConcurrent::run(
-        [k = current_, c = control_] { return computeMap(k.params, k.range, k.mode, c.get()); }));
+    job_.start<MarkerMap>(
+        [k = current_](JobContext& job) {
+            return computeMap(k.params, k.range, k.mode, &job.control);
+        },
+        [this](const MarkerMap& m) { onFinished(m); });
 }
 
-void SurfaceMarker::onFinished() {
-    const MarkerMap m = watcher_.result();
-    if (restart_ || m.sweep.cancelled) {
-        restart_ = false;
-        start();
-        return;
-    }
+void SurfaceMarker::onFinished(const MarkerMap& m) {
+    if (m.sweep.cancelled) return; // only the destructor cancels the current job
     map_ = m;
     hasMap_ = true;
     if (!sameSweep(current_, running_)) start(); // the context moved on meanwhile

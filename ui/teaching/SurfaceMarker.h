@@ -2,15 +2,13 @@
 #pragma once
 // "Where am I on the surface": a coarse gamma_c(A, f) map (or, for Fig. 34, tau_c against A at
 // the current f) of the current envelope, mu and wall, with the current run marked. The
-// sweep runs in a worker thread; a change while it runs cancels it and starts again.
+// sweep runs on a BackgroundJob; a change while it runs supersedes it (its result is dropped).
 
 #include "core/sweep/Sweep.h"
+#include "ui/BackgroundJob.h"
 #include "ui/teaching/FigurePresets.h"
 
-#include <QFutureWatcher>
 #include <QWidget>
-
-#include <memory>
 
 namespace kinstab::ui {
 
@@ -39,12 +37,12 @@ public:
     static constexpr int kSlicePoints = 46; // A every 0.01 over the paper's 0.7..1.15
 
     explicit SurfaceMarker(QWidget* parent = nullptr);
-    ~SurfaceMarker() override;
+    ~SurfaceMarker() override; // job_ cancels and waits
 
     // Re-sweeps only when something but the current point changed.
     void setContext(const TeachingParams& p, const MapRange& range, MapMode mode);
     const MarkerMap& map() const { return map_; }
-    bool isComputing() const { return watcher_.isRunning(); }
+    bool isComputing() const { return job_.isRunning(); }
     bool hasMap() const { return hasMap_; }
     QSize sizeHint() const override { return {320, 250}; }
     QSize minimumSizeHint() const override { return {220, 180}; }
@@ -59,16 +57,14 @@ protected:
 
 private:
     void start();
-    void onFinished();
+    void onFinished(const MarkerMap& m);
     QRectF plotRect() const;
 
     SweepKey current_; // what is shown and marked
     SweepKey running_; // what the worker computes
     MarkerMap map_;
     bool hasMap_ = false;
-    bool restart_ = false;
-    std::shared_ptr<SweepControl> control_;
-    QFutureWatcher<MarkerMap> watcher_;
+    BackgroundJob job_;
 };
 
 } // namespace kinstab::ui
