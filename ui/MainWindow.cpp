@@ -18,6 +18,7 @@
 #include "ui/GridPanel.h"
 #include "ui/HelpMenu.h"
 #include "ui/HistoryChart.h"
+#include "ui/InputHistory.h"
 #include "ui/ModelPanel.h"
 #include "ui/PlanarHistoryChart.h"
 #include "ui/RecentFiles.h"
@@ -98,8 +99,9 @@ MainWindow::MainWindow(QWidget* parent)
     m_numerics = new NumericsView;
     m_centre->addTab(m_numerics, tr("Numerics"));
     m_friction = new FrictionPanel;
-    m_centre->addTab(m_friction, tr("Friction"));
-    m_centre->addTab(new FloorsView([this] { return project(); }), tr("Floors"));
+    // In scroll areas: their minimum sizes must not grow the window past 1280×800.
+    m_centre->addTab(scrollable(m_friction), tr("Friction"));
+    m_centre->addTab(scrollable(new FloorsView([this] { return project(); })), tr("Floors"));
     setCentralWidget(m_centre);
     buildActions();
     installHelpMenu(this);
@@ -117,6 +119,9 @@ MainWindow::MainWindow(QWidget* parent)
     for (InputPanel* p : std::initializer_list<InputPanel*>{
              m_building, m_codesPanel, m_slabPanel, m_modelPanel, m_excitation, m_gridPanel})
         connect(p, &InputPanel::changed, this, &MainWindow::inputsChanged);
+    for (InputPanel* p : std::initializer_list<InputPanel*>{
+             m_building, m_codesPanel, m_slabPanel, m_modelPanel, m_excitation, m_gridPanel})
+        connect(p, &InputPanel::changed, m_undo, &InputHistory::recordChange);
     connect(m_building, &BuildingPanel::unitsChanged, m_slabPanel, &SlabPanel::setMetric);
     connect(m_modelPanel, &InputPanel::changed, this, &MainWindow::updateTitle);
     connect(m_slabPanel, &InputPanel::changed, this, [this] {
@@ -130,6 +135,7 @@ MainWindow::MainWindow(QWidget* parent)
     // "Use this mu" from the friction calibration goes to the slab's friction field.
     connect(m_friction, &FrictionPanel::useMu, m_slabPanel, &SlabPanel::useMu);
     resize(1280, 800);
+    arrangeDocks();
     restoreSettings();
     updateRunState();
     updateTitle();
@@ -142,20 +148,24 @@ MainWindow::~MainWindow() {
 
 void MainWindow::buildFileMenu() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
-    QAction* a = file->addAction(tr("&New"), QKeySequence::New, this, &MainWindow::newProject);
+    QAction* a = file->addAction(tr("&New"), QKeySequence::New, this, [this] {
+        if (askToSave() != Unsaved::Cancel) newProject();
+    });
     a->setToolTip(tr("Start from the default building and slab"));
     file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openDialog);
-    addExampleMenu(file, [this](const QString& p) { openProject(p); });
+    const auto openAsked = [this](const QString& p) {
+        if (askToSave() != Unsaved::Cancel) openProject(p);
+    };
+    addExampleMenu(file, openAsked);
     m_recent = new RecentFiles(tr("Open &recent"), this);
-    connect(m_recent, &RecentFiles::openRequested, this,
-            [this](const QString& p) { openProject(p); });
+    connect(m_recent, &RecentFiles::openRequested, this, openAsked);
     file->addMenu(m_recent);
     file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
     file->addAction(tr("Save &as…"), QKeySequence::SaveAs, this, &MainWindow::saveAsDialog);
     file->addSeparator();
     QAction* exportSurface =
         file->addAction(tr("Export &surface (CSV/JSON)…"), this, &MainWindow::exportSurface);
-    exportSurface->setShortcut(Qt::CTRL | Qt::Key_E);
+    exportSurface->setShortcut(Qt::CTRL | Qt::SHIFT | Qt::Key_E);
     QMenu* charts = file->addMenu(tr("Export &chart (PNG/SVG)"));
     charts->addAction(tr("γc and τc against A…"), this,
                       [this] { exportChart(m_slice, QStringLiteral("slice")); });
@@ -163,23 +173,30 @@ void MainWindow::buildFileMenu() {
                       [this] { exportChart(m_history, QStringLiteral("history")); });
     charts->addAction(tr("A_crit(f)…"), this,
                       [this] { exportChart(m_critical, QStringLiteral("acrit")); });
-    file->addAction(tr("Export &report (PDF)…"), this, [this] {
+    QAction* report = file->addAction(tr("Export &report (PDF)…"), this, [this] {
         // The same document as `kinstab-cli report` (ui/report/ReportWriter.h).
         report::exportReportDialog(this, project(), m_path, [this](const QString& out) {
             statusBar()->showMessage(tr("Report written to %1").arg(out), 5000);
         });
     });
+    report->setShortcut(Qt::CTRL | Qt::Key_E);
+    // Also while the 3D view (a window of its own) has the focus.
+    report->setShortcutContext(Qt::ApplicationShortcut);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 }
 
 void MainWindow::buildActions() {
     buildFileMenu();
+    buildEditMenu();
 
     QMenu* sweep = menuBar()->addMenu(tr("&Sweep"));
     m_run = sweep->addAction(tr("&Run"), this, &MainWindow::runSweep);
     m_run->setShortcuts({QKeySequence(Qt::CTRL | Qt::Key_R), QKeySequence(Qt::Key_F5)});
     m_run->setToolTip(tr("Compute γc over the grid (Ctrl+R / F5)"));
+    // F5 must work wherever the focus went back to after a dialog, the 3D view's own window
+    // included (a window shortcut is not seen there); a modal dialog still blocks it.
+    m_run->setShortcutContext(Qt::ApplicationShortcut);
     m_cancel = sweep->addAction(tr("&Cancel"), this, &MainWindow::cancelSweep);
     m_cancel->setShortcut(Qt::Key_Escape);
     m_cancel->setToolTip(tr("Stop the sweep; points already computed are kept (Esc)"));
@@ -205,35 +222,59 @@ QDockWidget* MainWindow::addPanelDock(const QString& title, QWidget* w, Qt::Dock
 }
 
 void MainWindow::buildDocks() {
+    // Short titles: six tabs share the inputs' dock and must not be cut at 1280 px.
     const std::pair<QString, QWidget*> inputs[] = {
-        {tr("Building"), m_building},        {tr("Codes"), m_codesPanel},
-        {tr("Slab and walls"), m_slabPanel}, {tr("Model"), m_modelPanel},
-        {tr("Excitation"), m_excitation},    {tr("Grid"), m_gridPanel}};
-    // Verdict under the inputs first, then the other inputs tabbed with the first.
+        {tr("Building"), m_building}, {tr("Codes"), m_codesPanel},  {tr("Slab"), m_slabPanel},
+        {tr("Model"), m_modelPanel},  {tr("Motion"), m_excitation}, {tr("Grid"), m_gridPanel}};
     for (const auto& [title, w] : inputs)
         m_inputDocks.push_back(addPanelDock(title, scrollable(w), Qt::LeftDockWidgetArea));
     m_verdictFrame = new StaleFrame(m_verdict);
-    QDockWidget* verdict = addPanelDock(tr("Verdict"), m_verdictFrame, Qt::LeftDockWidgetArea);
-    splitDockWidget(m_inputDocks.front(), verdict, Qt::Vertical);
-    for (std::size_t i = 1; i < m_inputDocks.size(); ++i)
-        tabifyDockWidget(m_inputDocks.front(), m_inputDocks[i]);
-    m_inputDocks.front()->raise();
-    resizeDocks({verdict}, {200}, Qt::Vertical);
+    m_verdictDock = addPanelDock(tr("Verdict"), m_verdictFrame, Qt::LeftDockWidgetArea);
     m_sliceFrame = new StaleFrame(m_slice);
-    QDockWidget* slice =
-        addPanelDock(tr("γc, τc against A"), m_sliceFrame, Qt::BottomDockWidgetArea);
     m_historyStack = new QStackedWidget;
     m_historyStack->addWidget(m_history);
     m_historyStack->addWidget(m_planarHistory);
     m_historyFrame = new StaleFrame(m_historyStack);
-    QDockWidget* history = addPanelDock(tr("History"), m_historyFrame, Qt::BottomDockWidgetArea);
     m_criticalFrame = new StaleFrame(m_critical);
-    QDockWidget* critical =
-        addPanelDock(tr("A_crit(f)"), m_criticalFrame, Qt::BottomDockWidgetArea);
-    splitDockWidget(slice, history, Qt::Horizontal);
-    splitDockWidget(history, critical, Qt::Horizontal);
-    resizeDocks({slice, history, critical}, {300, 300, 300}, Qt::Vertical);
-    resizeDocks({m_inputDocks.front()}, {380}, Qt::Horizontal);
+    m_chartDocks = {addPanelDock(tr("γc, τc against A"), m_sliceFrame, Qt::BottomDockWidgetArea),
+                    addPanelDock(tr("History"), m_historyFrame, Qt::BottomDockWidgetArea),
+                    addPanelDock(tr("A_crit(f)"), m_criticalFrame, Qt::BottomDockWidgetArea)};
+    m_viewMenu->addSeparator();
+    m_viewMenu->addAction(tr("Reset &layout"), this, &MainWindow::resetLayout);
+}
+
+// The inputs tabbed on the left above the verdict; the three charts side by side along the
+// bottom, below the surface only (the left column runs the full height), with a third of it.
+void MainWindow::arrangeDocks() {
+    setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+    for (QDockWidget* d : m_inputDocks)
+        addDockWidget(Qt::LeftDockWidgetArea, d);
+    addDockWidget(Qt::LeftDockWidgetArea, m_verdictDock);
+    splitDockWidget(m_inputDocks.front(), m_verdictDock, Qt::Vertical);
+    for (std::size_t i = 1; i < m_inputDocks.size(); ++i)
+        tabifyDockWidget(m_inputDocks.front(), m_inputDocks[i]);
+    for (QDockWidget* d : m_chartDocks)
+        addDockWidget(Qt::BottomDockWidgetArea, d);
+    splitDockWidget(m_chartDocks[0], m_chartDocks[1], Qt::Horizontal);
+    splitDockWidget(m_chartDocks[1], m_chartDocks[2], Qt::Horizontal);
+    std::vector<QDockWidget*> all = m_inputDocks;
+    all.push_back(m_verdictDock);
+    all.insert(all.end(), m_chartDocks.begin(), m_chartDocks.end());
+    for (QDockWidget* d : all) {
+        d->setFloating(false);
+        d->show();
+    }
+    m_inputDocks.front()->raise();
+    const int h = height();
+    resizeDocks({m_inputDocks.front(), m_verdictDock}, {h * 55 / 100, h * 45 / 100}, Qt::Vertical);
+    resizeDocks({m_inputDocks.front()}, {std::max(430, width() * 30 / 100)}, Qt::Horizontal);
+    resizeDocks({m_chartDocks.front()}, {std::max(240, h * 34 / 100)}, Qt::Vertical);
+    const int w = std::max(300, (width() - 430) / 3);
+    resizeDocks({m_chartDocks[0], m_chartDocks[1], m_chartDocks[2]}, {w, w, w}, Qt::Horizontal);
+}
+
+void MainWindow::resetLayout() {
+    arrangeDocks();
 }
 
 Slab1DCase MainWindow::currentCase() const {
@@ -476,8 +517,10 @@ QImage MainWindow::screenshot() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
+    const Unsaved choice = askToSave(true);
+    if (choice == Unsaved::Cancel) return e->ignore();
     m_runner->cancel();
-    saveSettings();
+    saveSettings(choice == Unsaved::Keep);
     e->accept();
 }
 

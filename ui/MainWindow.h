@@ -34,6 +34,7 @@ class VerdictPanel;
 class ExcitationPanel;
 class GridPanel;
 class HistoryChart;
+class InputHistory;
 class ModelPanel;
 class PlanarHistoryChart;
 class SlabPanel;
@@ -88,6 +89,8 @@ public:
     VerdictPanel* verdictPanel() const { return m_verdict; }
     TeachingView* teachingView() const { return m_teaching; }
     const QString& projectPath() const { return m_path; }
+    // Undo/redo of the inputs and the modified mark (ui/InputHistory.h).
+    InputHistory* inputHistory() const { return m_undo; }
     // Every shown result with the inputs it was made with (ui/ResultState.h).
     const ResultState& results() const { return m_results; }
     const SweepResult& lastSweep() const; // empty when there is no surface
@@ -107,6 +110,8 @@ public slots:
     void cancelSweep();
     void newProject();
     void openDialog();
+    // View → Reset layout: every dock back where a first start puts it.
+    void resetLayout();
     bool save();
     bool saveAsDialog();
 
@@ -120,6 +125,13 @@ protected:
 private:
     void buildActions();
     void buildFileMenu();
+    // Undo/redo and the unsaved-changes guard (MainWindowEdits.cpp).
+    void buildEditMenu();
+    enum class Unsaved { Proceed, Keep, Cancel };
+    // Asks Save / Discard / Cancel (and "Keep for next start" when canKeep) if modified.
+    Unsaved askToSave(bool canKeep = false);
+    void showInputs(const Project& p); // the panels only: no result is cleared
+    void arrangeDocks();
     void updateCodes();
     void updateTitle();
     void buildDocks();
@@ -142,7 +154,7 @@ private:
     bool preparePlanar(SweepJob& job);
     void pickPlanar(double amplitude, double frequency);
     QString modelTitle() const;
-    void saveSettings();
+    void saveSettings(bool keepEdits = false);
     void restoreSettings();
     // A record as the excitation (MainWindowRecord.cpp).
     void buildRecordRun();
@@ -176,6 +188,9 @@ private:
     RunProgress* m_progress;
     QLabel* m_status;
     std::vector<QDockWidget*> m_inputDocks;
+    QDockWidget* m_verdictDock = nullptr;
+    std::vector<QDockWidget*> m_chartDocks; // along the bottom
+    InputHistory* m_undo = nullptr;
 
     Project m_project; // the open project: inputs no panel shows are kept from it
     QString m_path;

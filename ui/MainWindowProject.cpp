@@ -9,6 +9,7 @@
 #include "ui/CodesPanel.h"
 #include "ui/ExcitationPanel.h"
 #include "ui/GridPanel.h"
+#include "ui/InputHistory.h"
 #include "ui/MainWindow.h"
 #include "ui/ModelPanel.h"
 #include "ui/RecentFiles.h"
@@ -30,7 +31,9 @@ namespace kinstab::ui {
 
 namespace {
 constexpr double inch = 0.0254;
-const QString lastProjectKey = QStringLiteral("project/lastInputs");
+// The inputs the user chose to keep unsaved at Quit (absent: none).
+const QString keptInputsKey = QStringLiteral("project/keptInputs");
+const QString savedPathKey = QStringLiteral("project/path"); // the file as last saved
 const QString examplePath = QStringLiteral(":/examples/paper-16-story.json");
 
 QColor codeColour(const std::string& code) {
@@ -60,6 +63,12 @@ Project MainWindow::project() const {
 void MainWindow::showProject(const Project& p) {
     clearResults(); // no result of the previous project may stand under this one's title
     m_project = p;
+    showInputs(p);
+    m_undo->reset(); // a fresh start: nothing to undo, nothing unsaved
+    m_undo->markSaved();
+}
+
+void MainWindow::showInputs(const Project& p) {
     m_building->setBuilding(p.building);
     m_codesPanel->setCodes(p.codes);
     m_slabPanel->load(p.slab,
@@ -102,9 +111,10 @@ void MainWindow::updateCodes() {
 }
 
 void MainWindow::updateTitle() {
+    // [*]: Qt shows the modified mark there (setWindowModified).
     const QString name = m_path.isEmpty() ? tr("untitled") : QFileInfo(m_path).fileName();
-    setWindowTitle(m_modelPanel->isPlanar() ? tr("%1 — planar model — kinstab").arg(name)
-                                            : tr("%1 — kinstab").arg(name));
+    setWindowTitle(m_modelPanel->isPlanar() ? tr("%1[*] — planar model — kinstab").arg(name)
+                                            : tr("%1[*] — kinstab").arg(name));
 }
 
 void MainWindow::newProject() {
@@ -145,6 +155,7 @@ bool MainWindow::openProject(const QString& path, bool quiet) {
 }
 
 void MainWindow::openDialog() {
+    if (askToSave() == Unsaved::Cancel) return;
     const QString path =
         QFileDialog::getOpenFileName(this, tr("Open project"), QFileInfo(m_path).path(),
                                      tr("kinstab projects (*.json);;All files (*)"));
@@ -163,6 +174,7 @@ QString MainWindow::saveProjectAs(const QString& path) {
     m_project = p;
     m_path = path;
     m_recent->add(path);
+    m_undo->markSaved();
     updateTitle();
     return {};
 }
@@ -187,28 +199,36 @@ bool MainWindow::saveAsDialog() {
     return save();
 }
 
-void MainWindow::saveSettings() {
+// The next start opens the file as last saved; unsaved inputs come back only when the user
+// chose "Keep for next start" at Quit, and then marked as unsaved edits.
+void MainWindow::saveSettings(bool keepEdits) {
     QSettings s;
     s.setValue(QStringLiteral("window/geometry"), saveGeometry());
     s.setValue(QStringLiteral("window/state"), saveState());
-    s.setValue(QStringLiteral("project/path"), m_path);
-    if (inputsValid())
-        s.setValue(lastProjectKey, QString::fromStdString(projectToJson(project()).dump()));
+    s.setValue(savedPathKey, m_path);
+    s.remove(QStringLiteral("project/lastInputs")); // older versions kept every edit silently
+    if (keepEdits && inputsValid())
+        s.setValue(keptInputsKey, QString::fromStdString(projectToJson(project()).dump()));
+    else
+        s.remove(keptInputsKey);
 }
 
 void MainWindow::restoreSettings() {
     QSettings s;
     restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(s.value(QStringLiteral("window/state")).toByteArray());
-    // Last session's inputs; on the first start, the paper's example.
-    const QString last = s.value(lastProjectKey).toString();
-    try {
-        if (last.isEmpty()) throw ProjectError("first start");
-        showProject(parseProject(last.toStdString()));
-        m_path = s.value(QStringLiteral("project/path")).toString();
-        updateTitle();
-    } catch (const std::exception&) {
+    // The last saved file; on the first start (or when it is gone), the paper's example.
+    const QString path = s.value(savedPathKey).toString();
+    if (path.isEmpty() || !openProject(path, true))
         if (!openProject(examplePath, true)) newProject();
+    const QString kept = s.value(keptInputsKey).toString();
+    if (kept.isEmpty()) return;
+    try {
+        showInputs(parseProject(kept.toStdString()));
+        m_undo->recordChange(); // one undoable step: the title shows them as unsaved
+        statusBar()->showMessage(tr("Unsaved inputs kept from the last session"), 8000);
+    } catch (const std::exception&) {
+        s.remove(keptInputsKey); // unreadable: the saved file stands
     }
 }
 
