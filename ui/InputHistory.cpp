@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/InputHistory.h"
 
+#include <QAbstractSpinBox>
 #include <QApplication>
 #include <QDateTime>
 #include <QKeyEvent>
+#include <QLineEdit>
 #include <QUndoCommand>
 #include <QUndoStack>
 #include <QWidget>
@@ -38,7 +40,7 @@ public:
 private:
     InputHistory* m_history;
     std::string m_before, m_after;
-    const QObject* m_field; // the focused widget when it was made (null: none)
+    const QObject* m_field; // the text field typed into (null: not typing)
     qint64 m_at;
     bool m_pushed = false;
 };
@@ -65,7 +67,10 @@ void InputHistory::recordChange() {
     if (m_loading) return;
     std::string now = m_snapshot();
     if (now.empty() || now == m_last) return;
-    m_stack->push(new InputEdit(this, m_last, now, QApplication::focusWidget()));
+    // Only typing merges: the focus is in a text field (a click on a box or a list is a step).
+    QWidget* focus = QApplication::focusWidget();
+    const bool typing = qobject_cast<QLineEdit*>(focus) || qobject_cast<QAbstractSpinBox*>(focus);
+    m_stack->push(new InputEdit(this, m_last, now, typing ? focus : nullptr));
     m_last = std::move(now);
 }
 
