@@ -79,7 +79,15 @@ QString screenshotScenario(MainWindow& window, const QString& step, const QStrin
     return {};
 }
 
-void screenshotAfterSweep(MainWindow& window, const QString& path) {
+void screenshotAfterSweep(MainWindow& window, const QString& path, QSize size, int gridPoints) {
+    if (gridPoints > 1) {
+        GridRanges r = window.gridPanel()->ranges();
+        // A hair under the exact step, so that rounding cannot drop the last point.
+        const double n = (gridPoints - 1) * (1 + 1e-9);
+        r.aStep = (r.aTo - r.aFrom) / n;
+        r.fStep = (r.fTo - r.fFrom) / n;
+        window.gridPanel()->setRanges(r);
+    }
     const auto grab = [&window, path] {
         QTimer::singleShot(1500, &window, [&window, path] {
             const bool ok = window.screenshot().save(path);
@@ -96,7 +104,8 @@ void screenshotAfterSweep(MainWindow& window, const QString& path) {
                                               nearest(g.frequencies, 1.125));
         grab(); // after the charts and the 3D view have repainted
     });
-    window.resize(1280, 800); // the documented size, whatever the settings say
+    window.resize(size); // the documented size, whatever the settings say
+    window.resetLayout();
     QTimer::singleShot(500, &window, &MainWindow::runSweep);
 }
 

@@ -4,13 +4,18 @@
 // (A = 1.0 g, f = 1.125 Hz, or the nearest grid point), save the window as an image and quit.
 // Used for the documentation screenshots, taken from the running app under Xvfb.
 
+#include <QSize>
 #include <QString>
 
 namespace kinstab::ui {
 
 class MainWindow;
 
-void screenshotAfterSweep(MainWindow& window, const QString& path);
+// size: the window's size for the image (default: the documented 1280×800). gridPoints > 1: the
+// sweep runs on that many amplitudes and frequencies over the project's ranges (200: a
+// 200×200 grid) instead of the project's steps.
+void screenshotAfterSweep(MainWindow& window, const QString& path, QSize size = {1280, 800},
+                          int gridPoints = 0);
 
 // `kinstab --screenshot FILE --scenario STEP`: the sweep as above, then one step before the
 // image, to show how results follow their inputs (ui/ResultState.h):

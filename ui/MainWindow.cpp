@@ -5,6 +5,7 @@
 #include "ui/FloorsView.h"
 #include "ui/FrictionPanel.h"
 #include "ui/NumericsView.h"
+#include "ui/RecordPreview.h"
 #include "ui/RecordsTab.h"
 
 #include "core/codes/CodeSet.h"
@@ -124,6 +125,8 @@ MainWindow::MainWindow(QWidget* parent)
         connect(p, &InputPanel::changed, m_undo, &InputHistory::recordChange);
     connect(m_building, &BuildingPanel::unitsChanged, m_slabPanel, &SlabPanel::setMetric);
     connect(m_modelPanel, &InputPanel::changed, this, &MainWindow::updateTitle);
+    connect(m_modelPanel, &InputPanel::changed, this,
+            [this] { m_records->preview()->setPlanarBase(m_modelPanel->isPlanar()); });
     connect(m_slabPanel, &InputPanel::changed, this, [this] {
         if (m_slabPanel->isValid()) m_excitation->setTstar(currentCase().tstar);
     });
@@ -137,6 +140,7 @@ MainWindow::MainWindow(QWidget* parent)
     resize(1280, 800);
     arrangeDocks();
     restoreSettings();
+    m_records->preview()->setPlanarBase(m_modelPanel->isPlanar());
     updateRunState();
     updateTitle();
 }
@@ -328,6 +332,7 @@ void MainWindow::runSweep() {
     }
     if (!preparePlanar(job)) return;
     // The old surface, curve, history and verdicts go: the new run replaces them.
+    statusBar()->clearMessage(); // "Opened …" must not cover the run's status
     m_results.startSweep(job.slabCase, job.planar);
     m_overlays.aCrit.clear();
     m_history->clearRun();

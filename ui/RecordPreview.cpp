@@ -37,7 +37,7 @@ QChartView* makeView(const QString& title, const QString& xTitle, const QString&
     chart->addAxis(y, Qt::AlignLeft);
     auto* view = new QChartView(chart);
     view->setRenderHint(QPainter::Antialiasing);
-    view->setMinimumHeight(180);
+    view->setMinimumHeight(250); // below this the axis labels are elided to "…"
     return view;
 }
 
@@ -57,11 +57,11 @@ void addSeries(QChart* chart, const QString& name, const QList<QPointF>& points,
 }
 
 // Round tick values (0, 10, 20 s rather than 0, 10.4, 20.9 s) on the data's own range: ticks at
-// multiples of 1, 2 or 5 x 10^k, about six of them.
-void niceTicks(QValueAxis* a) {
+// multiples of 1, 2 or 5 x 10^k, about `count` of them.
+void niceTicks(QValueAxis* a, double count) {
     const double span = a->max() - a->min();
     if (!(span > 0.0)) return;
-    const double raw = span / 6.0, decade = std::pow(10.0, std::floor(std::log10(raw)));
+    const double raw = span / count, decade = std::pow(10.0, std::floor(std::log10(raw)));
     const double step = raw / decade < 1.5   ? decade
                         : raw / decade < 3.5 ? 2 * decade
                         : raw / decade < 7.5 ? 5 * decade
@@ -73,8 +73,8 @@ void niceTicks(QValueAxis* a) {
 }
 
 void niceAxes(QChart* chart) {
-    niceTicks(axis(chart, Qt::Horizontal));
-    niceTicks(axis(chart, Qt::Vertical));
+    niceTicks(axis(chart, Qt::Horizontal), 6);
+    niceTicks(axis(chart, Qt::Vertical), 4); // the charts are wide and short
 }
 
 void clearSeries(QChart* chart) {
@@ -214,11 +214,25 @@ std::optional<FloorFilterParams> RecordPreview::floorFilter() const {
 
 void RecordPreview::setFloorFilter(std::optional<FloorFilterParams> filter) {
     const QSignalBlocker b1(filterOn_), b2(period_), b3(damping_);
-    filterOn_->setChecked(filter.has_value());
+    filterOn_->setChecked(filter.has_value() && !planarBase_);
     if (filter) {
         period_->setValue(filter->period);
         damping_->setValue(filter->damping * 100.0);
     }
+    rebuild();
+}
+
+void RecordPreview::setPlanarBase(bool planar) {
+    if (planar == planarBase_) return;
+    planarBase_ = planar;
+    const QSignalBlocker block(filterOn_);
+    if (planar) filterOn_->setChecked(false);
+    filterOn_->setEnabled(!planar);
+    filterOn_->setToolTip(
+        planar ? tr("Off for a planar project: the record is the slab's vertical base motion, "
+                    "applied as recorded")
+               : tr("Absolute acceleration of a damped linear oscillator under the record "
+                    "(paper eq. 6)"));
     rebuild();
 }
 

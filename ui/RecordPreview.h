@@ -30,6 +30,9 @@ public:
     bool loadFile(const QString& path, const RecordReadOptions& options = {});
     void setRecord(const Accelerogram& ground);
     void setFloorFilter(std::optional<FloorFilterParams> filter);
+    // A planar project takes the record as the slab's vertical base motion, unfiltered: the
+    // floor filter (a horizontal floor's response) is then switched off and locked.
+    void setPlanarBase(bool planar);
 
     const std::optional<Accelerogram>& record() const { return ground_; }
     const std::optional<Accelerogram>& floorMotion() const { return floor_; }
@@ -62,6 +65,7 @@ private:
     QString error_;
     QLabel* info_ = nullptr;
     QCheckBox* filterOn_ = nullptr;
+    bool planarBase_ = false;
     QDoubleSpinBox* period_ = nullptr;
     QDoubleSpinBox* damping_ = nullptr;
     QChartView* groundView_ = nullptr;

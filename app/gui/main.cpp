@@ -22,6 +22,13 @@ const QCommandLineOption
               "With --screenshot: one step after the sweep (open:PROJECT, codes, mu, cancel).",
               "STEP");
 
+const QCommandLineOption kSize("size", "With --screenshot: the window's size (default 1280x800).",
+                               "WxH");
+const QCommandLineOption kGrid("grid",
+                               "With --screenshot: N amplitudes by N frequencies over the "
+                               "project's ranges (2..400).",
+                               "N");
+
 void describe(QCoreApplication& app, QCommandLineParser& parser) {
     QCoreApplication::setApplicationName("kinstab");
     QCoreApplication::setOrganizationName("kinstab");
@@ -33,6 +40,8 @@ void describe(QCoreApplication& app, QCommandLineParser& parser) {
     parser.addVersionOption();
     parser.addOption(kShot);
     parser.addOption(kScenario);
+    parser.addOption(kSize);
+    parser.addOption(kGrid);
     parser.addPositionalArgument("project", "Project file (.json) to open.", "[project]");
     parser.process(app);
 }
@@ -76,7 +85,28 @@ int main(int argc, char** argv) {
             return 2;
         }
     } else if (parser.isSet(kShot)) {
-        kinstab::ui::screenshotAfterSweep(window, parser.value(kShot));
+        QSize size(1280, 800);
+        if (parser.isSet(kSize)) {
+            const QStringList wh = parser.value(kSize).split('x');
+            size = wh.size() == 2 ? QSize(wh[0].toInt(), wh[1].toInt()) : QSize();
+            if (size.width() < 640 || size.height() < 480 || size.width() > 7680 ||
+                size.height() > 4320) {
+                std::fprintf(stderr, "kinstab: --size %s: must be WxH, 640x480 to 7680x4320\n",
+                             qPrintable(parser.value(kSize)));
+                return 2;
+            }
+        }
+        int grid = 0;
+        if (parser.isSet(kGrid)) {
+            bool ok = false;
+            grid = parser.value(kGrid).toInt(&ok);
+            if (!ok || grid < 2 || grid > 400) {
+                std::fprintf(stderr, "kinstab: --grid %s: must be a whole number 2 to 400\n",
+                             qPrintable(parser.value(kGrid)));
+                return 2;
+            }
+        }
+        kinstab::ui::screenshotAfterSweep(window, parser.value(kShot), size, grid);
     }
     return QApplication::exec();
 }
