@@ -23,9 +23,9 @@ QString sectionForTitle(const QString& title) {
     static const std::map<QString, QString> table = {
         {QStringLiteral("Building"), QStringLiteral("Building")},
         {QStringLiteral("Codes"), QStringLiteral("Codes")},
-        {QStringLiteral("Slab and walls"), QStringLiteral("Slab and walls")},
+        {QStringLiteral("Slab"), QStringLiteral("Slab and walls")},
         {QStringLiteral("Model"), QStringLiteral("Model")},
-        {QStringLiteral("Excitation"), QStringLiteral("Excitation")},
+        {QStringLiteral("Motion"), QStringLiteral("Excitation")},
         {QStringLiteral("Grid"), QStringLiteral("Grid")},
         {QStringLiteral("Verdict"), QStringLiteral("Verdict")},
         {QStringLiteral("γc, τc against A"), QStringLiteral("The charts")},

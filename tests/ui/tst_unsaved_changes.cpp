@@ -54,6 +54,18 @@ struct Answer {
     }
 };
 
+// Opens `path`, types μ, quits answering `answer`: true when the box came once and the window
+// closed.
+bool editAndQuit(const QString& path, const QString& mu, const QString& answer) {
+    MainWindow w;
+    if (!w.openProject(path)) return false;
+    w.show();
+    setMu(w, mu);
+    Answer a(answer);
+    const bool closed = w.close();
+    return closed && a.seen == 1;
+}
+
 QAction* fileAction(MainWindow& w, const QString& text) {
     for (QAction* a : w.menuBar()->actions().first()->menu()->actions())
         if (a->text().remove('&').startsWith(text)) return a;
@@ -128,15 +140,7 @@ private slots:
     void quitSaveWritesTheFile() {
         const QString other = dir_.filePath("saved-at-quit.json");
         QFile::copy(path_, other);
-        {
-            MainWindow w;
-            QVERIFY(w.openProject(other));
-            w.show();
-            setMu(w, "0.65");
-            Answer save("Save");
-            QVERIFY(w.close());
-            QCOMPARE(save.seen, 1);
-        }
+        QVERIFY(editAndQuit(other, "0.65", "Save"));
         MainWindow next; // the next start: the saved file, with the edit in it
         QCOMPARE(next.projectPath(), other);
         QCOMPARE(next.currentCase().slab.mu, 0.65);
@@ -144,15 +148,7 @@ private slots:
     }
 
     void quitDiscardRestoresTheSavedFileNextTime() {
-        {
-            MainWindow w;
-            QVERIFY(w.openProject(path_));
-            w.show();
-            setMu(w, "0.7");
-            Answer discard("Discard");
-            QVERIFY(w.close());
-            QCOMPARE(discard.seen, 1);
-        }
+        QVERIFY(editAndQuit(path_, "0.7", "Discard"));
         MainWindow next;
         QCOMPARE(next.projectPath(), path_);
         QCOMPARE(next.currentCase().slab.mu, 0.55); // not the discarded 0.7
@@ -160,15 +156,7 @@ private slots:
     }
 
     void quitKeepBringsTheEditsBackAsUnsaved() {
-        {
-            MainWindow w;
-            QVERIFY(w.openProject(path_));
-            w.show();
-            setMu(w, "0.7");
-            Answer keep("Keep for next start");
-            QVERIFY(w.close());
-            QCOMPARE(keep.seen, 1);
-        }
+        QVERIFY(editAndQuit(path_, "0.7", "Keep for next start"));
         MainWindow next;
         QCOMPARE(next.projectPath(), path_);
         QCOMPARE(next.currentCase().slab.mu, 0.7);
