@@ -118,11 +118,10 @@ MainWindow::MainWindow(QWidget* parent)
         connect(p, &InputPanel::changed, this, &MainWindow::updateCodes);
     // After updateCodes: results are judged against the code ratios of the new inputs.
     for (InputPanel* p : std::initializer_list<InputPanel*>{
-             m_building, m_codesPanel, m_slabPanel, m_modelPanel, m_excitation, m_gridPanel})
+             m_building, m_codesPanel, m_slabPanel, m_modelPanel, m_excitation, m_gridPanel}) {
         connect(p, &InputPanel::changed, this, &MainWindow::inputsChanged);
-    for (InputPanel* p : std::initializer_list<InputPanel*>{
-             m_building, m_codesPanel, m_slabPanel, m_modelPanel, m_excitation, m_gridPanel})
         connect(p, &InputPanel::changed, m_undo, &InputHistory::recordChange);
+    }
     connect(m_building, &BuildingPanel::unitsChanged, m_slabPanel, &SlabPanel::setMetric);
     connect(m_modelPanel, &InputPanel::changed, this, &MainWindow::updateTitle);
     connect(m_modelPanel, &InputPanel::changed, this,
