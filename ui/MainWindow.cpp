@@ -470,7 +470,7 @@ void MainWindow::exportChart(QChartView* view, const QString& name) {
 
 QImage MainWindow::screenshot() {
     QImage img = grab().toImage();
-    if (m_surface->is3D()) {
+    if (m_surface->showsGL()) {
         QWidget* c = m_surface->graphWidget();
         const QRect target(c->mapTo(this, QPoint(0, 0)), c->size());
         const QImage graph = m_surface->renderImage(c->size() * img.devicePixelRatio());
