@@ -27,6 +27,7 @@
 #include "ui/SurfaceView.h"
 #include "ui/VerdictPanel.h"
 #include "ui/report/ReportExport.h"
+#include "ui/teaching/PresentationMode.h"
 #include "ui/teaching/TeachingView.h"
 
 #include <QAction>
@@ -104,6 +105,7 @@ MainWindow::MainWindow(QWidget* parent)
     buildActions();
     installHelpMenu(this);
     buildDocks();
+    installPresentationMode(this, m_viewMenu, m_centre, m_teaching);
     m_progress->setMaximumWidth(260);
     m_progress->setTextVisible(true);
     m_progress->hide();

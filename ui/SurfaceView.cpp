@@ -290,7 +290,7 @@ void SurfaceView::resetView() {
         camera->setCameraPreset(Q3DCamera::CameraPresetDirectlyAbove);
     else
         camera->setCameraPosition(kCameraX, kCameraY, kZoom);
-    camera->setZoomLevel(m_mode == SurfaceMode::Top ? 110.0f : kZoom);
+    camera->setZoomLevel(m_mode == SurfaceMode::Top ? 140.0f : kZoom);
     camera->setTarget(QVector3D(0, 0, 0));
 }
 
@@ -378,8 +378,8 @@ void SurfaceView::rebuildOverlays() {
 
     // Axes fit the grid (widened to whole 1-2-5 steps); code ratios and the building's frequency
     // are drawn only where they fall on the surface, the legend lists the others.
-    const NiceAxis ax = niceAxis(m_grid.amplitudes.front(), m_grid.amplitudes.back(), 6);
-    const NiceAxis fx = niceAxis(m_grid.frequencies.front(), m_grid.frequencies.back(), 6);
+    const NiceAxis ax = niceAxis(m_grid.amplitudes.front(), m_grid.amplitudes.back(), 10);
+    const NiceAxis fx = niceAxis(m_grid.frequencies.front(), m_grid.frequencies.back(), 10);
     const float yMax = static_cast<float>(colourScaleMaximum(m_grid));
     const NiceAxis yx = niceAxis(0, yMax, 6);
     auto apply = [](QValue3DAxis* axis, const NiceAxis& n) {

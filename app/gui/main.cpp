@@ -19,7 +19,8 @@ const QCommandLineOption kShot("screenshot", "Run the sweep, save the window to 
                                "FILE");
 const QCommandLineOption
     kScenario("scenario",
-              "With --screenshot: one step after the sweep (open:PROJECT, codes, mu, cancel).",
+              "With --screenshot: one step after the sweep (open:PROJECT, codes, mu, cancel, top, "
+              "map), optionally @WIDTHxHEIGHT.",
               "STEP");
 
 void describe(QCoreApplication& app, QCommandLineParser& parser) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/teaching/SlabPainter.h"
 
+#include "ui/teaching/TextScale.h"
+
 #include "ui/teaching/StateStyle.h"
 #include "ui/teaching/TopViewPainter.h"
 #include "ui/teaching/TracePainter.h"
@@ -253,7 +255,8 @@ void paintSlabScene(QPainter& p, const QRectF& area, const SlabScene& s) {
     p.save();
     p.setRenderHint(QPainter::Antialiasing);
     p.fillRect(area, Qt::white);
-    const double headerPx = std::clamp(area.height() * 0.045, 11.0, 16.0);
+    const double scale = textScale(p); // presentation mode: larger text, same drawing
+    const double headerPx = std::clamp(area.height() * 0.045, 11.0, 16.0) * scale;
     const double headerH = headerPx * 3.8;
     const double worldW = kSpan + 2 * kMargin;
     const double worldH = kTopPad + kSlabT + kWallH + kBaseH + kRulerH + 0.35;
@@ -264,7 +267,7 @@ void paintSlabScene(QPainter& p, const QRectF& area, const SlabScene& s) {
     f.x0 = side.left() + (side.width() - worldW * f.k) / 2 + kMargin * f.k;
     f.y0 = area.top() + headerH + (kTopPad + kSlabT) * f.k;
     QFont font = p.font();
-    font.setPixelSize(static_cast<int>(std::clamp(f.k * 0.2, 10.0, 15.0)));
+    font.setPixelSize(static_cast<int>(std::clamp(f.k * 0.2, 10.0, 15.0) * scale));
     p.setFont(font);
     paintBaseAndRuler(p, f, s);
     paintWall(p, f, 0.0, 1.0);

@@ -1,0 +1,15 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Text in the painted teaching scene follows the view's font scale (presentation mode): the
+// painter starts with the widget's font, so its size against the application font is the scale.
+
+class QPainter;
+
+namespace kinstab::ui {
+
+// 1 for normal text, 2 when the view's font is twice the application's (clamped to [0.5, 4]).
+double textScale(const QPainter& p);
+// A pixel size given for normal text, scaled.
+int scaledPixels(const QPainter& p, double pixels);
+
+} // namespace kinstab::ui
