@@ -25,6 +25,7 @@
 #include "ui/SliceChart.h"
 #include "ui/StaleFrame.h"
 #include "ui/SurfaceView.h"
+#include "ui/Units.h"
 #include "ui/VerdictPanel.h"
 #include "ui/report/ReportExport.h"
 #include "ui/teaching/PresentationMode.h"
@@ -106,6 +107,7 @@ MainWindow::MainWindow(QWidget* parent)
     installHelpMenu(this);
     buildDocks();
     installPresentationMode(this, m_viewMenu, m_centre, m_teaching);
+    installUnitsMenu(m_viewMenu, this);
     m_progress->setMaximumWidth(260);
     m_progress->setTextVisible(true);
     m_progress->hide();
@@ -122,7 +124,6 @@ MainWindow::MainWindow(QWidget* parent)
     for (InputPanel* p : std::initializer_list<InputPanel*>{
              m_building, m_codesPanel, m_slabPanel, m_modelPanel, m_excitation, m_gridPanel})
         connect(p, &InputPanel::changed, this, &MainWindow::inputsChanged);
-    connect(m_building, &BuildingPanel::unitsChanged, m_slabPanel, &SlabPanel::setMetric);
     connect(m_modelPanel, &InputPanel::changed, this, &MainWindow::updateTitle);
     connect(m_slabPanel, &InputPanel::changed, this, [this] {
         if (m_slabPanel->isValid()) m_excitation->setTstar(currentCase().tstar);
