@@ -441,21 +441,23 @@ void SurfaceView::rebuildOverlays() {
             g->addCustomItem(label);
         }
     }
-    if (m_overlays.aCrit.size() >= 2) {
-        std::vector<float> cz, ca;
-        for (const auto& [f, a] : m_overlays.aCrit) {
-            cz.push_back(static_cast<float>(f));
-            ca.push_back(static_cast<float>(a));
-        }
+    // A_crit(f) where it lies on the grid: the renderer crashes (Qt 6.4) on a strip that
+    // leaves the axis range, and the axes no longer stretch to hold it.
+    std::vector<std::pair<double, double>> crit;
+    for (const auto& fa : m_overlays.aCrit)
+        if (onGrid(fa.second) && fa.first >= m_grid.frequencies.front() &&
+            fa.first <= m_grid.frequencies.back())
+            crit.push_back(fa);
+    if (crit.size() >= 2) {
         // Columns of this strip are not straight (A_crit varies with f); it is two points wide.
         auto* array = new QSurfaceDataArray;
-        for (std::size_t r = 0; r < cz.size(); ++r) {
+        for (const auto& [f, a] : crit) {
             // On the surface's rising wall, where gamma_c leaves 0.
-            const float y = heightAt(nearestFrequency(m_grid, m_overlays.aCrit[r].first),
-                                     m_overlays.aCrit[r].second);
+            const float y = heightAt(nearestFrequency(m_grid, f), a);
+            const float x = static_cast<float>(a), z = static_cast<float>(f);
             auto* row = new QSurfaceDataRow(2);
-            (*row)[0].setPosition(QVector3D(ca[r] - wa, y, cz[r]));
-            (*row)[1].setPosition(QVector3D(ca[r] + wa, y, cz[r]));
+            (*row)[0].setPosition(QVector3D(std::max(aMin, x - wa), y, z));
+            (*row)[1].setPosition(QVector3D(std::min(aMax, x + wa), y, z));
             array->append(row);
         }
         add(makeOverlay(QColor(250, 250, 250)), array);
