@@ -107,7 +107,7 @@ MainWindow::MainWindow(QWidget* parent)
     installHelpMenu(this);
     buildDocks();
     installPresentationMode(this, m_viewMenu, m_centre, m_teaching);
-    installUnitsMenu(m_viewMenu, this);
+    installUnitsMenu(m_viewMenu, this, [this](UnitSystem s) { m_teaching->setUnitSystem(s); });
     m_progress->setMaximumWidth(260);
     m_progress->setTextVisible(true);
     m_progress->hide();

@@ -9,8 +9,11 @@
 #include "ui/MainWindow.h"
 #include "ui/NumberField.h"
 #include "ui/Units.h"
+#include "ui/teaching/ParameterPanel.h"
+#include "ui/teaching/TeachingView.h"
 
 #include <QAction>
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QStandardPaths>
@@ -100,6 +103,21 @@ private slots:
         QCOMPARE(savedUnitSystem(), UnitSystem::US);
         MainWindow next; // the next start shows the remembered system
         QCOMPARE(unitLabel(namedField(&next, "height")), QStringLiteral("ft"));
+    }
+
+    // The Teaching view's wall width follows too, and its run keeps the exact width.
+    void teachingFollows() {
+        MainWindow w;
+        TeachingView* view = w.teachingView();
+        const double d = view->params().wallWidthM;
+        QDoubleSpinBox* spin = view->parameterPanel()->spinBox(ParameterPanel::Quantity::WallWidth);
+        choose(w, "unitsUS");
+        QCOMPARE(spin->suffix(), QStringLiteral(" in"));
+        QCOMPARE_LE(std::abs(spin->value() - d / 0.0254), 0.0005 + 1e-12); // 3 decimals shown
+        choose(w, "unitsSI");
+        QCOMPARE(spin->suffix(), QStringLiteral(" mm"));
+        QCOMPARE_LE(std::abs(spin->value() - d * 1000), 0.05 + 1e-12); // 1 decimal shown
+        QCOMPARE(view->params().wallWidthM, d);
     }
 };
 

@@ -90,6 +90,12 @@ void TeachingView::stepFrames(int frames) {
     player_->seek(player_->tau() + frames * player_->speed() / 25.0 / tstar);
 }
 
+void TeachingView::setUnitSystem(UnitSystem s) {
+    units_ = s;
+    panel_->setUnitSystem(s);
+    showFrame(player_->tau());
+}
+
 void TeachingView::setFontScale(double scale) {
     fontScale_ = std::clamp(scale, 0.5, 4.0);
     QFont f = QApplication::font();
@@ -277,7 +283,7 @@ void TeachingView::rerun(const TeachingParams& p) {
 void TeachingView::showFrame(double tau) {
     const TeachingFrame f = run_->frameAt(tau);
     animation_->setScene(
-        SlabScene{f, run_->params(), run_->tstar(), run_->displayEnd(), run_->exitSide()});
+        SlabScene{f, run_->params(), run_->tstar(), run_->displayEnd(), run_->exitSide(), units_});
     traces_->setCursor(tau);
     log_->setCurrent(f.eventIndex);
     {

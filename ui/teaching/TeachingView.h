@@ -5,6 +5,7 @@
 // sliders that re-run at once, the "where am I" map and one-click presets for the paper's
 // figures. Self-contained: the main window docks it as a tab.
 
+#include "ui/Units.h"
 #include "ui/teaching/FigurePresets.h"
 #include "ui/teaching/TeachingRun.h"
 
@@ -61,7 +62,8 @@ public slots:
     bool applyPreset(const QString& id);                  // false for an unknown id
     // Show the run at (A, f) with the rest unchanged: e.g. a point picked on the main surface.
     void showPoint(double amplitude, double frequencyHz);
-    void setFontScale(double scale); // clamped to [0.5, 4]
+    void setFontScale(double scale);               // clamped to [0.5, 4]
+    void setUnitSystem(kinstab::ui::UnitSystem s); // lengths in the panel and the drawing
 
 signals:
     void runChanged();
@@ -98,6 +100,7 @@ private:
     QComboBox* fontScaleBox_;
     QWidget* side_ = nullptr;
     double fontScale_ = 1.0;
+    UnitSystem units_ = UnitSystem::SI;
     QString presetId_;
     MapMode mapMode_ = MapMode::Surface;
     MapRange mapRange_;
