@@ -7,6 +7,9 @@
 #include "ui/NumberField.h"
 #include "ui/SlabPanel.h"
 #include "ui/SurfaceView.h"
+#include "ui/teaching/PresentationMode.h"
+#include "ui/teaching/TeachingPlayer.h"
+#include "ui/teaching/TeachingView.h"
 
 #include <QApplication>
 #include <QTimer>
@@ -59,6 +62,15 @@ void fineGrid(MainWindow& window) {
     window.gridPanel()->setRanges(GridRanges{0.505, 1.5, 0.005, 0.26, 2.25, 0.01});
 }
 
+// The Teaching view in presentation mode, a moment into the "moderate shaking" preset's run.
+void present(MainWindow& window, const QString& path) {
+    TeachingView* view = window.teachingView();
+    view->applyPreset(QStringLiteral("fig29"));
+    if (auto* mode = window.findChild<PresentationMode*>()) mode->enter();
+    view->player()->seek(view->run().displayEnd() * 0.55);
+    saveAndQuit(window, path);
+}
+
 bool isViewStep(const QString& step) {
     return step == QLatin1String("top") || step == QLatin1String("map");
 }
@@ -87,12 +99,17 @@ QString screenshotScenario(MainWindow& window, const QString& scenario, const QS
             .arg(scenario);
     const bool known = step.startsWith(QLatin1String("open:")) || step == QLatin1String("codes") ||
                        step == QLatin1String("mu") || step == QLatin1String("cancel") ||
-                       isViewStep(step);
+                       isViewStep(step) || step == QLatin1String("present");
     if (!known)
-        return QStringLiteral("--scenario %1: must be open:PROJECT, codes, mu, cancel, top or map "
+        return QStringLiteral("--scenario %1: must be open:PROJECT, codes, mu, cancel, top, map or "
+                              "present "
                               "(optionally @WIDTHxHEIGHT)")
             .arg(scenario);
     window.resize(size);
+    if (step == QLatin1String("present")) {
+        QTimer::singleShot(500, &window, [&window, path] { present(window, path); });
+        return {};
+    }
     auto once = std::make_shared<bool>(false);
     QObject::connect(&window, &MainWindow::sweepFinished, &window, [&window, step, path, once] {
         if (*once) return;

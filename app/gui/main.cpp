@@ -20,7 +20,7 @@ const QCommandLineOption kShot("screenshot", "Run the sweep, save the window to 
 const QCommandLineOption
     kScenario("scenario",
               "With --screenshot: one step after the sweep (open:PROJECT, codes, mu, cancel, top, "
-              "map), optionally @WIDTHxHEIGHT.",
+              "map) or present, optionally @WIDTHxHEIGHT.",
               "STEP");
 
 void describe(QCoreApplication& app, QCommandLineParser& parser) {

@@ -275,7 +275,8 @@ void paintSlabScene(QPainter& p, const QRectF& area, const SlabScene& s) {
     f.x0 = side.left() + (side.width() - worldW * f.k) / 2 + kMargin * f.k;
     f.y0 = area.top() + headerH + (kTopPad + kSlabT) * f.k;
     QFont font = p.font();
-    font.setPixelSize(static_cast<int>(std::clamp(f.k * 0.2, 10.0, 15.0) * scale));
+    font.setPixelSize(
+        static_cast<int>(std::clamp(f.k * 0.2, 10.0, 15.0) * std::min(scale, kLabelMaxScale)));
     p.setFont(font);
     paintBaseAndRuler(p, f, s);
     paintWall(p, f, 0.0, 1.0);

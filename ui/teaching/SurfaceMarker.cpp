@@ -217,7 +217,7 @@ void SurfaceMarker::paintEvent(QPaintEvent*) {
     p.fillRect(rect(), Qt::white);
     p.setRenderHint(QPainter::Antialiasing);
     QFont font = p.font();
-    font.setPixelSize(scaledPixels(p, 11)); // larger in presentation mode
+    font.setPixelSize(scaledPixels(p, 11, kLabelMaxScale)); // larger in presentation mode
     p.setFont(font);
     const bool surface = current_.mode == MapMode::Surface;
     const QString ref = current_.params.scale == TauScale::TauRise ? QStringLiteral("τ_rise")

@@ -16,8 +16,8 @@ double textScale(const QPainter& p) {
     return std::clamp(now / base, 0.5, 4.0);
 }
 
-int scaledPixels(const QPainter& p, double pixels) {
-    return static_cast<int>(std::lround(pixels * textScale(p)));
+int scaledPixels(const QPainter& p, double pixels, double maxScale) {
+    return static_cast<int>(std::lround(pixels * std::min(textScale(p), maxScale)));
 }
 
 } // namespace kinstab::ui

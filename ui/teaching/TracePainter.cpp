@@ -180,7 +180,7 @@ void paintTraces(QPainter& p, const QRectF& area, const TeachingRun& run, double
     p.setRenderHint(QPainter::Antialiasing);
     p.fillRect(area, Qt::white);
     QFont font = p.font();
-    font.setPixelSize(scaledPixels(p, 11)); // larger in presentation mode
+    font.setPixelSize(scaledPixels(p, 11, kLabelMaxScale)); // larger in presentation mode
     p.setFont(font);
     const TraceLayout l = traceLayout(area, run);
     const double peak =
