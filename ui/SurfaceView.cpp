@@ -290,7 +290,7 @@ void SurfaceView::resetView() {
         camera->setCameraPreset(Q3DCamera::CameraPresetDirectlyAbove);
     else
         camera->setCameraPosition(kCameraX, kCameraY, kZoom);
-    camera->setZoomLevel(m_mode == SurfaceMode::Top ? 140.0f : kZoom);
+    camera->setZoomLevel(m_mode == SurfaceMode::Top ? 100.0f : kZoom);
     camera->setTarget(QVector3D(0, 0, 0));
 }
 
