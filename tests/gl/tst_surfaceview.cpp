@@ -63,6 +63,12 @@ GammaGrid halfCancelled() {
         g.gamma[k] = k < g.gamma.size() / 2 ? 0.0 : std::nan("");
     return g;
 }
+// The view at 640 × 480 on screen (the GL window renders only when exposed).
+bool shown(SurfaceView& view) {
+    view.resize(640, 480);
+    view.show();
+    return QTest::qWaitForWindowExposed(&view);
+}
 GammaGrid squareGrid(int n) {
     GammaGrid g;
     for (int i = 0; i < n; ++i) {
@@ -108,9 +114,7 @@ private slots:
     void rendersAndSelects() {
         SurfaceView view;
         if (!view.is3D()) QSKIP("no OpenGL context");
-        view.resize(640, 480);
-        view.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QVERIFY(shown(view));
         view.setData(testGrid());
         SurfaceOverlays o;
         o.codes = {{"UBC 1976", 0.16, Qt::magenta}, {"ATC 3-06", 0.275, QColor(255, 140, 0)}};
@@ -132,9 +136,7 @@ private slots:
     void notComputedIsDrawnDistinctFromStable() {
         SurfaceView view;
         if (!view.is3D()) QSKIP("no OpenGL context");
-        view.resize(640, 480);
-        view.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QVERIFY(shown(view));
         GammaGrid all = halfCancelled();
         for (double& g : all.gamma)
             g = 0.0; // everything computed and stable
@@ -187,9 +189,7 @@ private slots:
     void wireframeDefaultAndToggle() {
         SurfaceView view;
         if (!view.is3D()) QSKIP("no OpenGL context");
-        view.resize(640, 480);
-        view.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QVERIFY(shown(view));
         view.setData(testGrid()); // 4 × 3
         QVERIFY(view.wireframe());
         QSurface3DSeries* surface = surfaceSeries();
@@ -213,9 +213,7 @@ private slots:
     void topViewMapAndReset() {
         SurfaceView view;
         if (!view.is3D()) QSKIP("no OpenGL context");
-        view.resize(640, 480);
-        view.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QVERIFY(shown(view));
         view.setData(testGrid());
         Q3DSurface* graph = graphWindow();
         QVERIFY(graph);

@@ -30,6 +30,15 @@ QList<QDockWidget*> visibleDocks(MainWindow& w) {
         if (d->isVisible()) out << d;
     return out;
 }
+// The window at 1280 × 800 with the Teaching tab in front.
+bool showTeachingTab(MainWindow& w) {
+    w.resize(1280, 800);
+    w.show();
+    auto* tabs = w.findChild<QTabWidget*>();
+    for (int i = 0; i < tabs->count(); ++i)
+        if (tabs->widget(i)->isAncestorOf(w.teachingView())) tabs->setCurrentIndex(i);
+    return QTest::qWaitForWindowExposed(&w);
+}
 } // namespace
 
 class TstTeachingPresentation : public QObject {
@@ -95,13 +104,8 @@ private slots:
 
     void keysWorkAfterClickingTheScene() {
         MainWindow w;
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(showTeachingTab(w));
         TeachingView* view = w.teachingView();
-        auto* tabs = w.findChild<QTabWidget*>();
-        for (int i = 0; i < tabs->count(); ++i)
-            if (tabs->widget(i)->isAncestorOf(view)) tabs->setCurrentIndex(i);
         QTRY_VERIFY(view->animation()->isVisible());
         QTest::mouseClick(view->animation(), Qt::LeftButton);
         QCOMPARE(QApplication::focusWidget(), view->animation());
@@ -136,13 +140,8 @@ private slots:
     // At 1280 × 800 the play button stays inside the window with every preset.
     void playBarStaysOnScreen() {
         MainWindow w;
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(showTeachingTab(w));
         TeachingView* view = w.teachingView();
-        auto* tabs = w.findChild<QTabWidget*>();
-        for (int i = 0; i < tabs->count(); ++i)
-            if (tabs->widget(i)->isAncestorOf(view)) tabs->setCurrentIndex(i);
         QToolButton* play = nullptr;
         for (QToolButton* b : view->findChildren<QToolButton*>())
             if (b->toolTip().startsWith(QStringLiteral("Play"))) play = b;
