@@ -7,6 +7,9 @@
 #include "ui/NumberField.h"
 #include "ui/SlabPanel.h"
 #include "ui/SurfaceView.h"
+#include "ui/teaching/PresentationMode.h"
+#include "ui/teaching/TeachingPlayer.h"
+#include "ui/teaching/TeachingView.h"
 
 #include <QApplication>
 #include <QTimer>
@@ -54,19 +57,66 @@ void applyStep(MainWindow& window, const QString& step) {
     }
 }
 
+// A 200 × 200 grid over the paper's range and beyond (A 0.505-1.5 g, f 0.26-2.25 Hz).
+void fineGrid(MainWindow& window) {
+    window.gridPanel()->setRanges(GridRanges{0.505, 1.5, 0.005, 0.26, 2.25, 0.01});
+}
+
+// The Teaching view in presentation mode, a moment into the "moderate shaking" preset's run.
+void present(MainWindow& window, const QString& path) {
+    TeachingView* view = window.teachingView();
+    view->applyPreset(QStringLiteral("fig29"));
+    if (auto* mode = window.findChild<PresentationMode*>()) mode->enter();
+    view->player()->seek(view->run().displayEnd() * 0.55);
+    saveAndQuit(window, path);
+}
+
+bool isViewStep(const QString& step) {
+    return step == QLatin1String("top") || step == QLatin1String("map");
+}
+
+// "STEP@WIDTHxHEIGHT": the window size (1280 × 800 without it); false for a malformed size.
+bool splitSize(QString& step, QSize& size) {
+    size = QSize(1280, 800);
+    const qsizetype at = step.lastIndexOf(QLatin1Char('@'));
+    if (at < 0) return true;
+    const QStringList wh = step.mid(at + 1).split(QLatin1Char('x'));
+    step.truncate(at);
+    bool okW = false, okH = false;
+    if (wh.size() == 2) size = QSize(wh[0].toInt(&okW), wh[1].toInt(&okH));
+    return okW && okH && size.width() >= 640 && size.height() >= 480 && size.width() <= 7680 &&
+           size.height() <= 4320;
+}
+
 } // namespace
 
-QString screenshotScenario(MainWindow& window, const QString& step, const QString& path) {
+QString screenshotScenario(MainWindow& window, const QString& scenario, const QString& path) {
+    QString step = scenario;
+    QSize size;
+    if (!splitSize(step, size))
+        return QStringLiteral("--scenario %1: the size after @ must be WIDTHxHEIGHT, from 640x480 "
+                              "to 7680x4320")
+            .arg(scenario);
     const bool known = step.startsWith(QLatin1String("open:")) || step == QLatin1String("codes") ||
-                       step == QLatin1String("mu") || step == QLatin1String("cancel");
+                       step == QLatin1String("mu") || step == QLatin1String("cancel") ||
+                       isViewStep(step) || step == QLatin1String("present");
     if (!known)
-        return QStringLiteral("--scenario %1: must be open:PROJECT, codes, mu or cancel").arg(step);
-    window.resize(1280, 800);
+        return QStringLiteral("--scenario %1: must be open:PROJECT, codes, mu, cancel, top, map or "
+                              "present "
+                              "(optionally @WIDTHxHEIGHT)")
+            .arg(scenario);
+    window.resize(size);
+    if (step == QLatin1String("present")) {
+        QTimer::singleShot(500, &window, [&window, path] { present(window, path); });
+        return {};
+    }
     auto once = std::make_shared<bool>(false);
     QObject::connect(&window, &MainWindow::sweepFinished, &window, [&window, step, path, once] {
         if (*once) return;
         *once = true;
         pickFig35(window);
+        if (step == QLatin1String("top")) window.surfaceView()->setMode(SurfaceMode::Top);
+        if (step == QLatin1String("map")) window.surfaceView()->setMode(SurfaceMode::Map);
         if (step != QLatin1String("cancel")) applyStep(window, step);
         saveAndQuit(window, path);
     });
@@ -75,6 +125,7 @@ QString screenshotScenario(MainWindow& window, const QString& step, const QStrin
         window.gridPanel()->setRanges(GridRanges{0.6, 1.5, 0.01, 10.0, 30.0, 0.1});
         QTimer::singleShot(2000, &window, &MainWindow::cancelSweep);
     }
+    if (isViewStep(step)) fineGrid(window);
     QTimer::singleShot(500, &window, &MainWindow::runSweep);
     return {};
 }

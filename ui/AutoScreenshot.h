@@ -22,7 +22,10 @@ void screenshotAfterSweep(MainWindow& window, const QString& path, QSize size = 
 //   open:PROJECT  open a second project (every result cleared);
 //   codes         a code input only (UBC 1976 zone 4 -> 3): A_crit kept, verdict re-judged;
 //   mu            a sweep input (the slab's mu + 0.05): every result dimmed as stale;
-//   cancel        a sweep at 10-30 Hz cancelled after 1.5 s: points not computed in grey.
+//   cancel        a sweep at 10-30 Hz cancelled after 1.5 s: points not computed in grey;
+//   top, map      a 200 × 200 sweep shown from straight above / as the 2D map;
+//   present       no sweep: the Teaching view in presentation mode (F11), mid-run.
+// Any step may end in @WIDTHxHEIGHT for the window size (default 1280x800).
 // Returns an error message for an unknown step (empty when it starts).
 QString screenshotScenario(MainWindow& window, const QString& step, const QString& path);
 

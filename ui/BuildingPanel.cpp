@@ -43,16 +43,12 @@ const std::pair<Occupancy, const char*> occupancies[] = {
 } // namespace
 
 BuildingPanel::BuildingPanel(QWidget* parent)
-    : InputPanel(parent), m_name(new QLineEdit(this)), m_units(new QComboBox(this)),
+    : InputPanel(parent), m_name(new QLineEdit(this)),
       m_estimate(new QCheckBox(tr("Estimate by each code's formula"), this)),
       m_estimates(new QLabel(this)), m_system(new QComboBox(this)),
       m_occupancy(new QComboBox(this)) {
     m_name->setToolTip(tr("A name for the building, printed on exports and reports."));
     form()->addRow(tr("&Name:"), m_name);
-    m_units->addItems({tr("feet"), tr("metres")});
-    m_units->setToolTip(
-        tr("Length unit of the height and plan dimension (the wall width follows: in or mm)."));
-    form()->addRow(tr("&Units:"), m_units);
     m_stories =
         addField("stories", tr("&Stories:"), QString(),
                  tr("Number of stories above the base, N. The top floor's force ratio is what "
@@ -62,11 +58,11 @@ BuildingPanel::BuildingPanel(QWidget* parent)
                    ? QString()
                    : tr("a whole number from 1 to 300 (got %1)").arg(v);
     });
-    m_height = addField("height", tr("&Height h_n:"), tr("ft"),
+    m_height = addField("height", tr("&Height h_n:"), QString(),
                         tr("Height of the roof above the base, h_n. Enters the period formulas "
                            "(T = 0.05 h_n/√D) and the vertical force distribution."));
     m_height->setCheck(rangeCheck(0, 3000, false));
-    m_dimension = addField("planDimension", tr("&Plan dimension D:"), tr("ft"),
+    m_dimension = addField("planDimension", tr("&Plan dimension D:"), QString(),
                            tr("Plan dimension of the building parallel to the earthquake force, D "
                               "(UBC) or L (ATC 3-06). Enters T = 0.05 h_n/√D."));
     m_dimension->setCheck(rangeCheck(0, 10000, false));
@@ -90,7 +86,6 @@ BuildingPanel::BuildingPanel(QWidget* parent)
                                "unless a code's own input overrides it."));
     form()->addRow(tr("&Occupancy:"), m_occupancy);
 
-    connect(m_units, &QComboBox::currentIndexChanged, this, &BuildingPanel::switchUnits);
     connect(m_estimate, &QCheckBox::toggled, this, [this] {
         m_period->setEnabled(!m_estimate->isChecked());
         updateEstimate();
@@ -101,24 +96,6 @@ BuildingPanel::BuildingPanel(QWidget* parent)
     connect(m_name, &QLineEdit::textChanged, this, &InputPanel::changed);
     connect(this, &InputPanel::changed, this, &BuildingPanel::updateEstimate);
     setBuilding(Building{});
-}
-
-bool BuildingPanel::metric() const {
-    return m_unit == LengthUnit::Metres;
-}
-
-void BuildingPanel::switchUnits() {
-    const LengthUnit to = m_units->currentIndex() == 1 ? LengthUnit::Metres : LengthUnit::Feet;
-    if (to == m_unit) return;
-    const double factor = metresPerUnit(m_unit) / metresPerUnit(to);
-    for (NumberField* f : {m_height, m_dimension})
-        if (const auto v = f->value()) f->setValue(*v * factor);
-    m_unit = to;
-    const QString u = metric() ? tr("m") : tr("ft");
-    m_height->setUnit(u);
-    m_dimension->setUnit(u);
-    emit unitsChanged(metric());
-    emit changed();
 }
 
 Building BuildingPanel::building() const {
@@ -142,12 +119,9 @@ void BuildingPanel::setBuilding(const Building& b) {
     m_kept = b;
     m_name->setText(QString::fromStdString(b.name));
     m_unit = b.unit;
-    m_units->blockSignals(true);
-    m_units->setCurrentIndex(b.unit == LengthUnit::Metres ? 1 : 0);
-    m_units->blockSignals(false);
-    const QString u = metric() ? tr("m") : tr("ft");
-    m_height->setUnit(u);
-    m_dimension->setUnit(u);
+    // Stored in the file's unit, shown in the application's (View → Units).
+    for (NumberField* f : {m_height, m_dimension})
+        f->setLength(LengthScale::Structure, metresPerUnit(b.unit));
     m_stories->setValue(b.stories);
     m_height->setValue(b.height);
     m_dimension->setValue(b.planDimension);
@@ -158,7 +132,6 @@ void BuildingPanel::setBuilding(const Building& b) {
         if (systems[i].first == b.system) m_system->setCurrentIndex(i);
     for (int i = 0; i < static_cast<int>(std::size(occupancies)); ++i)
         if (occupancies[i].first == b.occupancy) m_occupancy->setCurrentIndex(i);
-    emit unitsChanged(metric());
     updateEstimate();
 }
 

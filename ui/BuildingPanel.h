@@ -23,19 +23,13 @@ public:
 
     Building building() const; // valid panel only
     void setBuilding(const Building& b);
-    bool metric() const;
-
-signals:
-    void unitsChanged(bool metric);
 
 private:
-    void switchUnits();
     void updateEstimate();
 
-    Building m_kept; // story weights and heights from the file
-    LengthUnit m_unit = LengthUnit::Feet;
+    Building m_kept;                      // story weights and heights from the file
+    LengthUnit m_unit = LengthUnit::Feet; // the file's; lengths are shown in View → Units
     QLineEdit* m_name;
-    QComboBox* m_units;
     NumberField* m_stories;
     NumberField* m_height;
     NumberField* m_dimension;

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/HeatMapView.h"
 
+#include "ui/ColourBar.h"
+#include "ui/NiceTicks.h"
+
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -25,6 +28,17 @@ QColor gammaColor(double t) {
 
 QColor notComputedColor() {
     return QColor(205, 205, 205);
+}
+
+double colourScaleMaximum(const GammaGrid& g) {
+    double gMax = 0;
+    for (double v : g.gamma)
+        if (std::isfinite(v)) gMax = std::max(gMax, v);
+    return gMax > 0 ? niceAxis(0, gMax, 6).max : 1.0;
+}
+
+QString emptyHint() {
+    return HeatMapView::tr("Press Run (F5) to compute γc(A, f) for these inputs");
 }
 
 HeatMapView::HeatMapView(QWidget* parent) : QWidget(parent) {
@@ -56,24 +70,25 @@ void HeatMapView::setSelected(int ai, int fi) {
     update();
 }
 
+// The axes fit the grid's cells (half a step beyond the first and last points); code ratios
+// outside it are listed in the legend, not drawn by stretching the axis.
 void HeatMapView::updateRanges() {
     if (m_grid.empty()) return;
-    m_aMin = m_grid.amplitudes.front();
-    m_aMax = m_grid.amplitudes.back();
-    for (const CodeRatio& c : m_overlays.codes)
-        m_aMin = std::min(m_aMin, 0.9 * c.ratio);
-    m_fMin = m_grid.frequencies.front();
-    m_fMax = m_grid.frequencies.back();
-    if (m_aMax <= m_aMin) m_aMax = m_aMin + 1;
-    if (m_fMax <= m_fMin) m_fMax = m_fMin + 1;
-    m_gMax = 0;
-    for (double g : m_grid.gamma)
-        if (std::isfinite(g)) m_gMax = std::max(m_gMax, g);
-    if (m_gMax <= 0) m_gMax = 1;
+    auto half = [](const std::vector<double>& v) {
+        return v.size() > 1 ? 0.5 * (v[1] - v[0]) : 0.025;
+    };
+    m_aMin = m_grid.amplitudes.front() - half(m_grid.amplitudes);
+    m_aMax = m_grid.amplitudes.back() + half(m_grid.amplitudes);
+    m_fMin = m_grid.frequencies.front() - half(m_grid.frequencies);
+    m_fMax = m_grid.frequencies.back() + half(m_grid.frequencies);
+    m_gMax = colourScaleMaximum(m_grid);
 }
 
 QRectF HeatMapView::plotRect() const {
-    return QRectF(60, 12, width() - 130, height() - 58);
+    const QFontMetrics fm(font());
+    const int right = colourBarWidth(fm, m_gMax) + 30;
+    const int left = fm.horizontalAdvance(QStringLiteral("00.00")) + fm.height() + 12;
+    return QRectF(left, fm.height() + 14, width() - left - right, height() - 3 * fm.height() - 26);
 }
 
 double HeatMapView::xOf(double a) const {
@@ -90,7 +105,8 @@ void HeatMapView::paintEvent(QPaintEvent*) {
     QPainter p(this);
     p.fillRect(rect(), palette().base());
     if (m_grid.empty()) {
-        p.drawText(rect(), Qt::AlignCenter, tr("Press Run to compute the γc surface"));
+        p.setPen(palette().placeholderText().color());
+        p.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, emptyHint());
         return;
     }
     p.setRenderHint(QPainter::Antialiasing);
@@ -112,12 +128,8 @@ void HeatMapView::paintCells(QPainter& p) const {
             const QColor c = std::isfinite(g) ? gammaColor(g / m_gMax) : notComputedColor();
             cells.setPixel(static_cast<int>(i), static_cast<int>(fs.size() - 1 - j), c.rgb());
         }
-    // Cell edges half a step beyond the first and last grid values (uniform grids).
-    auto half = [](const std::vector<double>& v) {
-        return v.size() > 1 ? 0.5 * (v[1] - v[0]) : 0.025;
-    };
-    const QRectF target(QPointF(xOf(as.front() - half(as)), yOf(fs.back() + half(fs))),
-                        QPointF(xOf(as.back() + half(as)), yOf(fs.front() - half(fs))));
+    // The axes end at the cell edges (updateRanges), so the image fills the plot.
+    const QRectF target = plotRect();
     p.save();
     p.setClipRect(plotRect());
     p.setRenderHint(QPainter::SmoothPixmapTransform, false);
@@ -169,31 +181,28 @@ void HeatMapView::paintAxes(QPainter& p) const {
     p.setBrush(Qt::NoBrush);
     p.drawRect(r);
     const QFontMetrics fm(font());
-    for (int k = 0; k <= 5; ++k) {
-        const double a = m_aMin + (m_aMax - m_aMin) * k / 5;
-        const double f = m_fMin + (m_fMax - m_fMin) * k / 5;
-        const QString as = QString::number(a, 'f', 2), fs = QString::number(f, 'f', 2);
-        p.drawText(QPointF(xOf(a) - fm.horizontalAdvance(as) / 2.0, r.bottom() + fm.height()), as);
-        p.drawText(QPointF(r.left() - fm.horizontalAdvance(fs) - 4, yOf(f) + fm.ascent() / 2.0),
-                   fs);
+    const NiceAxis ax = niceAxis(m_aMin, m_aMax, 6), fx = niceAxis(m_fMin, m_fMax, 6);
+    for (double a : niceTicks(m_aMin, m_aMax, 6)) {
+        const QString t = QString::number(a, 'f', ax.decimals());
+        p.drawLine(QPointF(xOf(a), r.bottom()), QPointF(xOf(a), r.bottom() + 4));
+        p.drawText(QPointF(xOf(a) - fm.horizontalAdvance(t) / 2.0, r.bottom() + 4 + fm.ascent()),
+                   t);
     }
-    p.drawText(QRectF(r.left(), r.bottom() + fm.height() + 2, r.width(), fm.height() + 4),
+    for (double f : niceTicks(m_fMin, m_fMax, 6)) {
+        const QString t = QString::number(f, 'f', fx.decimals());
+        p.drawLine(QPointF(r.left() - 4, yOf(f)), QPointF(r.left(), yOf(f)));
+        p.drawText(QPointF(r.left() - fm.horizontalAdvance(t) - 6, yOf(f) + fm.ascent() / 2.0 - 1),
+                   t);
+    }
+    p.drawText(QRectF(r.left(), r.bottom() + fm.height() + 6, r.width(), fm.height() + 4),
                Qt::AlignCenter, tr("Peak floor acceleration A (g)"));
     p.save();
-    p.translate(14, r.center().y());
+    p.translate(fm.height() / 2.0 + 2, r.center().y());
     p.rotate(-90);
     p.drawText(QRectF(-r.height() / 2, -fm.height() / 2.0 - 2, r.height(), fm.height() + 4),
                Qt::AlignCenter, tr("Frequency f (Hz)"));
     p.restore();
-    // Colour bar.
-    const QRectF bar(r.right() + 14, r.top(), 14, r.height());
-    for (int y = 0; y < static_cast<int>(bar.height()); ++y)
-        p.fillRect(QRectF(bar.left(), bar.bottom() - y - 1, bar.width(), 1),
-                   gammaColor(y / bar.height()));
-    p.drawRect(bar);
-    p.drawText(QPointF(bar.right() + 3, bar.top() + fm.ascent()), QString::number(m_gMax, 'f', 2));
-    p.drawText(QPointF(bar.right() + 3, bar.bottom()), QStringLiteral("0"));
-    p.drawText(QPointF(bar.left(), bar.bottom() + fm.height() + 2), m_grid.gammaTitle);
+    paintColourBar(p, QRectF(r.right() + 16, r.top(), 16, r.height()), m_gMax, m_grid.gammaTitle);
 }
 
 void HeatMapView::mousePressEvent(QMouseEvent* e) {

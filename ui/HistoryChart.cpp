@@ -45,7 +45,7 @@ HistoryChart::HistoryChart(QWidget* parent)
         s->attachAxis(m_x);
         s->attachAxis(m_yAccel);
     }
-    installDockedChart(this, c, tr("History of a picked point — click the surface"));
+    installDockedChart(this, c, tr("History of one point (after Run: pick a point on the surface)"));
     hideFromLegend(c, {m_envDown, m_muDown}); // the lower envelope and -μ have no name
 }
 
@@ -109,7 +109,7 @@ void HistoryChart::clearRun() {
     for (QLineSeries* s :
          {m_delta, m_accel, m_envUp, m_envDown, m_muUp, m_muDown, m_slipTop, m_slipBase})
         s->clear();
-    chart()->setTitle(tr("History of a picked point — click the surface"));
+    chart()->setTitle(tr("History of one point (after Run: pick a point on the surface)"));
 }
 
 } // namespace kinstab::ui

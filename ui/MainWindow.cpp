@@ -28,8 +28,10 @@
 #include "ui/SliceChart.h"
 #include "ui/StaleFrame.h"
 #include "ui/SurfaceView.h"
+#include "ui/Units.h"
 #include "ui/VerdictPanel.h"
 #include "ui/report/ReportExport.h"
+#include "ui/teaching/PresentationMode.h"
 #include "ui/teaching/TeachingView.h"
 
 #include <QAction>
@@ -107,6 +109,8 @@ MainWindow::MainWindow(QWidget* parent)
     buildActions();
     installHelpMenu(this);
     buildDocks();
+    installPresentationMode(this, m_viewMenu, m_centre, m_teaching);
+    installUnitsMenu(m_viewMenu, this, [this](UnitSystem s) { m_teaching->setUnitSystem(s); });
     m_status->setTextFormat(Qt::PlainText);
     statusBar()->addWidget(m_status, 1);
     statusBar()->addPermanentWidget(m_progress);
@@ -122,7 +126,6 @@ MainWindow::MainWindow(QWidget* parent)
         connect(p, &InputPanel::changed, this, &MainWindow::inputsChanged);
         connect(p, &InputPanel::changed, m_undo, &InputHistory::recordChange);
     }
-    connect(m_building, &BuildingPanel::unitsChanged, m_slabPanel, &SlabPanel::setMetric);
     connect(m_modelPanel, &InputPanel::changed, this, &MainWindow::updateTitle);
     connect(m_modelPanel, &InputPanel::changed, this,
             [this] { m_records->preview()->setPlanarBase(m_modelPanel->isPlanar()); });
@@ -510,7 +513,7 @@ void MainWindow::exportChart(QChartView* view, const QString& name) {
 
 QImage MainWindow::screenshot() {
     QImage img = grab().toImage();
-    if (m_surface->is3D()) {
+    if (m_surface->showsGL()) {
         QWidget* c = m_surface->graphWidget();
         const QRect target(c->mapTo(this, QPoint(0, 0)), c->size());
         const QImage graph = m_surface->renderImage(c->size() * img.devicePixelRatio());

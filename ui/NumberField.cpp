@@ -29,7 +29,7 @@ NumberField::NumberField(const QString& unit, QWidget* parent)
     m_edit->setMinimumWidth(60);
     connect(m_edit, &QLineEdit::textChanged, this, [this] {
         revalidate();
-        emit edited();
+        if (!m_rendering) emit edited();
     });
 }
 
@@ -56,7 +56,53 @@ bool NumberField::isEmpty() const {
 }
 
 void NumberField::setValue(double v) {
-    m_edit->setText(QString::number(v, 'g', 10));
+    m_exact = v;
+    render();
+}
+
+double NumberField::storedPerShown() const {
+    if (!m_length) return 1.0;
+    return metresPerDisplayUnit(m_system, *m_length) / m_metresPerStored;
+}
+
+void NumberField::render() {
+    const double k = storedPerShown();
+    // Ten digits in the stored unit; six after a conversion (3.048, not 3.0480000000000).
+    m_rendered =
+        k == 1.0 ? QString::number(*m_exact, 'g', 10) : QString::number(*m_exact / k, 'g', 6);
+    m_edit->setText(m_rendered);
+}
+
+void NumberField::setLength(LengthScale scale, double metresPerStored) {
+    const std::optional<double> v = value();
+    m_length = scale;
+    m_metresPerStored = metresPerStored;
+    m_unit->setText(lengthSymbol(m_system, scale));
+    if (v) setValue(*v);
+}
+
+void NumberField::setUnitSystem(UnitSystem s) {
+    if (s == m_system) return;
+    const std::optional<double> v = value();
+    m_system = s;
+    if (!m_length) return;
+    m_unit->setText(lengthSymbol(s, *m_length));
+    if (!v) return; // an invalid entry stays as typed
+    m_rendering = true;
+    m_exact = v;
+    render();
+    m_rendering = false;
+}
+
+QString NumberField::storedSymbol() const {
+    for (UnitSystem s : {UnitSystem::SI, UnitSystem::US})
+        for (LengthScale l : {LengthScale::Structure, LengthScale::Detail})
+            if (metresPerDisplayUnit(s, l) == m_metresPerStored) return lengthSymbol(s, l);
+    return QStringLiteral("× %1 m").arg(m_metresPerStored);
+}
+
+QString NumberField::text() const {
+    return m_edit->text();
 }
 
 void NumberField::setUnit(const QString& unit) {
@@ -73,7 +119,8 @@ std::optional<double> NumberField::value() const {
     bool ok = false;
     const double v = parse(m_edit->text().trimmed(), &ok);
     if (!ok || !std::isfinite(v) || !m_error.isEmpty()) return std::nullopt;
-    return v;
+    if (m_exact && m_edit->text() == m_rendered) return *m_exact;
+    return v * storedPerShown();
 }
 
 void NumberField::setFieldToolTip(const QString& tip) {
@@ -89,8 +136,17 @@ void NumberField::revalidate() {
         error = m_optional ? QString() : tr("required");
     else if (!ok || !std::isfinite(v))
         error = tr("\"%1\" is not a number").arg(text);
-    else if (m_check)
-        error = m_check(v);
+    else if (m_check) {
+        const double stored =
+            m_exact && m_edit->text() == m_rendered ? *m_exact : v * storedPerShown();
+        error = m_check(stored);
+        // The check's limits are in the stored unit: say what the entry is in it.
+        if (!error.isEmpty() && storedPerShown() != 1.0)
+            error += tr(" (%1 %2 = %3 %4)")
+                         .arg(text, m_unit->text())
+                         .arg(stored, 0, 'g', 6)
+                         .arg(storedSymbol());
+    }
     const bool changed = error != m_error;
     m_error = error;
     m_errorLabel->setText(error);

@@ -3,6 +3,8 @@
 // A number input with its check: the reason it is invalid is shown beside the field, so the
 // engineer sees what to fix without pressing Run first.
 
+#include "ui/Units.h"
+
 #include <QWidget>
 
 #include <functional>
@@ -30,6 +32,13 @@ public:
     void setValue(double v);
     void setUnit(const QString& unit);
     std::optional<double> value() const; // nullopt when the text is not an acceptable number
+    // A length: value() and setValue() keep the stored unit (metresPerStored metres, e.g. the
+    // project file's ft or m), the field shows it in the unit system's unit. A value shown in
+    // another unit and not edited comes back exactly as it was set.
+    void setLength(LengthScale scale, double metresPerStored);
+    void setUnitSystem(UnitSystem s); // re-shows the value; no edited() signal
+    UnitSystem unitSystem() const { return m_system; }
+    QString text() const; // as shown
     bool isValid() const { return m_error.isEmpty(); }
     QString error() const { return m_error; }
     QLineEdit* lineEdit() const { return m_edit; }
@@ -43,6 +52,9 @@ signals:
 
 private:
     static double parse(const QString& text, bool* ok);
+    double storedPerShown() const; // 1 unless a length shown in another unit
+    void render();                 // m_exact into the line edit, in the shown unit
+    QString storedSymbol() const;  // "ft", "m", "in" or "mm"
 
     QLineEdit* m_edit;
     QLabel* m_unit;
@@ -50,6 +62,12 @@ private:
     Check m_check;
     QString m_error;
     bool m_optional = false;
+    std::optional<LengthScale> m_length;
+    double m_metresPerStored = 1.0;
+    UnitSystem m_system = UnitSystem::SI;
+    std::optional<double> m_exact; // the stored value last set, while its text is unchanged
+    QString m_rendered;
+    bool m_rendering = false;
 };
 
 // Common checks, with the reason phrased for the engineer.

@@ -47,7 +47,7 @@ PlanarHistoryChart::PlanarHistoryChart(QWidget* parent)
     }
     m_dy->attachAxis(m_x);
     m_dy->attachAxis(m_yy);
-    installDockedChart(this, c, tr("Planar history of a picked point — click the surface"));
+    installDockedChart(this, c, tr("Planar history of one point (after Run: pick a point on the surface)"));
     hideFromLegend(c, {m_limitDown});
 }
 
@@ -86,7 +86,7 @@ void PlanarHistoryChart::setRun(const PlanarPointRun& run) {
 void PlanarHistoryChart::clearRun() {
     for (QLineSeries* s : {m_dx, m_dy, m_limitUp, m_limitDown})
         s->clear();
-    chart()->setTitle(tr("Planar history of a picked point — click the surface"));
+    chart()->setTitle(tr("Planar history of one point (after Run: pick a point on the surface)"));
 }
 
 } // namespace kinstab::ui

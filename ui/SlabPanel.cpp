@@ -21,10 +21,11 @@ SlabPanel::SlabPanel(QWidget* parent)
     m_mode->setToolTip(
         tr("Enter the supporting wall's width d (t* = √(d / 2g) follows), or t* itself."));
     form()->addRow(tr("Input:"), m_mode);
-    m_width = addField("wallWidth", tr("Wall &width d:"), tr("in"),
+    m_width = addField("wallWidth", tr("Wall &width d:"), QString(),
                        tr("Actual width of the wall the slab bears on (an 8-inch block wall is "
                           "7⅝ in). Sets the time scale t* = √(d / 2g) and the length scale d/2."));
-    m_width->setCheck(rangeCheck(0, 1e4, false));
+    m_width->setLength(LengthScale::Detail, 1.0);  // kept in metres, shown in mm or in
+    m_width->setCheck(rangeCheck(0, 25.4, false)); // metres: the project file's 1000 in
     m_tstar = addField("tstar", tr("t*:"), tr("s"),
                        tr("Characteristic time t* = √(d / 2g): the time a block takes to fall "
                           "half its width under gravity. The paper uses 0.099 s."));
@@ -71,17 +72,7 @@ void SlabPanel::updateDerived() {
 
 std::optional<double> SlabPanel::wallWidthMetres() const {
     if (m_mode->currentIndex() != 0) return std::nullopt;
-    const auto v = m_width->value();
-    if (!v) return std::nullopt;
-    return m_metric ? *v / 1000.0 : *v * inch;
-}
-
-void SlabPanel::setMetric(bool metric) {
-    if (metric == m_metric) return;
-    const auto d = wallWidthMetres();
-    m_metric = metric;
-    m_width->setUnit(metric ? tr("mm") : tr("in"));
-    if (d) m_width->setValue(metric ? *d * 1000.0 : *d / inch);
+    return m_width->value();
 }
 
 void SlabPanel::apply(Slab1DCase& c) const {
@@ -94,7 +85,7 @@ void SlabPanel::apply(Slab1DCase& c) const {
 
 void SlabPanel::load(const Slab1DCase& c, std::optional<double> wallWidthM) {
     m_mode->setCurrentIndex(wallWidthM ? 0 : 1);
-    if (wallWidthM) m_width->setValue(m_metric ? *wallWidthM * 1000.0 : *wallWidthM / inch);
+    if (wallWidthM) m_width->setValue(*wallWidthM);
     m_tstar->setValue(c.tstar);
     m_limit->setValue(c.slab.limit);
     m_mu->setValue(c.slab.mu);

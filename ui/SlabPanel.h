@@ -25,7 +25,6 @@ public:
     // Shows c; when wallWidthM is given the panel is in wall-width mode.
     void load(const Slab1DCase& c, std::optional<double> wallWidthM);
     std::optional<double> wallWidthMetres() const; // nullopt in t* mode
-    void setMetric(bool metric);                   // wall width in mm instead of inches
 
 public slots:
     void useMu(double mu); // from the friction calibration panel
@@ -34,7 +33,6 @@ private:
     void updateMode();
     void updateDerived();
 
-    bool m_metric = false;
     QComboBox* m_mode;
     NumberField* m_width;
     NumberField* m_tstar;

@@ -36,7 +36,7 @@ SliceChart::SliceChart(QWidget* parent)
     m_gamma->attachAxis(m_yGamma);
     m_tau->attachAxis(m_x);
     m_tau->attachAxis(m_yTau);
-    installDockedChart(this, c, tr("γc and τc against A — select a point on the surface"));
+    installDockedChart(this, c, tr("γc and τc against A (after Run: pick a point on the surface)"));
 }
 
 void SliceChart::setSlice(double f, const std::vector<double>& amplitudes,
@@ -67,7 +67,7 @@ void SliceChart::setSlice(double f, const std::vector<double>& amplitudes,
 void SliceChart::clearSlice() {
     m_gamma->clear();
     m_tau->clear();
-    chart()->setTitle(tr("γc and τc against A — select a point on the surface"));
+    chart()->setTitle(tr("γc and τc against A (after Run: pick a point on the surface)"));
 }
 
 } // namespace kinstab::ui

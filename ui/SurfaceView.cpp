@@ -1,11 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/SurfaceView.h"
 
+#include "ui/ColourBar.h"
 #include "ui/HeatMapView.h"
+#include "ui/NiceTicks.h"
 #include "ui/StaleFrame.h"
 
+#include <QButtonGroup>
 #include <QGuiApplication>
+#include <QHBoxLayout>
 #include <QLabel>
+#include <QStackedWidget>
+#include <QToolButton>
 #include <QVBoxLayout>
 #include <QtDataVisualization/Q3DCamera>
 #include <QtDataVisualization/Q3DSurface>
@@ -88,9 +94,15 @@ QSurface3DSeries* makeOverlay(const QColor& color) {
 
 } // namespace
 
+namespace {
+constexpr int kWireframeLimit = 60 * 60; // grid points up to which the wireframe is on
+constexpr float kCameraX = -40.0f, kCameraY = 22.0f, kZoom = 80.0f;
+} // namespace
+
 SurfaceView::SurfaceView(QWidget* parent)
-    : QWidget(parent), m_legend(new QLabel(this)), m_notice(new QLabel(this)),
-      m_staleLine(new QLabel(StaleFrame::staleText(), this)) {
+    : QWidget(parent), m_map(new HeatMapView(this)), m_stack(new QStackedWidget(this)),
+      m_hint(new QLabel(emptyHint(), this)), m_bar(new ColourBar(this)), m_legend(new QLabel(this)),
+      m_notice(new QLabel(this)), m_staleLine(new QLabel(StaleFrame::staleText(), this)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     m_notice->setWordWrap(true);
@@ -105,73 +117,198 @@ SurfaceView::SurfaceView(QWidget* parent)
     if (Q3DSurface* g = makeGraph()) {
         m_3d = std::make_unique<Graph3D>();
         m_3d->graph = g;
-        g->setShadowQuality(
-            QAbstract3DGraph::ShadowQualityNone); // shadows dominate under software GL
-        g->setSelectionMode(QAbstract3DGraph::SelectionItem);
-        g->activeTheme()->setType(Q3DTheme::ThemeQt);
-        g->activeTheme()->setLabelBackgroundEnabled(false);
-        QFont font = g->activeTheme()->font();
-        font.setPointSize(44);
-        g->activeTheme()->setFont(font);
-        g->setAxisX(makeAxis(tr("A (g)"), QStringLiteral("%.2f")));
-        g->setAxisY(makeAxis(m_grid.gammaTitle, QStringLiteral("%.2f")));
-        g->setAxisZ(makeAxis(tr("f (Hz)"), QStringLiteral("%.2f")));
-        g->scene()->activeCamera()->setCameraPosition(-40.0f, 22.0f, 80.0f);
-        g->setHorizontalAspectRatio(1.4f);
-        m_3d->surface = new QSurface3DSeries;
-        m_3d->surface->setDrawMode(QSurface3DSeries::DrawSurfaceAndWireframe);
-        m_3d->surface->setWireframeColor(QColor(0, 0, 0, 90));
-        m_3d->surface->setFlatShadingEnabled(false);
-        m_3d->surface->setBaseGradient(surfaceGradient(false));
-        m_3d->surface->setColorStyle(Q3DTheme::ColorStyleRangeGradient);
-        m_3d->surface->setItemLabelVisible(false); // the linked charts name the picked point
-        m_3d->surface->setItemLabelFormat(
-            QStringLiteral("A = @xLabel g, f = @zLabel Hz, γc = @yLabel"));
-        g->addSeries(m_3d->surface);
-        m_3d->notComputed = makeOverlay(notComputedColor());
-        m_3d->notComputed->setDrawMode(QSurface3DSeries::DrawSurfaceAndWireframe);
-        m_3d->notComputed->setWireframeColor(QColor(120, 120, 120));
-        g->addSeries(m_3d->notComputed);
-        connect(m_3d->surface, &QSurface3DSeries::selectedPointChanged, this,
-                [this](const QPoint& p) {
-                    if (p == QSurface3DSeries::invalidSelectionPosition()) return;
-                    const QPoint sel(
-                        p.y(), p.x()); // selectedPoint is (row = frequency, column = amplitude)
-                    if (sel == m_selected) return;
-                    m_selected = sel;
-                    emit pointSelected(sel.x(), sel.y());
-                });
-        m_3d->container = QWidget::createWindowContainer(g, this);
-        m_3d->container->setMinimumSize(300, 250);
-        m_3d->container->setFocusPolicy(Qt::StrongFocus);
-        m_3d->container->setToolTip(tr("Drag with the right mouse button to rotate, wheel to zoom, "
-                                       "left click a point to see its run."));
-        layout->addWidget(m_3d->container, 1);
+        build3D();
     } else {
-        m_map = new HeatMapView(this);
-        connect(m_map, &HeatMapView::pointSelected, this, [this](int ai, int fi) {
-            m_selected = QPoint(ai, fi);
-            emit pointSelected(ai, fi);
-        });
-        layout->addWidget(m_map, 1);
+        m_mode = SurfaceMode::Map;
     }
+    layout->addWidget(buildToolBar());
+    m_hint->setAlignment(Qt::AlignCenter);
+    m_hint->setWordWrap(true);
+    m_hint->setObjectName(QStringLiteral("emptyHint"));
+    QFont big = m_hint->font();
+    big.setPointSizeF(big.pointSizeF() * 1.3);
+    m_hint->setFont(big);
+    m_stack->addWidget(m_hint);
+    if (m_3d) m_stack->addWidget(m_3d->container);
+    m_stack->addWidget(m_map);
+    connect(m_map, &HeatMapView::pointSelected, this, [this](int ai, int fi) {
+        m_selected = QPoint(ai, fi);
+        if (m_3d) m_3d->surface->setSelectedPoint(QPoint(fi, ai));
+        emit pointSelected(ai, fi);
+    });
+    auto* body = new QHBoxLayout;
+    body->setContentsMargins(0, 0, 0, 0);
+    body->addWidget(m_stack, 1);
+    body->addWidget(m_bar);
+    layout->addLayout(body, 1);
     // No word wrap: a wrapped label's minimum height would stretch the window; two fixed lines.
     m_legend->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     m_legend->setTextFormat(Qt::RichText);
     layout->addWidget(m_legend);
+    showPage();
     updateLegend();
+}
+
+void SurfaceView::build3D() {
+    Q3DSurface* g = m_3d->graph;
+    g->setShadowQuality(QAbstract3DGraph::ShadowQualityNone); // shadows dominate under software GL
+    g->setSelectionMode(QAbstract3DGraph::SelectionItem);
+    g->activeTheme()->setType(Q3DTheme::ThemeQt);
+    g->activeTheme()->setLabelBackgroundEnabled(false);
+    // Mostly ambient light, so the surface's colours stay those of the colour bar.
+    g->activeTheme()->setAmbientLightStrength(0.55f);
+    g->activeTheme()->setLightStrength(3.0f);
+    QFont font = g->activeTheme()->font();
+    font.setPointSize(44);
+    g->activeTheme()->setFont(font);
+    g->setAxisX(makeAxis(tr("A (g)"), QStringLiteral("%.2f")));
+    g->setAxisY(makeAxis(m_grid.gammaTitle, QStringLiteral("%.2f")));
+    g->setAxisZ(makeAxis(tr("f (Hz)"), QStringLiteral("%.2f")));
+    g->scene()->activeCamera()->setCameraPosition(kCameraX, kCameraY, kZoom);
+    g->setHorizontalAspectRatio(1.4f);
+    m_3d->surface = new QSurface3DSeries;
+    m_3d->surface->setDrawMode(QSurface3DSeries::DrawSurfaceAndWireframe);
+    m_3d->surface->setWireframeColor(QColor(0, 0, 0, 90));
+    m_3d->surface->setFlatShadingEnabled(false);
+    m_3d->surface->setBaseGradient(surfaceGradient(false));
+    m_3d->surface->setColorStyle(Q3DTheme::ColorStyleRangeGradient);
+    m_3d->surface->setItemLabelVisible(false); // the linked charts name the picked point
+    m_3d->surface->setItemLabelFormat(
+        QStringLiteral("A = @xLabel g, f = @zLabel Hz, γc = @yLabel"));
+    g->addSeries(m_3d->surface);
+    m_3d->notComputed = makeOverlay(notComputedColor());
+    m_3d->notComputed->setDrawMode(QSurface3DSeries::DrawSurfaceAndWireframe);
+    m_3d->notComputed->setWireframeColor(QColor(120, 120, 120));
+    g->addSeries(m_3d->notComputed);
+    connect(m_3d->surface, &QSurface3DSeries::selectedPointChanged, this, [this](const QPoint& p) {
+        if (p == QSurface3DSeries::invalidSelectionPosition()) return;
+        const QPoint sel(p.y(), p.x()); // selectedPoint is (row = frequency, column = amplitude)
+        if (sel == m_selected) return;
+        m_selected = sel;
+        m_map->setSelected(sel.x(), sel.y());
+        emit pointSelected(sel.x(), sel.y());
+    });
+    m_3d->container = QWidget::createWindowContainer(g, this);
+    m_3d->container->setMinimumSize(300, 250);
+    m_3d->container->setFocusPolicy(Qt::StrongFocus);
+    m_3d->container->setToolTip(tr("Drag with the right mouse button to rotate, wheel to zoom, "
+                                   "left click a point to see its run."));
+}
+
+QWidget* SurfaceView::buildToolBar() {
+    auto* bar = new QWidget(this);
+    auto* h = new QHBoxLayout(bar);
+    h->setContentsMargins(4, 2, 4, 2);
+    auto* group = new QButtonGroup(bar);
+    const struct {
+        SurfaceMode mode;
+        const char* name;
+        QString text, tip;
+    } modes[] = {
+        {SurfaceMode::Surface3D, "view3D", tr("3D"), tr("The γc surface in 3D (drag to rotate)")},
+        {SurfaceMode::Top, "viewTop", tr("Top view"),
+         tr("The 3D surface seen from straight above")},
+        {SurfaceMode::Map, "viewMap", tr("2D map"), tr("γc as a flat colour map with its axes")},
+    };
+    for (const auto& m : modes) {
+        auto* b = new QToolButton(bar);
+        b->setObjectName(QLatin1String(m.name));
+        b->setText(m.text);
+        b->setToolTip(m.tip);
+        b->setCheckable(true);
+        b->setEnabled(m_3d || m.mode == SurfaceMode::Map);
+        group->addButton(b);
+        connect(b, &QToolButton::clicked, this, [this, mode = m.mode] { setMode(mode); });
+        h->addWidget(b);
+        m_buttons[static_cast<int>(m.mode)] = b;
+    }
+    h->addSpacing(12);
+    m_wireButton = new QToolButton(bar);
+    m_wireButton->setObjectName(QStringLiteral("wireframe"));
+    m_wireButton->setText(tr("Wireframe"));
+    m_wireButton->setCheckable(true);
+    m_wireButton->setToolTip(tr("Grid lines on the 3D surface (off by default above 60 × 60 "
+                                "points, where they hide the colours)"));
+    connect(m_wireButton, &QToolButton::toggled, this, &SurfaceView::setWireframe);
+    h->addWidget(m_wireButton);
+    m_resetButton = new QToolButton(bar);
+    m_resetButton->setObjectName(QStringLiteral("resetView"));
+    m_resetButton->setText(tr("Reset view"));
+    m_resetButton->setToolTip(tr("The camera back to its starting position and zoom"));
+    connect(m_resetButton, &QToolButton::clicked, this, &SurfaceView::resetView);
+    h->addWidget(m_resetButton);
+    h->addStretch(1);
+    if (!m_3d) bar->setToolTip(tr("OpenGL is not available here: only the 2D map can be shown."));
+    return bar;
+}
+
+void SurfaceView::setMode(SurfaceMode mode) {
+    if (!m_3d) mode = SurfaceMode::Map;
+    m_mode = mode;
+    if (m_3d && mode != SurfaceMode::Map) {
+        Q3DSurface* g = m_3d->graph;
+        g->setOrthoProjection(mode == SurfaceMode::Top);
+        resetView();
+    }
+    showPage();
+}
+
+void SurfaceView::showPage() {
+    m_buttons[static_cast<int>(m_mode)]->setChecked(true);
+    const bool gl = m_3d && m_mode != SurfaceMode::Map;
+    m_wireButton->setEnabled(gl);
+    m_resetButton->setEnabled(gl);
+    if (m_grid.empty())
+        m_stack->setCurrentWidget(m_hint);
+    else
+        m_stack->setCurrentWidget(gl ? m_3d->container : static_cast<QWidget*>(m_map));
+    // The map draws its own colour bar beside its axes.
+    m_bar->setVisible(gl && !m_grid.empty());
+}
+
+bool SurfaceView::showsGL() const {
+    return m_3d && m_stack->currentWidget() == m_3d->container;
+}
+
+void SurfaceView::setWireframe(bool on) {
+    m_wireframe = on;
+    {
+        const QSignalBlocker block(m_wireButton);
+        m_wireButton->setChecked(on);
+    }
+    if (!m_3d) return;
+    const auto mode =
+        on ? QSurface3DSeries::DrawSurfaceAndWireframe : QSurface3DSeries::DrawSurface;
+    m_3d->surface->setDrawMode(mode);
+    m_3d->notComputed->setDrawMode(mode);
+}
+
+void SurfaceView::resetView() {
+    if (!m_3d) return;
+    Q3DCamera* camera = m_3d->graph->scene()->activeCamera();
+    if (m_mode == SurfaceMode::Top)
+        camera->setCameraPreset(Q3DCamera::CameraPresetDirectlyAbove);
+    else
+        camera->setCameraPosition(kCameraX, kCameraY, kZoom);
+    camera->setZoomLevel(m_mode == SurfaceMode::Top ? 100.0f : kZoom);
+    camera->setTarget(QVector3D(0, 0, 0));
 }
 
 SurfaceView::~SurfaceView() = default;
 
 QWidget* SurfaceView::graphWidget() const {
-    return m_3d ? m_3d->container : static_cast<QWidget*>(m_map);
+    return m_stack->currentWidget();
 }
 
 void SurfaceView::setData(const GammaGrid& g) {
+    const bool newShape = g.amplitudes.size() != m_grid.amplitudes.size() ||
+                          g.frequencies.size() != m_grid.frequencies.size();
     m_grid = g;
-    if (m_map) {
-        m_map->setData(g);
+    m_map->setData(g);
+    m_bar->setRange(colourScaleMaximum(g), g.gammaTitle);
+    if (newShape) setWireframe(g.gamma.size() <= kWireframeLimit);
+    showPage();
+    if (!m_3d) {
         updateLegend();
         return;
     }
@@ -183,11 +320,6 @@ void SurfaceView::setData(const GammaGrid& g) {
         return;
     }
     m_3d->graph->axisY()->setTitle(g.gammaTitle);
-    // A wireframe over thousands of cells is a black sheet that hides the colours.
-    const auto mode = g.gamma.size() > 2500 ? QSurface3DSeries::DrawSurface
-                                            : QSurface3DSeries::DrawSurfaceAndWireframe;
-    m_3d->surface->setDrawMode(mode);
-    m_3d->notComputed->setDrawMode(mode);
     std::vector<float> xs(g.amplitudes.begin(), g.amplitudes.end());
     std::vector<float> zs(g.frequencies.begin(), g.frequencies.end());
     const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -208,16 +340,14 @@ void SurfaceView::setData(const GammaGrid& g) {
 
 void SurfaceView::setOverlays(const SurfaceOverlays& o) {
     m_overlays = o;
-    if (m_map)
-        m_map->setOverlays(o);
-    else
-        rebuildOverlays();
+    m_map->setOverlays(o);
+    if (m_3d) rebuildOverlays();
     updateLegend();
 }
 
 void SurfaceView::selectPoint(int ai, int fi) {
-    if (m_map) {
-        m_map->setSelected(ai, fi);
+    m_map->setSelected(ai, fi);
+    if (!m_3d) {
         m_selected = QPoint(ai, fi);
         emit pointSelected(ai, fi);
         return;
@@ -226,7 +356,7 @@ void SurfaceView::selectPoint(int ai, int fi) {
 }
 
 QImage SurfaceView::renderImage(QSize size) {
-    if (m_map) {
+    if (!showsGL()) {
         const QSize old = m_map->size();
         m_map->resize(size);
         QImage img = m_map->grab().toImage();
@@ -246,27 +376,26 @@ void SurfaceView::rebuildOverlays() {
     g->removeCustomItems();
     if (m_grid.empty()) return;
 
-    // Axis ranges: the grid, widened to show code ratios and the building's frequency.
-    float aMin = static_cast<float>(m_grid.amplitudes.front()),
-          aMax = static_cast<float>(m_grid.amplitudes.back());
-    float fMin = static_cast<float>(m_grid.frequencies.front()),
-          fMax = static_cast<float>(m_grid.frequencies.back());
-    for (const CodeRatio& c : m_overlays.codes)
-        aMin = std::min(aMin, static_cast<float>(0.9 * c.ratio));
-    if (m_overlays.buildingFrequency) {
-        fMin = std::min(fMin, static_cast<float>(*m_overlays.buildingFrequency));
-        fMax = std::max(fMax, static_cast<float>(*m_overlays.buildingFrequency));
-    }
-    if (aMax <= aMin) aMax = aMin + 0.1f;
-    if (fMax <= fMin) fMax = fMin + 0.1f;
-    double gMax = 0;
-    for (double v : m_grid.gamma)
-        if (std::isfinite(v)) gMax = std::max(gMax, v);
-    const float yMax = static_cast<float>(gMax > 0 ? 1.05 * gMax : 1.0);
-    g->axisX()->setRange(aMin, aMax);
-    g->axisZ()->setRange(fMin, fMax);
-    g->axisY()->setRange(0, yMax);
-
+    // Axes fit the grid (widened to whole 1-2-5 steps); code ratios and the building's frequency
+    // are drawn only where they fall on the surface, the legend lists the others.
+    const NiceAxis ax = niceAxis(m_grid.amplitudes.front(), m_grid.amplitudes.back(), 10);
+    const NiceAxis fx = niceAxis(m_grid.frequencies.front(), m_grid.frequencies.back(), 10);
+    const float yMax = static_cast<float>(colourScaleMaximum(m_grid));
+    const NiceAxis yx = niceAxis(0, yMax, 6);
+    auto apply = [](QValue3DAxis* axis, const NiceAxis& n) {
+        axis->setRange(static_cast<float>(n.min), static_cast<float>(n.max));
+        axis->setSegmentCount(n.segments());
+        axis->setSubSegmentCount(1);
+        axis->setLabelFormat(QStringLiteral("%.%1f").arg(n.decimals()));
+    };
+    apply(g->axisX(), ax);
+    apply(g->axisZ(), fx);
+    apply(g->axisY(), yx);
+    const float aMin = static_cast<float>(ax.min), aMax = static_cast<float>(ax.max);
+    const float fMin = static_cast<float>(fx.min), fMax = static_cast<float>(fx.max);
+    auto onGrid = [&](double a) {
+        return a >= m_grid.amplitudes.front() && a <= m_grid.amplitudes.back();
+    };
     const float lift = 0.012f * yMax; // above the surface, so the overlay does not z-fight
     const float wa = 0.004f * (aMax - aMin), wf = 0.006f * (fMax - fMin);
     std::vector<float> zs(m_grid.frequencies.begin(), m_grid.frequencies.end());
@@ -280,29 +409,31 @@ void SurfaceView::rebuildOverlays() {
         m_3d->overlays.push_back(s);
     };
     for (const CodeRatio& c : m_overlays.codes) {
+        if (!onGrid(c.ratio)) continue;
         const float a = static_cast<float>(c.ratio);
         add(makeOverlay(c.color), makeArray(zs, {a - wa, a + wa}, [&](std::size_t r, std::size_t) {
                 return heightAt(r, c.ratio);
             }));
     }
-    if (m_overlays.buildingFrequency) {
+    if (m_overlays.buildingFrequency &&
+        *m_overlays.buildingFrequency >= m_grid.frequencies.front() &&
+        *m_overlays.buildingFrequency <= m_grid.frequencies.back()) {
         const double fb = *m_overlays.buildingFrequency;
         const std::size_t fi = nearestFrequency(m_grid, fb);
-        std::vector<float> xs;
-        if (aMin < m_grid.amplitudes.front()) xs.push_back(aMin);
-        xs.insert(xs.end(), m_grid.amplitudes.begin(), m_grid.amplitudes.end());
+        std::vector<float> xs(m_grid.amplitudes.begin(), m_grid.amplitudes.end());
         const float f = static_cast<float>(fb);
         add(makeOverlay(Qt::black),
             makeArray({f - wf, f + wf}, xs,
                       [&](std::size_t, std::size_t c) { return heightAt(fi, xs[c]); }));
         for (std::size_t k = 0; k < m_overlays.codes.size(); ++k) {
             const CodeRatio& c = m_overlays.codes[k];
+            if (!onGrid(c.ratio)) continue;
             const float stagger = (0.10f + 0.09f * static_cast<float>(k)) * yMax; // close ratios
             auto* label = new QCustom3DLabel(
                 QStringLiteral("%1 %2").arg(c.name).arg(c.ratio, 0, 'f', 2),
                 g->activeTheme()->font(),
                 QVector3D(static_cast<float>(c.ratio), heightAt(fi, c.ratio) + stagger, f),
-                QVector3D(0.45f, 0.45f, 0.0f), QQuaternion());
+                QVector3D(1.1f, 1.1f, 0.0f), QQuaternion()); // about the axis labels' size
             label->setFacingCamera(true);
             label->setTextColor(c.color.darker(130));
             label->setBorderEnabled(false);
@@ -310,21 +441,23 @@ void SurfaceView::rebuildOverlays() {
             g->addCustomItem(label);
         }
     }
-    if (m_overlays.aCrit.size() >= 2) {
-        std::vector<float> cz, ca;
-        for (const auto& [f, a] : m_overlays.aCrit) {
-            cz.push_back(static_cast<float>(f));
-            ca.push_back(static_cast<float>(a));
-        }
+    // A_crit(f) where it lies on the grid: the renderer crashes (Qt 6.4) on a strip that
+    // leaves the axis range, and the axes no longer stretch to hold it.
+    std::vector<std::pair<double, double>> crit;
+    for (const auto& fa : m_overlays.aCrit)
+        if (onGrid(fa.second) && fa.first >= m_grid.frequencies.front() &&
+            fa.first <= m_grid.frequencies.back())
+            crit.push_back(fa);
+    if (crit.size() >= 2) {
         // Columns of this strip are not straight (A_crit varies with f); it is two points wide.
         auto* array = new QSurfaceDataArray;
-        for (std::size_t r = 0; r < cz.size(); ++r) {
+        for (const auto& [f, a] : crit) {
             // On the surface's rising wall, where gamma_c leaves 0.
-            const float y = heightAt(nearestFrequency(m_grid, m_overlays.aCrit[r].first),
-                                     m_overlays.aCrit[r].second);
+            const float y = heightAt(nearestFrequency(m_grid, f), a);
+            const float x = static_cast<float>(a), z = static_cast<float>(f);
             auto* row = new QSurfaceDataRow(2);
-            (*row)[0].setPosition(QVector3D(ca[r] - wa, y, cz[r]));
-            (*row)[1].setPosition(QVector3D(ca[r] + wa, y, cz[r]));
+            (*row)[0].setPosition(QVector3D(std::max(aMin, x - wa), y, z));
+            (*row)[1].setPosition(QVector3D(std::min(aMax, x + wa), y, z));
             array->append(row);
         }
         add(makeOverlay(QColor(250, 250, 250)), array);
@@ -337,8 +470,8 @@ void SurfaceView::updateLegend() {
                    "<span style='color:%1; font-size:large'>&#9632;</span>&nbsp;%2&nbsp;&nbsp; ")
             .arg(c.name(), text);
     };
-    QString html = swatch(gammaColor(0.0), tr("stable (γc = 0)")) +
-                   swatch(gammaColor(1.0), tr("fastest collapse (largest γc)"));
+    // The γc colours are read off the colour bar; the legend names the lines drawn over them.
+    QString html = swatch(gammaColor(0.0), tr("stable (γc = 0)"));
     if (const int n = notComputedCount(); n > 0)
         html += swatch(notComputedColor(), tr("not computed (%1 points)").arg(n));
     if (m_overlays.buildingFrequency)
@@ -348,8 +481,13 @@ void SurfaceView::updateLegend() {
     if (!m_overlays.aCrit.empty())
         html += swatch(QColor(160, 160, 160), tr("A_crit(f) (white line)"));
     html += QStringLiteral("<br>") + tr("Top-floor ratios F_top/w_top: ");
-    for (const CodeRatio& c : m_overlays.codes)
-        html += swatch(c.color, tr("%1 %2 g").arg(c.name).arg(c.ratio, 0, 'f', 3));
+    for (const CodeRatio& c : m_overlays.codes) {
+        const bool off = !m_grid.empty() && (c.ratio < m_grid.amplitudes.front() ||
+                                             c.ratio > m_grid.amplitudes.back());
+        html += swatch(c.color, (off ? tr("%1 %2 g (outside the grid)") : tr("%1 %2 g"))
+                                    .arg(c.name)
+                                    .arg(c.ratio, 0, 'f', 3));
+    }
     m_legend->setText(html);
 }
 
@@ -367,10 +505,9 @@ QString SurfaceView::legendText() const {
 void SurfaceView::setStale(bool stale) {
     m_stale = stale;
     m_staleLine->setVisible(stale);
-    if (m_map)
-        m_map->setStale(stale);
-    else
-        m_3d->surface->setBaseGradient(surfaceGradient(stale));
+    m_map->setStale(stale);
+    m_bar->setFaded(stale);
+    if (m_3d) m_3d->surface->setBaseGradient(surfaceGradient(stale));
 }
 
 void SurfaceView::setNotice(const QString& text) {

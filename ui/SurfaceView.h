@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The γc(A, f) surface. All Qt Data Visualization code lives in this class (the module is
-// deprecated after Qt 6.10, so a port touches one file). Without an OpenGL context it shows
-// the 2D HeatMapView instead, with the same interface.
+// deprecated after Qt 6.10, so a port touches one file). Three ways to look at it: the 3D
+// surface, the 3D surface from straight above, and the 2D colour map (HeatMapView, the only
+// one without an OpenGL context). A colour bar gives γc for the colours.
 
 #include "ui/SurfaceData.h"
 
@@ -11,10 +12,15 @@
 #include <memory>
 
 class QLabel;
+class QStackedWidget;
+class QToolButton;
 
 namespace kinstab::ui {
 
+class ColourBar;
 class HeatMapView;
+
+enum class SurfaceMode { Surface3D, Top, Map };
 
 class SurfaceView : public QWidget {
     Q_OBJECT
@@ -22,7 +28,20 @@ public:
     explicit SurfaceView(QWidget* parent = nullptr);
     ~SurfaceView() override;
 
+    // OpenGL is available (the 3D and top views can be chosen).
     bool is3D() const { return m_3d != nullptr; }
+    // The GL window is what shows now (a screenshot must render it: grab() is blank).
+    bool showsGL() const;
+    SurfaceMode mode() const { return m_mode; }
+    void setMode(SurfaceMode mode); // 3D modes fall back to the map without OpenGL
+    // Grid lines on the 3D surface: on by default up to 60 × 60 points, where they help to
+    // read the surface; beyond, they turn it into a dark sheet.
+    bool wireframe() const { return m_wireframe; }
+    void setWireframe(bool on);
+    // The camera back to where it starts (the top view stays a top view).
+    void resetView();
+    ColourBar* colourBar() const { return m_bar; }
+    HeatMapView* heatMap() const { return m_map; }
     void setData(const GammaGrid& g);
     void setOverlays(const SurfaceOverlays& o);
     // Selects (and reports) the point amplitudes[ai], frequencies[fi].
@@ -51,11 +70,22 @@ signals:
 
 private:
     struct Graph3D; // the Data Visualization objects
+    QWidget* buildToolBar();
+    void build3D(); // m_3d->graph set
     void updateLegend();
     void rebuildOverlays();
+    void showPage();
 
     std::unique_ptr<Graph3D> m_3d;
-    HeatMapView* m_map = nullptr;
+    HeatMapView* m_map;
+    QStackedWidget* m_stack;
+    QLabel* m_hint;
+    ColourBar* m_bar;
+    QToolButton* m_buttons[3] = {};
+    QToolButton* m_wireButton = nullptr;
+    QToolButton* m_resetButton = nullptr;
+    SurfaceMode m_mode = SurfaceMode::Surface3D;
+    bool m_wireframe = true;
     QLabel* m_legend;
     QLabel* m_notice;
     QLabel* m_staleLine;

@@ -19,7 +19,8 @@ const QCommandLineOption kShot("screenshot", "Run the sweep, save the window to 
                                "FILE");
 const QCommandLineOption
     kScenario("scenario",
-              "With --screenshot: one step after the sweep (open:PROJECT, codes, mu, cancel).",
+              "With --screenshot: one step after the sweep (open:PROJECT, codes, mu, cancel, top, "
+              "map) or present, optionally @WIDTHxHEIGHT.",
               "STEP");
 
 const QCommandLineOption kSize("size", "With --screenshot: the window's size (default 1280x800).",

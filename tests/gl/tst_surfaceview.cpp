@@ -3,6 +3,7 @@
 // (amplitude index, frequency index), keeps its overlays, and the window's screenshot carries
 // the rendered surface (a plain grab() of the GL window would be blank).
 
+#include "ui/ColourBar.h"
 #include "ui/GridPanel.h"
 #include "ui/HeatMapView.h"
 #include "ui/MainWindow.h"
@@ -14,6 +15,8 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTest>
+#include <QToolButton>
+#include <QtDataVisualization/Q3DCamera>
 #include <QtDataVisualization/Q3DSurface>
 #include <QtDataVisualization/QSurface3DSeries>
 #include <QtDataVisualization/QSurfaceDataProxy>
@@ -60,6 +63,35 @@ GammaGrid halfCancelled() {
         g.gamma[k] = k < g.gamma.size() / 2 ? 0.0 : std::nan("");
     return g;
 }
+// The view at 640 × 480 on screen (the GL window renders only when exposed).
+bool shown(SurfaceView& view) {
+    view.resize(640, 480);
+    view.show();
+    return QTest::qWaitForWindowExposed(&view);
+}
+GammaGrid squareGrid(int n) {
+    GammaGrid g;
+    for (int i = 0; i < n; ++i) {
+        g.amplitudes.push_back(0.5 + 0.01 * i);
+        g.frequencies.push_back(0.5 + 0.02 * i);
+    }
+    for (double a : g.amplitudes)
+        for (double f : g.frequencies)
+            g.gamma.push_back(a * f);
+    return g;
+}
+Q3DSurface* graphWindow() {
+    for (QWindow* win : QGuiApplication::allWindows())
+        if (auto* graph = qobject_cast<Q3DSurface*>(win)) return graph;
+    return nullptr;
+}
+// The γc series: the one coloured by the range gradient.
+QSurface3DSeries* surfaceSeries() {
+    if (Q3DSurface* graph = graphWindow())
+        for (QSurface3DSeries* s : graph->seriesList())
+            if (s->colorStyle() == Q3DTheme::ColorStyleRangeGradient) return s;
+    return nullptr;
+}
 // The "not computed" series of the 3D graph: finite points only where γc is NaN.
 QSurface3DSeries* notComputedSeries() {
     for (QWindow* win : QGuiApplication::allWindows())
@@ -82,9 +114,7 @@ private slots:
     void rendersAndSelects() {
         SurfaceView view;
         if (!view.is3D()) QSKIP("no OpenGL context");
-        view.resize(640, 480);
-        view.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QVERIFY(shown(view));
         view.setData(testGrid());
         SurfaceOverlays o;
         o.codes = {{"UBC 1976", 0.16, Qt::magenta}, {"ATC 3-06", 0.275, QColor(255, 140, 0)}};
@@ -106,9 +136,7 @@ private slots:
     void notComputedIsDrawnDistinctFromStable() {
         SurfaceView view;
         if (!view.is3D()) QSKIP("no OpenGL context");
-        view.resize(640, 480);
-        view.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QVERIFY(shown(view));
         GammaGrid all = halfCancelled();
         for (double& g : all.gamma)
             g = 0.0; // everything computed and stable
@@ -154,6 +182,62 @@ private slots:
         const QRect r(graph->mapTo(&w, QPoint(0, 0)) * shot.devicePixelRatio(),
                       graph->size() * shot.devicePixelRatio());
         QVERIFY(distinctColours(shot, r.intersected(shot.rect())) > 50);
+    }
+
+    // Grid lines on by default up to 60 × 60 points, off above; the toggle sets the series'
+    // draw mode either way.
+    void wireframeDefaultAndToggle() {
+        SurfaceView view;
+        if (!view.is3D()) QSKIP("no OpenGL context");
+        QVERIFY(shown(view));
+        view.setData(testGrid()); // 4 × 3
+        QVERIFY(view.wireframe());
+        QSurface3DSeries* surface = surfaceSeries();
+        QVERIFY(surface);
+        QCOMPARE(surface->drawMode(), QSurface3DSeries::DrawSurfaceAndWireframe);
+        view.setData(squareGrid(61)); // 61 × 61 > 60 × 60
+        QVERIFY(!view.wireframe());
+        QCOMPARE(surface->drawMode(), QSurface3DSeries::DrawSurface);
+        auto* toggle = view.findChild<QToolButton*>(QStringLiteral("wireframe"));
+        QVERIFY(toggle && toggle->isEnabled() && !toggle->isChecked());
+        toggle->click();
+        QCOMPARE(surface->drawMode(), QSurface3DSeries::DrawSurfaceAndWireframe);
+        view.setData(squareGrid(61)); // same shape again: the user's choice stays
+        QVERIFY(view.wireframe());
+        view.setData(squareGrid(60));
+        QVERIFY(view.wireframe());
+    }
+
+    // Top view: orthographic, camera straight above; reset puts a rotated camera back; the 2D
+    // map page replaces the GL window and the screenshot comes from it.
+    void topViewMapAndReset() {
+        SurfaceView view;
+        if (!view.is3D()) QSKIP("no OpenGL context");
+        QVERIFY(shown(view));
+        view.setData(testGrid());
+        Q3DSurface* graph = graphWindow();
+        QVERIFY(graph);
+        Q3DCamera* camera = graph->scene()->activeCamera();
+        const float x0 = camera->xRotation(), y0 = camera->yRotation(), z0 = camera->zoomLevel();
+        camera->setCameraPosition(75.0f, 10.0f, 300.0f); // as a user's drag and wheel would
+        view.findChild<QToolButton*>(QStringLiteral("resetView"))->click();
+        QCOMPARE(camera->xRotation(), x0);
+        QCOMPARE(camera->yRotation(), y0);
+        QCOMPARE(camera->zoomLevel(), z0);
+        view.findChild<QToolButton*>(QStringLiteral("viewTop"))->click();
+        QCOMPARE(view.mode(), SurfaceMode::Top);
+        QVERIFY(graph->isOrthoProjection());
+        QCOMPARE(camera->yRotation(), 90.0f); // looking straight down
+        QVERIFY(view.showsGL());
+        QVERIFY(view.colourBar()->isVisible());
+        view.findChild<QToolButton*>(QStringLiteral("viewMap"))->click();
+        QCOMPARE(view.mode(), SurfaceMode::Map);
+        QVERIFY(!view.showsGL());
+        QCOMPARE(view.graphWidget(), static_cast<QWidget*>(view.heatMap()));
+        QVERIFY(!view.findChild<QToolButton*>(QStringLiteral("wireframe"))->isEnabled());
+        view.findChild<QToolButton*>(QStringLiteral("view3D"))->click();
+        QVERIFY(!graph->isOrthoProjection());
+        QCOMPARE(camera->yRotation(), y0);
     }
 };
 

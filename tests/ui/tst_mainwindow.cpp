@@ -109,8 +109,8 @@ private slots:
     void saveThenOpenReproducesEveryInput() {
         // Change inputs on every panel, away from the example's values.
         setText("stories", "12");
-        w->buildingPanel()->findChild<QComboBox*>()->setCurrentIndex(
-            1); // metres (wall width in mm)
+        // Lengths in SI (m, wall width in mm); the file keeps the building's feet.
+        w->findChild<QAction*>(QStringLiteral("unitsSI"))->trigger();
         setText("height", "120.5");
         setText("planDimension", "60");
         setText("period", "0.8");

@@ -3,6 +3,7 @@
 
 #include "ui/teaching/StateStyle.h"
 
+#include <QEvent>
 #include <QHeaderView>
 
 namespace kinstab::ui {
@@ -92,6 +93,12 @@ void EventLog::setCurrent(int row) {
     model_->setCurrent(row);
     if (row >= 0 && row < model_->rowCount())
         scrollTo(model_->index(row, 0), QAbstractItemView::EnsureVisible);
+}
+
+void EventLog::changeEvent(QEvent* e) {
+    QTableView::changeEvent(e);
+    if (e->type() == QEvent::FontChange)
+        verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 4);
 }
 
 } // namespace kinstab::ui

@@ -41,6 +41,9 @@ public:
 signals:
     void eventClicked(int index);
 
+protected:
+    void changeEvent(QEvent* e) override; // rows follow the font (presentation mode)
+
 private:
     EventLogModel* model_;
 };

@@ -24,7 +24,8 @@ struct MapRange {
 
 struct FigurePreset {
     QString id;      // "fig29"
-    QString title;   // shown in the preset list
+    QString title;   // in plain words what happens, shown in the preset list
+    QString figure;  // "Fig. 29": the secondary note after the title
     QString caption; // what the figure shows, after the paper's caption
     TeachingParams params;
     MapMode mode = MapMode::Surface;
@@ -39,5 +40,7 @@ inline constexpr MapRange kPlanarRange{0.5, 1.15, 0.5, 2.0};
 
 const std::vector<FigurePreset>& figurePresets();
 const FigurePreset* findFigurePreset(const QString& id);
+// "title · Fig. N", as the preset list shows it.
+QString presetListText(const FigurePreset& p);
 
 } // namespace kinstab::ui

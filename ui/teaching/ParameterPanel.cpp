@@ -115,7 +115,7 @@ void ParameterPanel::setValue(int quantity, double v) {
         values_.mu = v;
         break;
     case kD:
-        values_.wallWidthM = v / 1000.0;
+        values_.wallWidthM = v * metresPerDisplayUnit(units_, LengthScale::Detail);
         break;
     }
     changed();
@@ -152,11 +152,27 @@ void ParameterPanel::setParams(const TeachingParams& p) {
     rows_[kA].spin->setValue(p.amplitude);
     rows_[kF].spin->setValue(p.frequencyHz);
     rows_[kMu].spin->setValue(p.mu);
-    rows_[kD].spin->setValue(p.wallWidthM * 1000.0);
+    rows_[kD].spin->setValue(p.wallWidthM / metresPerDisplayUnit(units_, LengthScale::Detail));
     limit_->setValue(p.limit);
     values_ = p;
     quiet_ = false;
     updatePlanarEnabled();
+    updateTstarLabel();
+}
+
+void ParameterPanel::setUnitSystem(UnitSystem s) {
+    units_ = s;
+    const Row& d = rows_[kD];
+    const bool us = s == UnitSystem::US;
+    const double lo = us ? 2.0 : 50.0, hi = us ? 20.0 : 500.0; // about 5-50 cm either way
+    quiet_ = true;
+    d.slider->setRange(static_cast<int>(std::lround(lo / d.step)),
+                       static_cast<int>(std::lround(hi / d.step)));
+    d.spin->setRange(lo, hi);
+    d.spin->setDecimals(us ? 3 : 1);
+    d.spin->setSuffix(QLatin1Char(' ') + lengthSymbol(s, LengthScale::Detail));
+    d.spin->setValue(values_.wallWidthM / metresPerDisplayUnit(s, LengthScale::Detail));
+    quiet_ = false;
     updateTstarLabel();
 }
 
@@ -186,9 +202,12 @@ void ParameterPanel::updatePlanarEnabled() {
 
 void ParameterPanel::updateTstarLabel() {
     const double d = values_.wallWidthM;
-    tstarLabel_->setText(tr("d = %1 in,  t* = √(d/2g) = %2 s")
-                             .arg(d / 0.0254, 0, 'f', 2)
-                             .arg(tstarFromWallWidth(d), 0, 'f', 4));
+    const bool us = units_ == UnitSystem::US;
+    tstarLabel_->setText(
+        tr("d = %1 %2,  t* = √(d/2g) = %3 s")
+            .arg(d / metresPerDisplayUnit(units_, LengthScale::Detail), 0, 'f', us ? 3 : 1)
+            .arg(lengthSymbol(units_, LengthScale::Detail))
+            .arg(tstarFromWallWidth(d), 0, 'f', 4));
 }
 
 } // namespace kinstab::ui

@@ -14,6 +14,8 @@ class QGridLayout;
 class QLabel;
 class QSlider;
 
+#include "ui/Units.h"
+
 namespace kinstab::ui {
 
 class ParameterPanel : public QWidget {
@@ -22,6 +24,8 @@ public:
     explicit ParameterPanel(QWidget* parent = nullptr);
     TeachingParams params() const { return values_; }
     void setParams(const TeachingParams& p); // no paramsChanged
+    // The wall width in mm (SI) or in (US customary); the value itself is unchanged.
+    void setUnitSystem(UnitSystem s);
 
     // For tests and the main window: the slider of one quantity.
     enum class Quantity { Amplitude, Frequency, Mu, WallWidth };
@@ -57,6 +61,7 @@ private:
     QDoubleSpinBox* theta_;
     QLabel* tstarLabel_;
     TeachingParams values_;
+    UnitSystem units_ = UnitSystem::SI;
     bool quiet_ = false;
 };
 

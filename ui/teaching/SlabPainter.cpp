@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/teaching/SlabPainter.h"
 
+#include "ui/teaching/TextScale.h"
+
 #include "ui/teaching/StateStyle.h"
 #include "ui/teaching/TopViewPainter.h"
 #include "ui/teaching/TracePainter.h"
@@ -33,8 +35,12 @@ struct Frame2D {
     }
 };
 
-QString cm(double metres) {
-    return QString::number(metres * 100.0, 'f', 1) + QStringLiteral(" cm");
+// A length in the unit system's small unit: whole mm, or inches to 0.01.
+QString lengthText(double metres, UnitSystem u) {
+    const LengthScale detail = LengthScale::Detail;
+    return QString::number(metres / metresPerDisplayUnit(u, detail), 'f',
+                           u == UnitSystem::US ? 2 : 0) +
+           QLatin1Char(' ') + lengthSymbol(u, detail);
 }
 
 void arrow(QPainter& p, QPointF from, QPointF to, const QColor& c, double width) {
@@ -99,8 +105,9 @@ void paintBaseAndRuler(QPainter& p, const Frame2D& f, const SlabScene& s) {
     p.setPen(QPen(QColor(0x33, 0x33, 0x33), 1.2));
     p.drawLine(f.at(left, yTop), f.at(right, yTop));
     const double shift = s.frame.baseDisp / 2.0; // base displacement in d
-    // Ticks at round centimetres; world x = cm / (100 d).
-    const double dMetres = s.params.wallWidthM, cmPerD = dMetres * 100.0;
+    // Ticks at round mm or inches; world x = length / d.
+    const double dMetres = s.params.wallWidthM,
+                 cmPerD = dMetres / metresPerDisplayUnit(s.units, LengthScale::Detail);
     const double step = niceTickStep((right - left) * cmPerD, 8), minor = step / 2;
     const long n0 = static_cast<long>(std::ceil((left + shift) * cmPerD / minor));
     const long n1 = static_cast<long>(std::floor((right + shift) * cmPerD / minor));
@@ -117,8 +124,9 @@ void paintBaseAndRuler(QPainter& p, const Frame2D& f, const SlabScene& s) {
     p.setPen(QColor(0x33, 0x33, 0x33));
     p.drawText(QRectF(f.at(left, yBot - 0.28), f.at(right, yBot - 0.6)),
                Qt::AlignLeft | Qt::AlignVCenter,
-               QStringLiteral("fixed ground (cm) — base displacement y_b = %1")
-                   .arg(cm(s.frame.baseDisp * dMetres / 2)));
+               QStringLiteral("fixed ground (%1) — base displacement y_b = %2")
+                   .arg(lengthSymbol(s.units, LengthScale::Detail),
+                        lengthText(s.frame.baseDisp * dMetres / 2, s.units)));
 }
 
 // The slab as two pieces with a break in the middle, so the shortened span is not taken as
@@ -194,7 +202,8 @@ void paintBearings(QPainter& p, const Frame2D& f, const SlabScene& s) {
             p.drawLine(f.at(x1, y - 0.08), f.at(x1, y + 0.08));
         }
         labelBox(p, f.at((x0 + x1) / 2, y + 0.28),
-                 QStringLiteral("bearing %1").arg(cm(std::max(0.0, value) * dM)), c);
+                 QStringLiteral("bearing %1").arg(lengthText(std::max(0.0, value) * dM, s.units)),
+                 c);
     };
     dim(1.0 - left, 1.0, left, left < 0.3 * L);
     dim(kSpan - 1.0, kSpan - 1.0 + right, right, right < 0.3 * L);
@@ -205,7 +214,8 @@ void paintWallWidth(QPainter& p, const Frame2D& f, const SlabScene& s) {
     p.setPen(QPen(QColor(0x22, 0x22, 0x22), 1.2));
     arrow(p, f.at(0.5, y), f.at(0.0, y), QColor(0x22, 0x22, 0x22), 1.2);
     arrow(p, f.at(0.5, y), f.at(1.0, y), QColor(0x22, 0x22, 0x22), 1.2);
-    labelBox(p, f.at(0.5, y - 0.28), QStringLiteral("d = %1").arg(cm(s.params.wallWidthM)),
+    labelBox(p, f.at(0.5, y - 0.28),
+             QStringLiteral("d = %1").arg(lengthText(s.params.wallWidthM, s.units)),
              QColor(0x22, 0x22, 0x22));
 }
 
@@ -240,8 +250,8 @@ void paintHeader(QPainter& p, const QRectF& area, const SlabScene& s, double fon
         line2, Qt::AlignLeft | Qt::AlignVCenter,
         QStringLiteral("δ = %1 (d/2) = %2     slab y_s = %3     |a| vs μ: %4 %5 %6")
             .arg(fr.delta, 0, 'f', 3)
-            .arg(cm(fr.delta * dM / 2))
-            .arg(cm((fr.baseDisp + fr.delta) * dM / 2))
+            .arg(lengthText(fr.delta * dM / 2, s.units))
+            .arg(lengthText((fr.baseDisp + fr.delta) * dM / 2, s.units))
             .arg(std::abs(fr.accel), 0, 'f', 2)
             .arg(std::abs(fr.accel) > s.params.mu ? QStringLiteral(">") : QStringLiteral("≤"))
             .arg(s.params.mu, 0, 'f', 2));
@@ -253,7 +263,8 @@ void paintSlabScene(QPainter& p, const QRectF& area, const SlabScene& s) {
     p.save();
     p.setRenderHint(QPainter::Antialiasing);
     p.fillRect(area, Qt::white);
-    const double headerPx = std::clamp(area.height() * 0.045, 11.0, 16.0);
+    const double scale = textScale(p); // presentation mode: larger text, same drawing
+    const double headerPx = std::clamp(area.height() * 0.045, 11.0, 16.0) * scale;
     const double headerH = headerPx * 3.8;
     const double worldW = kSpan + 2 * kMargin;
     const double worldH = kTopPad + kSlabT + kWallH + kBaseH + kRulerH + 0.35;
@@ -264,7 +275,8 @@ void paintSlabScene(QPainter& p, const QRectF& area, const SlabScene& s) {
     f.x0 = side.left() + (side.width() - worldW * f.k) / 2 + kMargin * f.k;
     f.y0 = area.top() + headerH + (kTopPad + kSlabT) * f.k;
     QFont font = p.font();
-    font.setPixelSize(static_cast<int>(std::clamp(f.k * 0.2, 10.0, 15.0)));
+    font.setPixelSize(
+        static_cast<int>(std::clamp(f.k * 0.2, 10.0, 15.0) * std::min(scale, kLabelMaxScale)));
     p.setFont(font);
     paintBaseAndRuler(p, f, s);
     paintWall(p, f, 0.0, 1.0);

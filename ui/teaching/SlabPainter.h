@@ -11,6 +11,8 @@
 
 class QPainter;
 
+#include "ui/Units.h"
+
 namespace kinstab::ui {
 
 struct SlabScene {
@@ -18,7 +20,8 @@ struct SlabScene {
     TeachingParams params;
     double tstar = 0.099;
     double displayEnd = 0;
-    ExitSide exit = ExitSide::None; // planar collapse: across or along the walls
+    ExitSide exit = ExitSide::None;    // planar collapse: across or along the walls
+    UnitSystem units = UnitSystem::SI; // lengths in mm or in (View → Units)
 };
 
 // The header (state, time, displacements) and the side view; for the planar model the side view

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/teaching/SurfaceMarker.h"
 
+#include "ui/teaching/TextScale.h"
+
 #include "ui/teaching/StateStyle.h"
 #include "ui/teaching/TracePainter.h"
 
@@ -202,7 +204,7 @@ void SurfaceMarker::paintEvent(QPaintEvent*) {
     p.fillRect(rect(), Qt::white);
     p.setRenderHint(QPainter::Antialiasing);
     QFont font = p.font();
-    font.setPixelSize(11);
+    font.setPixelSize(scaledPixels(p, 11, kLabelMaxScale)); // larger in presentation mode
     p.setFont(font);
     const bool surface = current_.mode == MapMode::Surface;
     const QString ref = current_.params.scale == TauScale::TauRise ? QStringLiteral("τ_rise")

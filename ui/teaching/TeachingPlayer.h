@@ -17,6 +17,8 @@ class TeachingPlayer : public QObject {
 public:
     static constexpr double kMinSpeed = 0.1;
     static constexpr double kMaxSpeed = 10.0;
+    // Slow motion: a collapse at 1 Hz (tens of tau at t* = 0.1 s) lasts seconds, not a blink.
+    static constexpr double kDefaultSpeed = 0.25;
 
     explicit TeachingPlayer(QObject* parent = nullptr);
 
@@ -62,7 +64,7 @@ private:
 
     std::vector<double> events_;
     int reported_ = -1; // last event reported by eventsPassed
-    double tau_ = 0, tauEnd_ = 0, tstar_ = 0.099, speed_ = 1.0;
+    double tau_ = 0, tauEnd_ = 0, tstar_ = 0.099, speed_ = kDefaultSpeed;
     bool playing_ = false;
     QTimer timer_;
     QElapsedTimer elapsed_;

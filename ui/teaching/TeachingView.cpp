@@ -10,6 +10,7 @@
 #include "ui/teaching/TeachingPlayer.h"
 #include "ui/teaching/TracePlot.h"
 
+#include <QApplication>
 #include <QComboBox>
 #include <QFileDialog>
 #include <QGroupBox>
@@ -18,6 +19,7 @@
 #include <QMessageBox>
 #include <QProgressDialog>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QShortcut>
 #include <QSignalBlocker>
 #include <QSlider>
@@ -25,7 +27,9 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace kinstab::ui {
 
@@ -54,19 +58,65 @@ TeachingView::TeachingView(QWidget* parent)
         rerun(p);
     });
     connect(marker_, &SurfaceMarker::pointPicked, this, &TeachingView::showPoint);
-    auto* space = new QShortcut(QKeySequence(Qt::Key_Space), this, nullptr, nullptr,
-                                Qt::WidgetWithChildrenShortcut);
-    connect(space, &QShortcut::activated, player_, &TeachingPlayer::togglePlay);
-    auto* next = new QShortcut(QKeySequence(Qt::Key_N), this, nullptr, nullptr,
-                               Qt::WidgetWithChildrenShortcut);
-    connect(next, &QShortcut::activated, player_, &TeachingPlayer::stepToNextEvent);
-    auto* prev = new QShortcut(QKeySequence(Qt::Key_B), this, nullptr, nullptr,
-                               Qt::WidgetWithChildrenShortcut);
-    connect(prev, &QShortcut::activated, player_, &TeachingPlayer::stepToPreviousEvent);
+    installKeys();
     applyPreset(QStringLiteral("fig29"));
 }
 
 TeachingView::~TeachingView() = default;
+
+// Space plays and pauses, the arrows step, N and B jump between events, wherever the focus is
+// inside the view: the scene and the traces take the focus when clicked, so a click on them
+// does not leave the keys with the scroll area around the view.
+void TeachingView::installKeys() {
+    animation_->setFocusPolicy(Qt::ClickFocus);
+    traces_->setFocusPolicy(Qt::ClickFocus);
+    auto key = [this](QKeyCombination k, auto slot) {
+        auto* s =
+            new QShortcut(QKeySequence(k), this, nullptr, nullptr, Qt::WidgetWithChildrenShortcut);
+        connect(s, &QShortcut::activated, this, slot);
+    };
+    key(Qt::Key_Space, [this] { player_->togglePlay(); });
+    key(Qt::Key_N, [this] { player_->stepToNextEvent(); });
+    key(Qt::Key_B, [this] { player_->stepToPreviousEvent(); });
+    key(Qt::Key_Right, [this] { stepFrames(1); });
+    key(Qt::Key_Left, [this] { stepFrames(-1); });
+    key(Qt::SHIFT | Qt::Key_Right, [this] { stepFrames(25); });
+    key(Qt::SHIFT | Qt::Key_Left, [this] { stepFrames(-25); });
+}
+
+void TeachingView::stepFrames(int frames) {
+    player_->pause();
+    const double tstar = run_->tstar() > 0 ? run_->tstar() : 0.1;
+    player_->seek(player_->tau() + frames * player_->speed() / 25.0 / tstar);
+}
+
+void TeachingView::setUnitSystem(UnitSystem s) {
+    units_ = s;
+    panel_->setUnitSystem(s);
+    showFrame(player_->tau());
+}
+
+void TeachingView::setFontScale(double scale) {
+    fontScale_ = std::clamp(scale, 0.5, 4.0);
+    QFont f = QApplication::font();
+    f.setPointSizeF(f.pointSizeF() * fontScale_);
+    setFont(f);
+    // The side panel grows with its text, up to a third of a full-HD screen.
+    side_->setFixedWidth(static_cast<int>(350 * std::min(fontScale_, 1.8)));
+    {
+        const QSignalBlocker block(fontScaleBox_);
+        int best = 0;
+        for (int i = 0; i < fontScaleBox_->count(); ++i)
+            if (std::abs(fontScaleBox_->itemData(i).toDouble() - fontScale_) <
+                std::abs(fontScaleBox_->itemData(best).toDouble() - fontScale_))
+                best = i;
+        fontScaleBox_->setCurrentIndex(best);
+    }
+    animation_->update();
+    traces_->update();
+    marker_->update();
+    emit fontScaleChanged(fontScale_);
+}
 
 QWidget* TeachingView::buildTransport() {
     auto* bar = new QWidget(this);
@@ -103,7 +153,9 @@ QWidget* TeachingView::buildTransport() {
     speed_ = new QComboBox(bar);
     for (double s : kSpeeds)
         speed_->addItem(QStringLiteral("%1×").arg(s), s);
-    speed_->setCurrentIndex(3);
+    speed_->setCurrentIndex(static_cast<int>(
+        std::find(std::begin(kSpeeds), std::end(kSpeeds), TeachingPlayer::kDefaultSpeed) -
+        std::begin(kSpeeds)));
     speed_->setToolTip(tr("Speed: 1× is real time for this wall (τ advances 1/t* per second)"));
     connect(speed_, &QComboBox::currentIndexChanged, this,
             [this](int i) { player_->setSpeed(speed_->itemData(i).toDouble()); });
@@ -117,18 +169,25 @@ QWidget* TeachingView::buildTransport() {
         speed_->setCurrentIndex(best);
     });
     h->addWidget(speed_);
+    fontScaleBox_ = new QComboBox(bar);
+    fontScaleBox_->setObjectName(QStringLiteral("fontScale"));
+    for (double f : {1.0, 1.5, 2.0, 2.5, 3.0})
+        fontScaleBox_->addItem(tr("Text %1%").arg(f * 100, 0, 'f', 0), f);
+    fontScaleBox_->setToolTip(tr("Text size, for a projector (F11: presentation mode)"));
+    connect(fontScaleBox_, &QComboBox::activated, this,
+            [this](int i) { setFontScale(fontScaleBox_->itemData(i).toDouble()); });
+    h->addWidget(fontScaleBox_);
     return bar;
 }
 
 QWidget* TeachingView::buildSidePanel() {
-    auto* side = new QWidget(this);
-    side->setFixedWidth(350);
+    auto* side = new QWidget;
     auto* v = new QVBoxLayout(side);
     v->setContentsMargins(0, 0, 0, 0);
     presets_ = new QComboBox(side);
     presets_->addItem(tr("(your own settings)"), QString());
     for (const FigurePreset& p : figurePresets())
-        presets_->addItem(p.title, p.id);
+        presets_->addItem(presetListText(p), p.id);
     presets_->setToolTip(tr("Reproduce a figure of Furgerson (1980) in one click"));
     connect(presets_, &QComboBox::activated, this, [this](int i) {
         const QString id = presets_->itemData(i).toString();
@@ -157,7 +216,16 @@ QWidget* TeachingView::buildSidePanel() {
     exports->addWidget(frame);
     exports->addWidget(seq);
     v->addLayout(exports);
-    return side;
+    // Scrolls on its own: a taller panel (the planar model's extra fields, large text) must
+    // not push the play bar below the window.
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(side);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setFixedWidth(350);
+    side_ = scroll;
+    return scroll;
 }
 
 TeachingParams TeachingView::params() const {
@@ -187,7 +255,8 @@ bool TeachingView::applyPreset(const QString& id) {
     presetId_ = id;
     mapMode_ = preset->mode;
     mapRange_ = preset->range;
-    caption_->setText(preset->caption);
+    caption_->setText(
+        QStringLiteral("Furgerson (1980), %1: %2").arg(preset->figure, preset->caption));
     panel_->setParams(preset->params);
     rerun(preset->params);
     player_->rewind();
@@ -214,7 +283,7 @@ void TeachingView::rerun(const TeachingParams& p) {
 void TeachingView::showFrame(double tau) {
     const TeachingFrame f = run_->frameAt(tau);
     animation_->setScene(
-        SlabScene{f, run_->params(), run_->tstar(), run_->displayEnd(), run_->exitSide()});
+        SlabScene{f, run_->params(), run_->tstar(), run_->displayEnd(), run_->exitSide(), units_});
     traces_->setCursor(tau);
     log_->setCurrent(f.eventIndex);
     {

@@ -5,6 +5,7 @@
 // sliders that re-run at once, the "where am I" map and one-click presets for the paper's
 // figures. Self-contained: the main window docks it as a tab.
 
+#include "ui/Units.h"
 #include "ui/teaching/FigurePresets.h"
 #include "ui/teaching/TeachingRun.h"
 
@@ -46,6 +47,9 @@ public:
     QString currentPresetId() const { return presetId_; }
     MapMode mapMode() const { return mapMode_; }
     MapRange mapRange() const { return mapRange_; }
+    // Text size relative to the application's font (1 = normal; presentation mode uses more),
+    // for the panels and the painted scene alike.
+    double fontScale() const { return fontScale_; }
 
     // Exports of the current frame / the whole run; empty string or frame count on success.
     QString exportFramePng(const QString& path, QSize size = {1280, 900}) const;
@@ -58,11 +62,14 @@ public slots:
     bool applyPreset(const QString& id);                  // false for an unknown id
     // Show the run at (A, f) with the rest unchanged: e.g. a point picked on the main surface.
     void showPoint(double amplitude, double frequencyHz);
+    void setFontScale(double scale);               // clamped to [0.5, 4]
+    void setUnitSystem(kinstab::ui::UnitSystem s); // lengths in the panel and the drawing
 
 signals:
     void runChanged();
     void paramsChanged(const kinstab::ui::TeachingParams& p);
     void presetApplied(const QString& id);
+    void fontScaleChanged(double scale);
     void frameChanged(double tau);
 
 private:
@@ -73,6 +80,8 @@ private:
     void updateOutcome();
     void exportFrameDialog();
     void exportSequenceDialog();
+    void installKeys();
+    void stepFrames(int frames); // pauses, then moves by frames of 1/25 s at the current speed
 
     std::unique_ptr<TeachingRun> run_;
     TeachingPlayer* player_;
@@ -88,6 +97,10 @@ private:
     QSlider* scrub_;
     QComboBox* speed_;
     QLabel* timeLabel_;
+    QComboBox* fontScaleBox_;
+    QWidget* side_ = nullptr;
+    double fontScale_ = 1.0;
+    UnitSystem units_ = UnitSystem::SI;
     QString presetId_;
     MapMode mapMode_ = MapMode::Surface;
     MapRange mapRange_;

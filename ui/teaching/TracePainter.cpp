@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/teaching/TracePainter.h"
 
+#include "ui/teaching/TextScale.h"
+
 #include "ui/teaching/StateStyle.h"
 
 #include <QPainter>
@@ -178,7 +180,7 @@ void paintTraces(QPainter& p, const QRectF& area, const TeachingRun& run, double
     p.setRenderHint(QPainter::Antialiasing);
     p.fillRect(area, Qt::white);
     QFont font = p.font();
-    font.setPixelSize(11);
+    font.setPixelSize(scaledPixels(p, 11, kLabelMaxScale)); // larger in presentation mode
     p.setFont(font);
     const TraceLayout l = traceLayout(area, run);
     const double peak =

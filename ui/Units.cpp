@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/Units.h"
+
+#include "ui/NumberField.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QCoreApplication>
+#include <QMenu>
+#include <QSettings>
+#include <QWidget>
+
+namespace kinstab::ui {
+
+namespace {
+const char* const kKey = "view/unitSystem";
+constexpr double kFoot = 0.3048, kInch = 0.0254; // exact by definition (1959)
+} // namespace
+
+double metresPerDisplayUnit(UnitSystem s, LengthScale scale) {
+    if (s == UnitSystem::US) return scale == LengthScale::Structure ? kFoot : kInch;
+    return scale == LengthScale::Structure ? 1.0 : 0.001;
+}
+
+QString lengthSymbol(UnitSystem s, LengthScale scale) {
+    if (s == UnitSystem::US)
+        return scale == LengthScale::Structure ? QStringLiteral("ft") : QStringLiteral("in");
+    return scale == LengthScale::Structure ? QStringLiteral("m") : QStringLiteral("mm");
+}
+
+QString unitSystemName(UnitSystem s) {
+    return s == UnitSystem::US ? QCoreApplication::translate("Units", "US customary (ft, in)")
+                               : QCoreApplication::translate("Units", "SI (m, mm)");
+}
+
+UnitSystem savedUnitSystem() {
+    return QSettings().value(kKey).toString() == QLatin1String("US") ? UnitSystem::US
+                                                                     : UnitSystem::SI;
+}
+
+void saveUnitSystem(UnitSystem s) {
+    QSettings().setValue(kKey, s == UnitSystem::US ? QStringLiteral("US") : QStringLiteral("SI"));
+}
+
+void applyUnitSystem(QWidget* root, UnitSystem s) {
+    for (NumberField* f : root->findChildren<NumberField*>())
+        f->setUnitSystem(s);
+}
+
+void installUnitsMenu(QMenu* viewMenu, QWidget* root, std::function<void(UnitSystem)> also) {
+    QMenu* menu = viewMenu->addMenu(QCoreApplication::translate("Units", "&Units"));
+    auto* group = new QActionGroup(menu);
+    const UnitSystem saved = savedUnitSystem();
+    for (UnitSystem s : {UnitSystem::SI, UnitSystem::US}) {
+        QAction* a = menu->addAction(unitSystemName(s));
+        a->setObjectName(s == UnitSystem::SI ? QStringLiteral("unitsSI")
+                                             : QStringLiteral("unitsUS"));
+        a->setCheckable(true);
+        a->setChecked(s == saved);
+        group->addAction(a);
+        QObject::connect(a, &QAction::triggered, root, [root, s, also] {
+            applyUnitSystem(root, s);
+            if (also) also(s);
+            saveUnitSystem(s);
+        });
+    }
+    applyUnitSystem(root, saved);
+    if (also) also(saved);
+}
+
+} // namespace kinstab::ui
