@@ -189,7 +189,7 @@ const char* kStudy =
 
 const char* kMerge =
     "usage: kinstab-cli merge SHARD.jsonl... [--list FILE] -o FILE.jsonl\n"
-    "  SHARD                        results of study --shard K/N, any order\n"
+    "  SHARD                        shard results of kinstab-cli study, any order\n"
     "  --list FILE                  a file naming more shards, one per line\n"
     "  -o FILE                      the merged results, as one unsharded run writes them\n";
 

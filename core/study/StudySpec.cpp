@@ -26,6 +26,12 @@ std::string intensityName(const IntensityMeasure& im) {
 
 namespace {
 
+// "FIELD = VALUE: why", the form every project field error takes.
+[[noreturn]] void badValue(const JsonReader& r, const std::string& key, const std::string& value,
+                           const std::string& why) {
+    throw JsonFieldError(r.field(key) + " = " + value + ": " + why);
+}
+
 std::vector<std::string> patterns(const JsonReader& r, const std::string& key,
                                   const std::string& fallback) {
     if (!r.has(key)) return fallback.empty() ? std::vector<std::string>{} : std::vector{fallback};
@@ -80,8 +86,8 @@ void addRecords(const JsonReader& r, const std::string& baseDir, StudySpec& s) {
     else if (fs::is_regular_file(path, ec))
         files.push_back(path);
     else
-        r.fail("path", quotedToken(given) + ": no such file or folder");
-    if (files.empty()) r.fail("path", quotedToken(given) + ": no record file matches");
+        badValue(r, "path", quotedToken(given), "no such file or folder");
+    if (files.empty()) badValue(r, "path", quotedToken(given), "no record file matches");
     for (const fs::path& f : files) {
         s.records.push_back({f.string(), labelFor(f, baseDir)});
         if (s.records.size() > kMaxStudyRecords)
@@ -104,15 +110,15 @@ IntensityMeasure readIntensity(const JsonReader& top) {
     const auto r = top.optionalObject("intensity");
     if (!r) return im;
     const std::string m = r->text("measure", "pga");
-    if (m != "pga" && m != "sa") r->fail("measure", quotedToken(m) + ": must be pga or sa");
+    if (m != "pga" && m != "sa") badValue(*r, "measure", quotedToken(m), "must be pga or sa");
     if (m == "pga") return im;
     im.kind = IntensityMeasure::Kind::Sa;
     im.period = r->requiredNumber("period_s");
     im.damping = r->number("damping", im.damping);
     if (!(im.period >= 0.01 && im.period <= 20.0))
-        r->fail("period_s", formatDouble(im.period) + ": must be between 0.01 and 20 s");
+        badValue(*r, "period_s", formatDouble(im.period), "must be between 0.01 and 20 s");
     if (!(im.damping > 0.0 && im.damping < 1.0))
-        r->fail("damping", formatDouble(im.damping) + ": must be > 0 and < 1");
+        badValue(*r, "damping", formatDouble(im.damping), "must be > 0 and < 1");
     return im;
 }
 
@@ -127,8 +133,8 @@ std::vector<double> positiveList(const JsonReader& r, const std::string& key, do
                         std::to_string(kMaxStudyListValues));
     for (std::size_t i = 0; i < v.size(); ++i)
         if (!(v[i] > 0.0 && v[i] <= max))
-            r.fail(key + "[" + std::to_string(i) + "]",
-                   formatDouble(v[i]) + ": must be > 0 and at most " + formatDouble(max));
+            badValue(r, key + "[" + std::to_string(i) + "]", formatDouble(v[i]),
+                     "must be > 0 and at most " + formatDouble(max));
     return v;
 }
 
@@ -166,7 +172,7 @@ void readParameters(const JsonReader& top, StudySpec& s) {
     }
     s.limit = r.number("limit", s.limit);
     if (!(s.limit > 0.0 && s.limit <= 1e3))
-        r.fail("limit", formatDouble(s.limit) + ": must be > 0 and at most 1000");
+        badValue(r, "limit", formatDouble(s.limit), "must be > 0 and at most 1000");
     readFloors(r, s);
 }
 
@@ -193,11 +199,12 @@ StudySpec studyFromJsonText(const std::string& text, const std::string& baseDir)
         const JsonReader top(j, "");
         const std::string format = top.text("format", "");
         if (format != kStudyFormat)
-            top.fail("format", quotedToken(format) + ": must be \"" + kStudyFormat + "\"");
+            badValue(top, "format", quotedToken(format),
+                     std::string("must be \"") + kStudyFormat + "\"");
         const int version = top.integer("version", 0);
         if (version != kStudyVersion)
-            top.fail("version", std::to_string(version) + ": this kinstab reads version " +
-                                    std::to_string(kStudyVersion));
+            badValue(top, "version", std::to_string(version),
+                     "this kinstab reads version " + std::to_string(kStudyVersion));
         StudySpec s;
         s.name = top.text("name", "");
         if (s.name.size() > limits::kMaxNameChars)

@@ -147,7 +147,7 @@ private slots:
         QTest::newRow("mu") << QByteArray("\"parameters\": {\"mu\": [0.5, -1]}")
                             << QByteArray("parameters.mu[1] = -1");
         QTest::newRow("measure") << QByteArray("\"intensity\": {\"measure\": \"pgv\"}")
-                                 << QByteArray("intensity.measure: 'pgv'");
+                                 << QByteArray("intensity.measure = 'pgv'");
         QTest::newRow("sa period") << QByteArray("\"intensity\": {\"measure\": \"sa\"}")
                                    << QByteArray("intensity.period_s");
         QTest::newRow("floor") << QByteArray(
@@ -175,14 +175,14 @@ private slots:
             return r.code == 2 ? r.err : QByteArray("exit ") + QByteArray::number(r.code);
         };
         QVERIFY(err({"study", "--spec", writeSpec(d, "{\"format\": \"kinstab-project\"}")})
-                    .contains("format: 'kinstab-project'"));
+                    .contains("format = 'kinstab-project'"));
         QVERIFY(err({"study", "--spec",
                      writeSpec(d, studyWith("\"version\": 2").replace("\"version\": 1, ", ""))})
-                    .contains("version: 2"));
+                    .contains("version = 2"));
         QVERIFY(err({"study", "--spec",
                      writeSpec(d, "{\"format\": \"kinstab-study\", \"version\": 1, \"records\": "
                                   "[{\"path\": \"nowhere\"}]}")})
-                    .contains("records[0].path: 'nowhere': no such file or folder"));
+                    .contains("records[0].path = 'nowhere': no such file or folder"));
         QVERIFY(err({"study", "--spec", kSpec, "--shard", "3/2"}).contains("--shard '3/2'"));
         QVERIFY(err({"study", "--spec", kSpec, "--threads", "0"}).contains("--threads '0'"));
         writeBytes(d.filePath("broken.AT2"), "not a record\n");
