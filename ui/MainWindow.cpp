@@ -6,6 +6,7 @@
 #include "ui/FrictionPanel.h"
 #include "ui/NumericsView.h"
 #include "ui/RecordsTab.h"
+#include "ui/StudyTab.h"
 
 #include "core/codes/CodeSet.h"
 #include "core/io/ResultJson.h"
@@ -100,6 +101,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_friction = new FrictionPanel;
     m_centre->addTab(m_friction, tr("Friction"));
     m_centre->addTab(new FloorsView([this] { return project(); }), tr("Floors"));
+    m_centre->addTab(new StudyTab, tr("Study"));
     setCentralWidget(m_centre);
     buildActions();
     installHelpMenu(this);

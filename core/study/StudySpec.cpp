@@ -51,9 +51,12 @@ bool matchesAny(const std::vector<std::string>& globs, const std::string& name) 
     });
 }
 
-std::string labelFor(const fs::path& file, const std::string& baseDir) {
-    if (baseDir.empty()) return file.generic_string();
-    return file.lexically_relative(fs::absolute(baseDir)).generic_string();
+// The record's path as the study file writes it: under a folder, the folder as written joined with
+// the file's name; an absolute path stays absolute, a relative one relative to the study file.
+std::string labelFor(const fs::path& file, const fs::path& folder, const std::string& given) {
+    const fs::path written(given);
+    if (file == folder) return written.lexically_normal().generic_string();
+    return (written / file.lexically_relative(folder)).lexically_normal().generic_string();
 }
 
 // A folder's files whose names match include and none of exclude, sorted by name so that
@@ -89,7 +92,7 @@ void addRecords(const JsonReader& r, const std::string& baseDir, StudySpec& s) {
         badValue(r, "path", quotedToken(given), "no such file or folder");
     if (files.empty()) badValue(r, "path", quotedToken(given), "no record file matches");
     for (const fs::path& f : files) {
-        s.records.push_back({f.string(), labelFor(f, baseDir)});
+        s.records.push_back({f.string(), labelFor(f, path, given)});
         if (s.records.size() > kMaxStudyRecords)
             r.fail("path", "more than the limit of " + std::to_string(kMaxStudyRecords) +
                                " records in one study");

@@ -43,7 +43,7 @@ intensityName(const IntensityMeasure& im); // "pga", "sa(1s/5%)" (no comma: it i
 // One record of the suite, resolved to a file (folders are expanded when the study is read).
 struct StudyRecord {
     std::string file;  // absolute path
-    std::string label; // path relative to the study file's folder, as written in the rows
+    std::string label; // the path as the study file writes it (relative to it, or absolute)
 };
 
 struct FloorFilterChoice {
