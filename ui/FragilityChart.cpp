@@ -60,6 +60,8 @@ void fillFragilityChart(QChart* chart, const std::vector<Fragility>& sets) {
             if (f.fitted > 0)
                 series << line(f.curve, &FragilityCurvePoint::lower)
                        << line(f.curve, &FragilityCurvePoint::upper);
+        } else {
+            name += QObject::tr(" (no fit: %1)").arg(QString::fromStdString(f.noFit));
         }
         auto* points = new QScatterSeries;
         points->setMarkerSize(8);
@@ -79,12 +81,11 @@ void fillFragilityChart(QChart* chart, const std::vector<Fragility>& sets) {
             for (const QPointF& pt : s->points())
                 top = std::max(top, pt.x());
         }
-        // One legend entry per set: the fitted curve's (or the points' when there is no fit).
-        for (int k = 1; k < series.size(); ++k)
-            for (QLegendMarker* m : chart->legend()->markers(series[k]))
-                m->setVisible(false);
     }
-    x->setRange(0.0, top > 0.0 ? top : 1.0);
+    // One legend entry per set: the named series (the fitted curve, or the points without a fit).
+    for (QLegendMarker* m : chart->legend()->markers())
+        m->setVisible(!m->label().isEmpty());
+    x->setRange(0.0, top > 0.0 ? 1.05 * top : 1.0); // a margin: the last point is not on the edge
 }
 
 } // namespace kinstab::ui

@@ -245,7 +245,7 @@ void StudyTab::fillTable() {
                                    r.floorPeriod ? number(*r.floorPeriod) : tr("ground"),
                                    r.criticalIntensity
                                        ? number(*r.criticalIntensity)
-                                       : tr("none up to %1").arg(number(r.limitIntensity)),
+                                       : tr("none up to %1 g").arg(number(r.limitIntensity)),
                                    QString::number(r.runs)};
         for (int c = 0; c < cells.size(); ++c)
             m_table->setItem(i, c, new QTableWidgetItem(cells[c]));

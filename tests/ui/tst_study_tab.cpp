@@ -52,6 +52,20 @@ private slots:
         QVERIFY(p.waitForFinished(120000));
         QCOMPARE(p.exitCode(), 0);
         QCOMPARE(p.readAllStandardOutput(), QByteArray::fromStdString(tab.rows()));
+        // KINSTAB_SCREENSHOT_DIR=DIR saves a picture of the tab with its results, to look at.
+        if (const QString shots = qEnvironmentVariable("KINSTAB_SCREENSHOT_DIR");
+            !shots.isEmpty()) {
+            tab.resize(1100, 900);
+            tab.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&tab));
+            QVERIFY(tab.grab().save(shots + "/gui-study.png"));
+            tab.setRecordsFolder(KINSTAB_SOURCE_DIR "/resources/records", "*.AT2", "*UP*, *DWN*");
+            tab.setSearch(3.0, 0.02); // resources/examples/study-example.json
+            tab.run();
+            QVERIFY(done.wait(120000));
+            QTest::qWait(200); // the chart lays its legend out in the event loop
+            QVERIFY(tab.grab().save(shots + "/gui-study-example.png"));
+        }
         const QString out = dir.filePath("rows.jsonl");
         QVERIFY(tab.exportRows(out));
         QFile f(out);
