@@ -253,18 +253,16 @@ void StudyTab::fillTable() {
 }
 
 bool StudyTab::exportRows(const QString& path) {
-    try {
-        writeFileAtomically(path.toStdString(), m_rows);
-        return true;
-    } catch (const WriteError& e) {
-        m_status->setText(tr("Cannot export: %1").arg(e.what()));
-        return false;
-    }
+    return save(path, m_rows);
 }
 
 bool StudyTab::exportFragility(const QString& path) {
+    return save(path, fragilityJson(m_fragility, {}).dump(2) + "\n");
+}
+
+bool StudyTab::save(const QString& path, const std::string& text) {
     try {
-        writeFileAtomically(path.toStdString(), fragilityJson(m_fragility, {}).dump(2) + "\n");
+        writeFileAtomically(path.toStdString(), text);
         return true;
     } catch (const WriteError& e) {
         m_status->setText(tr("Cannot export: %1").arg(e.what()));

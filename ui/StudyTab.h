@@ -58,6 +58,7 @@ signals:
 private:
     void onFinished();
     void fillTable();
+    bool save(const QString& path, const std::string& text); // false: the reason in message()
 
     QLineEdit* m_folder;
     QLineEdit* m_include;
