@@ -30,6 +30,10 @@ StreamedOutput::StreamedOutput(const std::string& path) : path_(path) {
         if (fd_ < 0) fail(path, errno);
         return;
     }
+    // The mode an ordinary new file gets (0666 less the umask), or the one the target has.
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    mode_ = ::stat(path.c_str(), &st) == 0 ? (st.st_mode & 07777) : (0666 & ~mask);
     temp_ = path + ".partial-XXXXXX";
     std::vector<char> name(temp_.begin(), temp_.end());
     name.push_back('\0');
@@ -58,13 +62,12 @@ void StreamedOutput::write(std::string_view bytes) {
 
 void StreamedOutput::commit() {
     if (fd_ < 0) return;
-    if (!temp_.empty() && ::fsync(fd_) != 0) fail(path_, errno);
+    if (!temp_.empty() && (::fchmod(fd_, mode_) != 0 || ::fsync(fd_) != 0)) fail(path_, errno);
     const int closed = ::close(fd_);
     fd_ = -1;
     if (closed != 0) fail(path_, errno);
     if (temp_.empty()) return;
-    if (::chmod(temp_.c_str(), 0644) != 0 || std::rename(temp_.c_str(), path_.c_str()) != 0)
-        fail(path_, errno);
+    if (std::rename(temp_.c_str(), path_.c_str()) != 0) fail(path_, errno);
     temp_.clear();
 }
 

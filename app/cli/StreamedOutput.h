@@ -23,6 +23,7 @@ public:
 private:
     std::string path_, temp_;
     int fd_ = -1;
+    unsigned mode_ = 0644; // of the finished file
 };
 
 } // namespace kinstab::cli
