@@ -5,6 +5,7 @@
 #include "core/study/StudySpec.h"
 
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace kinstab {
@@ -40,7 +41,17 @@ template <class F> void forEachRow(const std::string& path, F&& f) {
 
 std::vector<StudyRow> readStudyRows(const std::string& path) {
     std::vector<StudyRow> rows;
-    forEachRow(path, [&](Line l) { rows.push_back(std::move(l.row)); });
+    std::set<std::size_t> seen;
+    forEachRow(path, [&](Line l) {
+        // One study's rows: the same size and intensity measure, each case once.
+        if (!rows.empty() &&
+            (l.row.cases != rows.front().cases || l.row.measure != rows.front().measure))
+            throw StudyRowError(l.where + ": a row of another study than line 1's");
+        if (!seen.insert(l.row.index).second)
+            throw StudyRowError(l.where + ": case " + std::to_string(l.row.index) +
+                                " appears twice");
+        rows.push_back(std::move(l.row));
+    });
     if (rows.empty()) throw StudyRowError(path + ": no rows");
     return rows;
 }

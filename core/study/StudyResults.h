@@ -10,8 +10,9 @@
 
 namespace kinstab {
 
-// Throws StudyRowError "FILE:LINE: message" for a line that is not a study row. Blank lines are
-// not allowed either: a study file is written whole.
+// Throws StudyRowError "FILE:LINE: message" for a line that is not a study row, a row of another
+// study (size or intensity measure) than the first, or a case given twice. Blank lines are not
+// allowed either: a study file is written whole.
 std::vector<StudyRow> readStudyRows(const std::string& path);
 
 // The lines of the shards in case order. Throws StudyRowError naming the file and line of a row

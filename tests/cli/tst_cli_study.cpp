@@ -194,6 +194,17 @@ private slots:
         QVERIFY(err({"fragility", "--results", d.filePath("rows.jsonl")}).contains("rows.jsonl:1"));
         QVERIFY(err({"merge", d.filePath("rows.jsonl"), "-o", "-"}).contains("rows.jsonl:1"));
         QVERIFY(err({"merge", "-o", "-"}).contains("no shards"));
+        // Rows of two studies, or a case twice, are not one study's results.
+        const QByteArray rows = readAll(dir_.filePath("all.jsonl"));
+        const QList<QByteArray> lines = rows.split('\n');
+        writeBytes(d.filePath("twice.jsonl"), lines[0] + "\n" + lines[0] + "\n");
+        QVERIFY(err({"fragility", "--results", d.filePath("twice.jsonl")})
+                    .contains("twice.jsonl:2: case 0 appears twice"));
+        QByteArray other = lines[1];
+        other.replace("\"cases\":12", "\"cases\":13");
+        writeBytes(d.filePath("mixed.jsonl"), lines[0] + "\n" + other + "\n");
+        QVERIFY(err({"fragility", "--results", d.filePath("mixed.jsonl")})
+                    .contains("mixed.jsonl:2: a row of another study"));
     }
 };
 
