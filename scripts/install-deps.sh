@@ -6,6 +6,7 @@ packages=(cmake g++ make qt6-base-dev qt6-charts-dev qt6-datavisualization-dev q
           qt6-svg-dev libqt6opengl6-dev libeigen3-dev nlohmann-json3-dev xvfb xauth libgl1-mesa-dri
           fonts-dejavu-core poppler-utils locales
           python3-dev pybind11-dev python3-pybind11 python3-pytest python3-numpy python3-matplotlib
+          parallel python3-dask python3-distributed  # studies: GNU parallel and Dask (docs/studies.md)
           dpkg-dev file desktop-file-utils appstream
           clang libclang-rt-14-dev)  # the Debian package and its validators
 missing=()

@@ -9,6 +9,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build=build-tsan
 cmake -S . -B "$build" -DKINSTAB_TSAN=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
-cmake --build "$build" -j"$(nproc)" --target tst_sweep
+cmake --build "$build" -j"$(nproc)" --target tst_sweep tst_study_runner
 export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$PWD/tests/tsan.supp"
 QT_QPA_PLATFORM=offscreen "$build/tests/tst_sweep"
+# The study runner's worker threads, its blocks of rows and its cancel (core/study/StudyRunner.cpp).
+QT_QPA_PLATFORM=offscreen "$build/tests/tst_study_runner"

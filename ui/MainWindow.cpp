@@ -7,6 +7,7 @@
 #include "ui/NumericsView.h"
 #include "ui/RecordPreview.h"
 #include "ui/RecordsTab.h"
+#include "ui/StudyTab.h"
 
 #include "core/codes/CodeSet.h"
 #include "core/io/ResultJson.h"
@@ -105,6 +106,7 @@ MainWindow::MainWindow(QWidget* parent)
     // In scroll areas: their minimum sizes must not grow the window past 1280×800.
     m_centre->addTab(scrollable(m_friction), tr("Friction"));
     m_centre->addTab(scrollable(new FloorsView([this] { return project(); })), tr("Floors"));
+    m_centre->addTab(scrollable(new StudyTab), tr("Study"));
     setCentralWidget(m_centre);
     buildActions();
     installHelpMenu(this);

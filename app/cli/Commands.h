@@ -21,6 +21,9 @@ int runReport(const ArgList& args);
 int runRecord(const ArgList& args);
 int runFriction(const ArgList& args);
 int runFloors(const ArgList& args);
+int runStudyCommand(const ArgList& args); // study (StudyCommand.cpp)
+int runMerge(const ArgList& args);
+int runFragility(const ArgList& args);
 
 class Args;
 // simulate --record FILE (SimulateRecord.cpp), called by runSimulate.

@@ -178,6 +178,30 @@ const char* kFloors =
 #undef KINSTAB_MODEL_FLAGS
 #undef KINSTAB_RECORD_FLAGS
 
+const char* kStudy =
+    "usage: kinstab-cli study --spec FILE.json [-o FILE.jsonl] [--shard K/N] [--threads N]\n"
+    "       kinstab-cli study --spec FILE.json --count\n"
+    "  --spec FILE                  the study: records x parameters (docs/studies.md)\n"
+    "  -o FILE                      JSONL results, one row per case [stdout]\n"
+    "  --shard K/N                  run only the cases whose index % N == K - 1 [1/1]\n"
+    "  --threads N                  worker threads [the CPUs of this process's affinity]\n"
+    "  --count                      print the number of cases and stop\n";
+
+const char* kMerge =
+    "usage: kinstab-cli merge SHARD.jsonl... [--list FILE] -o FILE.jsonl\n"
+    "  SHARD                        shard results of kinstab-cli study, any order\n"
+    "  --list FILE                  a file naming more shards, one per line\n"
+    "  -o FILE                      the merged results, as one unsharded run writes them\n";
+
+const char* kFragility =
+    "usage: kinstab-cli fragility --results FILE.jsonl [--format json|csv] [-o FILE]\n"
+    "  --results FILE               study results (JSONL), merged or one shard\n"
+    "  --format json|csv            fit, bounds, points and curve; or one line per set [json]\n"
+    "  --bootstrap N                bootstrap resamples over records for the bounds [1000]\n"
+    "  --seed S                     bootstrap seed [1]\n"
+    "  --level P                    two-sided confidence level of the bounds [0.9]\n"
+    "  -o FILE                      output file [stdout]\n";
+
 } // namespace
 
 const std::vector<CommandHelp>& commandHelps() {
@@ -193,6 +217,9 @@ const std::vector<CommandHelp>& commandHelps() {
         {"precision", "work-precision study of the solvers", kPrecision},
         {"bench", "time the solvers on a grid", kBench},
         {"floors", "floor motions, floor demands and critical PGA per level", kFloors},
+        {"study", "critical intensities of a record suite x parameters (JSONL)", kStudy},
+        {"merge", "merge the shards of a study into one results file", kMerge},
+        {"fragility", "lognormal collapse fragility from study results", kFragility},
     };
     return t;
 }

@@ -24,7 +24,8 @@ int main(int argc, char** argv) {
         {"simulate", runSimulate}, {"surface", runSurface},     {"critical", runCritical},
         {"bench", runBench},       {"precision", runPrecision}, {"record", runRecord},
         {"codes", runCodes},       {"check", runCheck},         {"friction", runFriction},
-        {"report", runReport},     {"floors", runFloors},
+        {"report", runReport},     {"floors", runFloors},       {"study", runStudyCommand},
+        {"merge", runMerge},       {"fragility", runFragility},
     };
     const std::string first = argc < 2 ? std::string() : argv[1];
     if (argc < 2 || first == "--help" || first == "-h") {

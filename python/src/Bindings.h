@@ -13,5 +13,6 @@ void bindCritical(pybind11::module_& m); // critical: A_crit(f)
 void bindRecords(pybind11::module_& m);  // read_record, floor_filter, simulate_record
 void bindCodes(pybind11::module_& m);    // codes: the building-code force ratios
 void bindFriction(pybind11::module_& m); // calibrate: the friction law of ch. III
+void bindStudy(pybind11::module_& m);    // study_case_count, study_rows (the Dask driver)
 
 } // namespace kinstab::python

@@ -14,4 +14,5 @@ PYBIND11_MODULE(_core, m) {
     kinstab::python::bindRecords(m);
     kinstab::python::bindCodes(m);
     kinstab::python::bindFriction(m);
+    kinstab::python::bindStudy(m);
 }

@@ -51,7 +51,8 @@ private slots:
     void overviewListsEveryCommand() {
         QCOMPARE(overviewCommands(),
                  QStringList({"simulate", "surface", "critical", "codes", "check", "report",
-                              "record", "friction", "precision", "bench", "floors"}));
+                              "record", "friction", "precision", "bench", "floors", "study",
+                              "merge", "fragility"}));
         QCOMPARE(cli({"-h"}).code, 0);
         QCOMPARE(cli({}).code, 2); // no command is bad input, with the overview on stdout
     }

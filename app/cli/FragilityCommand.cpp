@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// kinstab-cli fragility: lognormal collapse fragility per parameter set from study rows
+// (docs/studies.md).
+
+#include "app/cli/Args.h"
+#include "app/cli/Commands.h"
+#include "core/io/TextInput.h"
+#include "core/study/FragilityText.h"
+#include "core/study/StudyResults.h"
+
+namespace kinstab::cli {
+
+int runFragility(const ArgList& argv) {
+    const Args args(argv, {"results", "format", "bootstrap", "seed", "level", "o"});
+    const std::string results = args.text("results");
+    if (results.empty()) throw UsageError("missing required flag --results");
+    const std::string format = args.choice("format", {"json", "csv"}, "json");
+    BootstrapSettings b;
+    const std::string resamples = args.text("bootstrap", "1000");
+    const auto n = parseCount(resamples, 100'000);
+    if (!n) throw UsageError("--bootstrap " + quotedToken(resamples) + ": must be 0 to 100000");
+    b.resamples = *n;
+    const std::string seed = args.text("seed", "1");
+    const auto s = parseCount(seed, 1'000'000'000'000ull);
+    if (!s) throw UsageError("--seed " + quotedToken(seed) + ": must be a whole number >= 0");
+    b.seed = *s;
+    b.level = args.number("level", 0.90);
+    if (!(b.level > 0.0 && b.level < 1.0))
+        throw UsageError("--level " + args.text("level") + ": must be > 0 and < 1");
+    if (const auto o = args.optionalText("o")) checkOutputPath("o", *o);
+    std::vector<StudyRow> rows;
+    try {
+        rows = readStudyRows(results);
+    } catch (const StudyRowError& e) {
+        throw UsageError("--results " + std::string(e.what()));
+    }
+    const std::vector<Fragility> sets = studyFragility(rows, b);
+    std::string text;
+    if (format == "csv") {
+        text = fragilityCsv(sets);
+    } else {
+        nlohmann::ordered_json j = fragilityJson(sets, b);
+        j["kinstab_version"] = KINSTAB_VERSION; // as jsonText does for every JSON output
+        text = j.dump(2) + "\n";
+    }
+    writeOutput(args, "o", text);
+    return 0;
+}
+
+} // namespace kinstab::cli

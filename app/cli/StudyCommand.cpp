@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// kinstab-cli study: the cases of a study file (or of one shard of it) as JSONL rows
+// (docs/studies.md).
+
+#include "app/cli/Args.h"
+#include "app/cli/Commands.h"
+#include "app/cli/StreamedOutput.h"
+#include "core/io/AtomicFile.h"
+#include "core/io/TextInput.h"
+#include "core/study/CpuAffinity.h"
+#include "core/study/StudyRunner.h"
+
+#include <iostream>
+
+namespace kinstab::cli {
+
+namespace {
+
+// Worker threads: the CPUs this process may use (a Slurm allocation, taskset) unless told.
+unsigned threadCount(const Args& args) {
+    if (!args.has("threads")) return allowedCpuCount();
+    const std::string t = args.text("threads");
+    const auto n = parseCount(t, 1024);
+    if (!n || *n < 1) throw UsageError("--threads " + quotedToken(t) + ": must be 1 to 1024");
+    return static_cast<unsigned>(*n);
+}
+
+Shard shardOf(const Args& args) {
+    if (!args.has("shard")) return {};
+    const std::string t = args.text("shard");
+    const auto s = parseShard(t);
+    if (!s) throw UsageError("--shard " + quotedToken(t) + ": must be K/N with 1 <= K <= N");
+    return *s;
+}
+
+} // namespace
+
+int runStudyCommand(const ArgList& argv) {
+    const Args args(argv, {"spec", "o", "shard", "threads"}, {"count"});
+    const std::string specPath = args.text("spec");
+    if (specPath.empty()) throw UsageError("missing required flag --spec");
+    StudyRunOptions options;
+    options.shard = shardOf(args);
+    options.threads = threadCount(args);
+    if (const auto o = args.optionalText("o")) checkOutputPath("o", *o);
+    StudySpec spec;
+    try {
+        spec = loadStudy(specPath);
+        if (args.has("count")) {
+            writeStandardOutput(std::to_string(studyCaseCount(spec)) + "\n");
+            return 0;
+        }
+        checkStudyRecords(spec);
+    } catch (const StudyError& e) {
+        throw UsageError("--spec " + specPath + ": " + e.what());
+    }
+    StreamedOutput out(args.text("o", "-"));
+    runStudy(spec, options, [&out](const std::string& rows) { out.write(rows); });
+    out.commit();
+    return 0;
+}
+
+} // namespace kinstab::cli

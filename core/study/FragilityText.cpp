@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/study/FragilityText.h"
+
+#include "core/io/TextInput.h"
+
+namespace kinstab {
+
+using ojson = nlohmann::ordered_json;
+
+namespace {
+
+ojson orNull(const std::optional<double>& v) {
+    return v ? ojson(*v) : ojson();
+}
+
+ojson setJson(const Fragility& f) {
+    const StudyRow& p = f.parameters;
+    ojson j = {{"set", p.set},
+               {"mu", p.mu},
+               {"tstar", p.tstar},
+               {"limit", p.limit},
+               {"floor_period_s", orNull(p.floorPeriod)},
+               {"floor_damping", orNull(p.floorDamping)},
+               {"records", f.records},
+               {"collapsed", f.collapsed}};
+    if (f.fit) {
+        j["median_g"] = f.fit->median;
+        j["beta"] = f.fit->beta;
+        j["log_likelihood"] = f.fit->logLikelihood;
+        if (f.fitted > 0) {
+            j["median_bounds_g"] = {f.medianLower, f.medianUpper};
+            j["beta_bounds"] = {f.betaLower, f.betaUpper};
+        }
+        j["bootstrap_fitted"] = f.fitted;
+    } else {
+        j["no_fit"] = f.noFit;
+    }
+    ojson points = ojson::array();
+    for (const auto& pt : f.points)
+        points.push_back({{"record", pt.record}, {"im_g", pt.intensity}, {"p", pt.probability}});
+    j["points"] = points;
+    ojson curve = ojson::array();
+    for (const auto& c : f.curve)
+        curve.push_back({{"im_g", c.intensity},
+                         {"p", c.probability},
+                         {"p_lower", c.lower},
+                         {"p_upper", c.upper}});
+    j["curve"] = curve;
+    return j;
+}
+
+std::string cell(const std::optional<double>& v) {
+    return v ? formatDouble(*v) : std::string();
+}
+
+} // namespace
+
+ojson fragilityJson(const std::vector<Fragility>& sets, const BootstrapSettings& b) {
+    ojson all = ojson::array();
+    for (const Fragility& f : sets)
+        all.push_back(setJson(f));
+    return {{"measure", sets.empty() ? std::string() : sets.front().parameters.measure},
+            {"bootstrap", {{"resamples", b.resamples}, {"seed", b.seed}, {"level", b.level}}},
+            {"sets", all}};
+}
+
+std::string fragilityCsv(const std::vector<Fragility>& sets) {
+    std::string out = "set,mu,tstar,limit,floor_period_s,floor_damping,measure,records,collapsed,"
+                      "median_g,beta,median_lower_g,median_upper_g,beta_lower,beta_upper\n";
+    for (const Fragility& f : sets) {
+        const StudyRow& p = f.parameters;
+        const bool bounds = f.fit && f.fitted > 0;
+        auto opt = [](bool has, double v) { return has ? std::optional(v) : std::nullopt; };
+        out += std::to_string(p.set) + "," + formatDouble(p.mu) + "," + formatDouble(p.tstar) +
+               "," + formatDouble(p.limit) + "," + cell(p.floorPeriod) + "," +
+               cell(p.floorDamping) + "," + p.measure + "," + std::to_string(f.records) + "," +
+               std::to_string(f.collapsed) + "," +
+               cell(opt(f.fit.has_value(), f.fit ? f.fit->median : 0)) + "," +
+               cell(opt(f.fit.has_value(), f.fit ? f.fit->beta : 0)) + "," +
+               cell(opt(bounds, f.medianLower)) + "," + cell(opt(bounds, f.medianUpper)) + "," +
+               cell(opt(bounds, f.betaLower)) + "," + cell(opt(bounds, f.betaUpper)) + "\n";
+    }
+    return out;
+}
+
+} // namespace kinstab

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The cases of a study in their fixed order (docs/studies.md): parameter sets (mu, then t*, then
+// the floor filter, the last varying fastest) on the outside, records inside, so that the records
+// of one parameter set - one fragility curve - are neighbours. A case is found from its index
+// alone: no list of cases is ever built, so a study of millions of cases takes no memory for it.
+
+#include "core/study/StudySpec.h"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+
+namespace kinstab {
+
+struct StudyCase {
+    std::size_t index = 0; // 0-based position in the study
+    std::size_t set = 0;   // parameter set (index / records)
+    const StudyRecord* record = nullptr;
+    double mu = 0, tstar = 0;
+    std::optional<FloorFilterChoice> floor;
+};
+
+std::size_t studyCaseCount(const StudySpec& s);
+std::size_t studyParameterSets(const StudySpec& s);
+StudyCase studyCase(const StudySpec& s, std::size_t index); // index < studyCaseCount
+
+// A shard K of N (1-based) takes every case whose index % N == K - 1: round-robin spreads the
+// slow records and high limits evenly over the shards.
+struct Shard {
+    std::size_t k = 1, n = 1;
+    bool owns(std::size_t index) const { return index % n == k - 1; }
+};
+// "K/N" with 1 <= K <= N <= kMaxStudyCases; nothing on any other text.
+std::optional<Shard> parseShard(const std::string& text);
+
+} // namespace kinstab

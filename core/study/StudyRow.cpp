@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/study/StudyRow.h"
+
+#include <nlohmann/json.hpp>
+
+namespace kinstab {
+
+using ojson = nlohmann::ordered_json;
+
+namespace {
+ojson orNull(const std::optional<double>& v) {
+    return v ? ojson(*v) : ojson();
+}
+
+double number(const nlohmann::json& j, const char* key) {
+    if (!j.contains(key) || !j[key].is_number())
+        throw StudyRowError(std::string("\"") + key + "\": expected a number");
+    return j[key].get<double>();
+}
+
+std::optional<double> optionalNumber(const nlohmann::json& j, const char* key) {
+    if (!j.contains(key) || j[key].is_null()) return std::nullopt;
+    return number(j, key);
+}
+
+std::size_t count(const nlohmann::json& j, const char* key) {
+    if (!j.contains(key) || !j[key].is_number_unsigned())
+        throw StudyRowError(std::string("\"") + key + "\": expected a count");
+    return j[key].get<std::size_t>();
+}
+
+std::string text(const nlohmann::json& j, const char* key) {
+    if (!j.contains(key) || !j[key].is_string())
+        throw StudyRowError(std::string("\"") + key + "\": expected a string");
+    return j[key].get<std::string>();
+}
+} // namespace
+
+// nlohmann's dump writes the shortest text that reads back as the same double, in the C
+// locale's syntax whatever the process locale: the same bytes on every machine and rerun.
+std::string studyRowLine(const StudyRow& r) {
+    ojson j = {{"case", r.index},
+               {"cases", r.cases},
+               {"set", r.set},
+               {"record", r.record},
+               {"mu", r.mu},
+               {"tstar", r.tstar},
+               {"limit", r.limit},
+               {"floor_period_s", orNull(r.floorPeriod)},
+               {"floor_damping", orNull(r.floorDamping)},
+               {"measure", r.measure},
+               {"record_im_g", r.recordIntensity},
+               {"critical_im_g", orNull(r.criticalIntensity)},
+               {"critical_peak_g", orNull(r.criticalPeak)},
+               {"limit_im_g", r.limitIntensity},
+               {"runs", r.runs}};
+    return j.dump();
+}
+
+StudyRow parseStudyRow(const std::string& line) {
+    const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+    if (j.is_discarded() || !j.is_object()) throw StudyRowError("not a JSON object");
+    StudyRow r;
+    r.index = count(j, "case");
+    r.cases = count(j, "cases");
+    r.set = count(j, "set");
+    r.record = text(j, "record");
+    r.mu = number(j, "mu");
+    r.tstar = number(j, "tstar");
+    r.limit = number(j, "limit");
+    r.floorPeriod = optionalNumber(j, "floor_period_s");
+    r.floorDamping = optionalNumber(j, "floor_damping");
+    r.measure = text(j, "measure");
+    r.recordIntensity = number(j, "record_im_g");
+    r.criticalIntensity = optionalNumber(j, "critical_im_g");
+    r.criticalPeak = optionalNumber(j, "critical_peak_g");
+    r.limitIntensity = number(j, "limit_im_g");
+    r.runs = static_cast<long>(count(j, "runs"));
+    if (r.index >= r.cases) throw StudyRowError("\"case\": not below \"cases\"");
+    return r;
+}
+
+} // namespace kinstab

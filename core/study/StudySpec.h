@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// A study (docs/studies.md): a suite of records crossed with lists of slab and floor parameters,
+// each case asking for the intensity at which the record, scaled, first collapses the slab.
+// The study file is versioned JSON ({"format": "kinstab-study", "version": 1, ...}); every
+// bad field is a StudyError naming it ("parameters.mu[2] = -1: must be > 0").
+
+#include "core/sweep/CriticalAmplitude.h"
+
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace kinstab {
+
+struct StudyError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+inline constexpr const char* kStudyFormat = "kinstab-study";
+inline constexpr int kStudyVersion = 1;
+
+// Sizes a study file may ask for: 10,000 records is several complete strong-motion databases;
+// 1,000 values of one parameter is finer than any design question; ten million cases keeps the
+// case index exact and a study a matter of cluster-days, not years.
+inline constexpr std::size_t kMaxStudyRecords = 10'000;
+inline constexpr std::size_t kMaxStudyListValues = 1'000;
+inline constexpr std::size_t kMaxStudyCases = 10'000'000;
+
+// The intensity measure a critical scale is expressed in: the peak ground acceleration of the
+// record, or its 5 %-damped spectral acceleration at a period (peak absolute acceleration of a
+// linear oscillator on the ground record, Nigam & Jennings 1969).
+struct IntensityMeasure {
+    enum class Kind { Pga, Sa } kind = Kind::Pga;
+    double period = 1.0;   // s, Sa only
+    double damping = 0.05; // Sa only
+};
+std::string
+intensityName(const IntensityMeasure& im); // "pga", "sa(1s/5%)" (no comma: it is a CSV cell)
+
+// One record of the suite, resolved to a file (folders are expanded when the study is read).
+struct StudyRecord {
+    std::string file;  // absolute path
+    std::string label; // the path as the study file writes it (relative to it, or absolute)
+};
+
+struct FloorFilterChoice {
+    double period = 1.0; // s
+    double damping = 0.02;
+};
+
+struct StudySpec {
+    std::string name;
+    std::vector<StudyRecord> records; // in the order of the file, folders sorted by name
+    IntensityMeasure intensity;
+    std::vector<double> mu;
+    std::vector<double> tstar;                            // s (from wall_width_in when given)
+    std::vector<std::optional<FloorFilterChoice>> floors; // none: the record drives the slab
+    double limit = 1.0;                                   // slab.limit, bearing length / (d/2)
+    CriticalSearch search;
+};
+
+// Throws StudyError naming the field; baseDir resolves relative record paths.
+StudySpec studyFromJsonText(const std::string& text, const std::string& baseDir);
+StudySpec loadStudy(const std::string& path); // throws StudyError
+
+} // namespace kinstab

@@ -1,0 +1,212 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// kinstab-cli study, merge and fragility (docs/studies.md), run as a user would:
+//  - the rows are the same bytes on 1 and 2 threads, and shards merged in any order are the
+//    same bytes as the unsharded run;
+//  - GNU parallel running the shards and the merge (examples/parallel/run-study.sh) gives the
+//    same bytes; the Slurm scripts in examples/slurm pass bash -n;
+//  - each row names its inputs and its critical intensity (or is censored at the limit);
+//  - a bad study file, shard or results file is exit 2 with the field named.
+
+#include "CliRun.h"
+#include "FileBytes.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QtTest>
+
+namespace {
+
+const QString kSpec = QStringLiteral(KINSTAB_TEST_DATA "/study/small-study.json");
+
+QString writeSpec(const QTemporaryDir& dir, const QByteArray& text) {
+    const QString path = dir.filePath("bad.json");
+    writeBytes(path, text);
+    return path;
+}
+
+// A minimal valid study whose one key is replaced by `patch` (a JSON member text).
+QByteArray studyWith(const QByteArray& patch) {
+    const QByteArray records = "\"records\": [{\"path\": \"" KINSTAB_SOURCE_DIR
+                               "/resources/records/RSN6_IMPVALL.I_I-ELC180.AT2\"}]";
+    return "{\"format\": \"kinstab-study\", \"version\": 1, " + records + ", " + patch + "}";
+}
+
+} // namespace
+
+class TestCliStudy : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+    QByteArray whole_;
+
+private slots:
+    void initTestCase() {
+        QVERIFY(dir_.isValid());
+        const Run r =
+            cli({"study", "--spec", kSpec, "--threads", "1", "-o", dir_.filePath("all.jsonl")});
+        QVERIFY2(r.code == 0, r.err);
+        whole_ = readAll(dir_.filePath("all.jsonl"));
+    }
+    void countsTheCases() {
+        // 3 records (ELC180, PEL090, PEL180) x 2 mu x 1 t* x (ground + one floor filter).
+        const Run r = cli({"study", "--spec", kSpec, "--count"});
+        QCOMPARE(r.code, 0);
+        QCOMPARE(r.out, QByteArray("12\n"));
+        QCOMPARE(whole_.count('\n'), 12);
+    }
+    void rowsNameTheirInputs() {
+        const QList<QByteArray> lines = whole_.trimmed().split('\n');
+        const QJsonObject first = QJsonDocument::fromJson(lines[0]).object();
+        QCOMPARE(first["case"].toInt(), 0);
+        QCOMPARE(first["cases"].toInt(), 12);
+        QCOMPARE(first["record"].toString(),
+                 QString("../../../resources/records/RSN6_IMPVALL.I_I-ELC180.AT2"));
+        QCOMPARE(first["mu"].toDouble(), 0.5);
+        QVERIFY(first["floor_period_s"].isNull()); // ground first, then the floor filter
+        QCOMPARE(first["measure"].toString(), QString("sa(0.5s/5%)"));
+        const QJsonObject fourth = QJsonDocument::fromJson(lines[3]).object();
+        QCOMPARE(fourth["floor_period_s"].toDouble(), 0.5);
+        QCOMPARE(fourth["set"].toInt(), 1);
+        QVERIFY(!whole_.contains("seconds")); // no timing: reruns are the same bytes
+        for (const QByteArray& l : lines) {
+            const QJsonObject o = QJsonDocument::fromJson(l).object();
+            const double perPeak = o["record_im_g"].toDouble() / 1.0;
+            QVERIFY(perPeak > 0);
+            if (o["critical_im_g"].isNull()) continue;
+            // The slab cannot slip below mu: the critical peak of the driving motion is >= mu.
+            QVERIFY(o["critical_peak_g"].toDouble() >= o["mu"].toDouble());
+            QVERIFY(o["critical_im_g"].toDouble() <= o["limit_im_g"].toDouble());
+        }
+    }
+    void threadsDoNotChangeTheBytes() {
+        const Run r = cli({"study", "--spec", kSpec, "--threads", "2"});
+        QVERIFY2(r.code == 0, r.err);
+        QCOMPARE(r.out, whole_);
+    }
+    void shardsMergeToTheUnshardedRun() {
+        QStringList shards;
+        for (int k = 1; k <= 5; ++k) {
+            const QString out = dir_.filePath(QString("shard-%1.jsonl").arg(k));
+            const Run r = cli({"study", "--spec", kSpec, "--shard", QString("%1/5").arg(k),
+                               "--threads", "1", "-o", out});
+            QVERIFY2(r.code == 0, r.err);
+            shards.prepend(out); // any order
+        }
+        const QString merged = dir_.filePath("merged.jsonl");
+        const Run m = cli(QStringList{"merge"} + shards + QStringList{"-o", merged});
+        QVERIFY2(m.code == 0, m.err);
+        QCOMPARE(readAll(merged), whole_);
+        // A missing shard is named; a shard given twice repeats its cases.
+        const Run missing = cli({"merge", shards[0], shards[1], "-o", "-"});
+        QCOMPARE(missing.code, 2);
+        QVERIFY2(missing.err.contains("is in none of the shards"), missing.err);
+        const Run twice = cli(QStringList{"merge"} + shards + QStringList{shards[0], "-o", "-"});
+        QCOMPARE(twice.code, 2);
+        QVERIFY2(twice.err.contains("appears twice"), twice.err);
+    }
+    void gnuParallelRunsTheShards() {
+        if (QStandardPaths::findExecutable("parallel").isEmpty())
+            QSKIP("GNU parallel is not installed (scripts/install-deps.sh installs it)");
+        const QString out = dir_.filePath("parallel.jsonl");
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("KINSTAB_CLI", KINSTAB_CLI);
+        env.insert("HOME", dir_.path()); // parallel keeps its notes under $HOME/.parallel
+        p.setProcessEnvironment(env);
+        p.start("bash", {KINSTAB_SOURCE_DIR "/examples/parallel/run-study.sh", kSpec, out, "3"});
+        QVERIFY(p.waitForFinished(300000));
+        QVERIFY2(p.exitCode() == 0, p.readAllStandardError());
+        QCOMPARE(readAll(out), whole_);
+    }
+    void slurmScriptsAreValidBash() {
+        for (const char* f : {"study-array.sbatch", "submit-study.sh"}) {
+            const Run r = run("bash", {"-n", QString(KINSTAB_SOURCE_DIR "/examples/slurm/") + f});
+            QVERIFY2(r.code == 0, r.err);
+        }
+    }
+    void fragilityOfTheResults() {
+        const QString all = dir_.filePath("all.jsonl");
+        const Run j = cli({"fragility", "--results", all, "--bootstrap", "50"});
+        QVERIFY2(j.code == 0, j.err);
+        const QJsonObject o = QJsonDocument::fromJson(j.out).object();
+        QCOMPARE(o["measure"].toString(), QString("sa(0.5s/5%)"));
+        QCOMPARE(o["sets"].toArray().size(), 4);
+        const Run again = cli({"fragility", "--results", all, "--bootstrap", "50"});
+        QCOMPARE(again.out, j.out); // seeded
+        const Run csv =
+            cli({"fragility", "--results", all, "--format", "csv", "--bootstrap", "50"});
+        QVERIFY2(csv.code == 0, csv.err);
+        QCOMPARE(csv.out.count('\n'), 5);
+        QVERIFY(csv.out.startsWith("set,mu,tstar,"));
+    }
+    void badInputNamesTheField_data() {
+        QTest::addColumn<QByteArray>("patch");
+        QTest::addColumn<QByteArray>("named");
+        QTest::newRow("mu") << QByteArray("\"parameters\": {\"mu\": [0.5, -1]}")
+                            << QByteArray("parameters.mu[1] = -1");
+        QTest::newRow("measure") << QByteArray("\"intensity\": {\"measure\": \"pgv\"}")
+                                 << QByteArray("intensity.measure = 'pgv'");
+        QTest::newRow("sa period") << QByteArray("\"intensity\": {\"measure\": \"sa\"}")
+                                   << QByteArray("intensity.period_s");
+        QTest::newRow("floor") << QByteArray(
+                                      "\"parameters\": {\"floor_filter\": {\"dampings\": [0.02]}}")
+                               << QByteArray("parameters.floor_filter.periods_s");
+        QTest::newRow("search") << QByteArray("\"search\": {\"scan_step_g\": 0}")
+                                << QByteArray("search");
+        QTest::newRow("tstar and wall")
+            << QByteArray("\"parameters\": {\"tstar\": [0.1], \"wall_width_in\": [8]}")
+            << QByteArray("parameters.tstar");
+    }
+    void badInputNamesTheField() {
+        QFETCH(QByteArray, patch);
+        QFETCH(QByteArray, named);
+        QTemporaryDir d;
+        const Run r = cli({"study", "--spec", writeSpec(d, studyWith(patch))});
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains(named), r.err);
+        QVERIFY(r.out.isEmpty());
+    }
+    void badFilesAndFlags() {
+        QTemporaryDir d;
+        const auto err = [&](const QStringList& args) {
+            const Run r = cli(args);
+            return r.code == 2 ? r.err : QByteArray("exit ") + QByteArray::number(r.code);
+        };
+        QVERIFY(err({"study", "--spec", writeSpec(d, "{\"format\": \"kinstab-project\"}")})
+                    .contains("format = 'kinstab-project'"));
+        QVERIFY(err({"study", "--spec",
+                     writeSpec(d, studyWith("\"version\": 2").replace("\"version\": 1, ", ""))})
+                    .contains("version = 2"));
+        QVERIFY(err({"study", "--spec",
+                     writeSpec(d, "{\"format\": \"kinstab-study\", \"version\": 1, \"records\": "
+                                  "[{\"path\": \"nowhere\"}]}")})
+                    .contains("records[0].path = 'nowhere': no such file or folder"));
+        QVERIFY(err({"study", "--spec", kSpec, "--shard", "3/2"}).contains("--shard '3/2'"));
+        QVERIFY(err({"study", "--spec", kSpec, "--threads", "0"}).contains("--threads '0'"));
+        writeBytes(d.filePath("broken.AT2"), "not a record\n");
+        QVERIFY(err({"study", "--spec",
+                     writeSpec(d, "{\"format\": \"kinstab-study\", \"version\": 1, \"records\": "
+                                  "[{\"path\": \"broken.AT2\"}]}")})
+                    .contains("broken.AT2"));
+        writeBytes(d.filePath("rows.jsonl"), "{\"case\": 0}\n");
+        QVERIFY(err({"fragility", "--results", d.filePath("rows.jsonl")}).contains("rows.jsonl:1"));
+        QVERIFY(err({"merge", d.filePath("rows.jsonl"), "-o", "-"}).contains("rows.jsonl:1"));
+        QVERIFY(err({"merge", "-o", "-"}).contains("no shards"));
+        // Rows of two studies, or a case twice, are not one study's results.
+        const QByteArray rows = readAll(dir_.filePath("all.jsonl"));
+        const QList<QByteArray> lines = rows.split('\n');
+        writeBytes(d.filePath("twice.jsonl"), lines[0] + "\n" + lines[0] + "\n");
+        QVERIFY(err({"fragility", "--results", d.filePath("twice.jsonl")})
+                    .contains("twice.jsonl:2: case 0 appears twice"));
+        QByteArray other = lines[1];
+        other.replace("\"cases\":12", "\"cases\":13");
+        writeBytes(d.filePath("mixed.jsonl"), lines[0] + "\n" + other + "\n");
+        QVERIFY(err({"fragility", "--results", d.filePath("mixed.jsonl")})
+                    .contains("mixed.jsonl:2: a row of another study"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliStudy)
+#include "tst_cli_study.moc"

@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The lognormal collapse fragility of a study (docs/studies.md):
+//  - without censoring the maximum-likelihood fit has a closed form: the median is exp(mean of
+//    ln x) and beta the standard deviation of ln x with divisor n;
+//  - with censored records it agrees with a brute-force maximization of the same likelihood
+//    over a grid, refined around the best cell;
+//  - a synthetic suite drawn at the quantiles of a known lognormal (median 0.8 g, beta 0.4),
+//    censored at 1.2 g, gives back its median and beta;
+//  - the seeded bootstrap is reproducible and its bounds bracket the fit;
+//  - the empirical points count the censored records in the total.
+
+#include "core/study/Fragility.h"
+#include "core/study/LognormalFit.h"
+
+#include <QtTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace kinstab;
+
+namespace {
+
+// Phi^-1(p) by bisection on the normal CDF (independent of the code under test).
+double normalQuantile(double p) {
+    double lo = -10, hi = 10;
+    for (int i = 0; i < 200; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (0.5 * std::erfc(-mid / std::numbers::sqrt2) < p ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+struct Best {
+    double m, beta, ll;
+};
+
+// Brute force: the best cell of an n x n grid, then the grid shrunk around it, ten times.
+Best bruteForce(const CensoredSample& s, double m0, double m1, double b0, double b1) {
+    Best best{0, 0, -INFINITY};
+    const int n = 60;
+    for (int round = 0; round < 10; ++round) {
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n; ++j) {
+                const double m = m0 + (m1 - m0) * i / n, b = b0 + (b1 - b0) * j / n;
+                const double ll = lognormalLogLikelihood(s, m, b);
+                if (ll > best.ll) best = {m, b, ll};
+            }
+        const double dm = 2 * (m1 - m0) / n, db = 2 * (b1 - b0) / n;
+        m0 = best.m - dm, m1 = best.m + dm;
+        b0 = std::max(1e-3, best.beta - db), b1 = best.beta + db;
+    }
+    return best;
+}
+
+StudyRow row(std::size_t index, double critical, double limitIm) {
+    StudyRow r;
+    r.index = index;
+    r.record = "r" + std::to_string(index);
+    if (critical > 0) r.criticalIntensity = critical;
+    r.limitIntensity = limitIm;
+    return r;
+}
+
+} // namespace
+
+class TestStudyFragility : public QObject {
+    Q_OBJECT
+private slots:
+    void noCensoringIsTheSampleMeanAndDeviationOfLogs() {
+        const CensoredSample s{{0.31, 0.45, 0.52, 0.60, 0.77, 1.10, 1.42}, {}};
+        double mean = 0, var = 0;
+        for (double x : s.collapsed)
+            mean += std::log(x) / 7.0;
+        for (double x : s.collapsed)
+            var += std::pow(std::log(x) - mean, 2) / 7.0;
+        const auto f = fitLognormal(s);
+        QVERIFY(f);
+        QVERIFY2(std::abs(std::log(f->median) - mean) < 1e-7,
+                 qPrintable(QString::number(f->median)));
+        QVERIFY2(std::abs(f->beta - std::sqrt(var)) < 1e-7, qPrintable(QString::number(f->beta)));
+    }
+    void censoredFitIsTheLikelihoodMaximum() {
+        // Four records do not collapse up to the search limit (their limit intensities differ,
+        // as the unscaled records' peaks do).
+        const CensoredSample s{{0.42, 0.55, 0.58, 0.71, 0.93, 1.05}, {1.1, 1.2, 1.2, 1.4}};
+        const auto f = fitLognormal(s);
+        QVERIFY(f);
+        const Best b = bruteForce(s, -3, 3, 0.01, 3);
+        QVERIFY2(std::abs(std::log(f->median) - b.m) < 1e-6,
+                 qPrintable(QString("%1 vs %2").arg(std::log(f->median)).arg(b.m)));
+        QVERIFY2(std::abs(f->beta - b.beta) < 1e-6,
+                 qPrintable(QString("%1 vs %2").arg(f->beta).arg(b.beta)));
+        QVERIFY(f->logLikelihood >= b.ll - 1e-9);
+        // Censoring moves the median up: the uncensored fit of the collapses alone is lower.
+        QVERIFY(f->median > fitLognormal({s.collapsed, {}})->median);
+    }
+    void syntheticSuiteRecoversMedianAndBeta() {
+        const double median = 0.8, beta = 0.4, limit = 1.2;
+        const int n = 4000;
+        CensoredSample s;
+        for (int i = 1; i <= n; ++i) {
+            const double x = median * std::exp(beta * normalQuantile((i - 0.5) / n));
+            (x <= limit ? s.collapsed : s.censored).push_back(x <= limit ? x : limit);
+        }
+        QVERIFY(s.censored.size() > 500); // a real share is censored (P(x > 1.2) = 0.156)
+        const auto f = fitLognormal(s);
+        QVERIFY(f);
+        // Quantile points, not a random draw: the only error is the discreteness of n points.
+        QVERIFY2(std::abs(f->median / median - 1) < 2e-3, qPrintable(QString::number(f->median)));
+        QVERIFY2(std::abs(f->beta / beta - 1) < 5e-3, qPrintable(QString::number(f->beta)));
+    }
+    void noFitWithoutTwoCollapses() {
+        std::string why;
+        QVERIFY(!fitLognormal({{0.5}, {1.0, 1.0}}, &why));
+        QVERIFY(why.find("two distinct") != std::string::npos);
+        QVERIFY(!fitLognormal({{0.5, 0.5}, {}}, &why));
+        QVERIFY(!fitLognormal({{0.5, 0.6}, {-1.0}}, &why));
+    }
+    void bootstrapIsSeededAndBracketsTheFit() {
+        std::vector<StudyRow> rows;
+        const double crit[] = {0.42, 0.55, 0.58, 0.71, 0.93, 1.05, 0.66, 0.81, 0, 0};
+        for (std::size_t i = 0; i < 10; ++i)
+            rows.push_back(row(i, crit[i], 1.3));
+        const BootstrapSettings b{400, 7, 0.9};
+        const Fragility f = fragilityOf(rows, b);
+        QVERIFY(f.fit);
+        QCOMPARE(f.records, std::size_t(10));
+        QCOMPARE(f.collapsed, std::size_t(8));
+        QVERIFY(f.fitted > 350); // a resample with < 2 distinct collapses has no fit
+        QVERIFY(f.medianLower < f.fit->median && f.fit->median < f.medianUpper);
+        QVERIFY(f.betaLower < f.fit->beta && f.fit->beta < f.betaUpper);
+        const Fragility again = fragilityOf(rows, b);
+        QCOMPARE(again.medianLower, f.medianLower);
+        QCOMPARE(again.betaUpper, f.betaUpper);
+        const Fragility other = fragilityOf(rows, {400, 8, 0.9});
+        QVERIFY(other.medianLower != f.medianLower);
+        for (const auto& c : f.curve)
+            QVERIFY(0 <= c.lower && c.lower <= c.upper && c.upper <= 1);
+        // Empirical points: 8 collapses of 10 records, the last at 8/10.
+        QCOMPARE(f.points.size(), std::size_t(8));
+        QCOMPARE(f.points.front().intensity, 0.42);
+        QCOMPARE(f.points.back().probability, 0.8);
+    }
+    void setsAreGroupedInOrder() {
+        std::vector<StudyRow> rows;
+        for (std::size_t i = 0; i < 6; ++i) {
+            StudyRow r = row(i, 0.4 + 0.1 * double(i % 3) + 0.01 * double(i), 2.0);
+            r.set = i / 3;
+            rows.push_back(r);
+        }
+        const auto sets = studyFragility(rows, {50, 1, 0.9});
+        QCOMPARE(sets.size(), std::size_t(2));
+        QCOMPARE(sets[1].parameters.set, std::size_t(1));
+        QCOMPARE(sets[1].records, std::size_t(3));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestStudyFragility)
+#include "tst_study_fragility.moc"

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The Study tab (docs/studies.md): the fields make a study file kinstab-cli reads the same way,
+// a run off the GUI thread fills the per-record table and the fragility chart with the same
+// critical intensities as kinstab-cli study, a cancelled run shows nothing partial, a bad list
+// is refused naming the field, and the export writes the rows.
+
+#include "core/io/AtomicFile.h"
+#include "ui/StudyTab.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QProcess>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace kinstab;
+using namespace kinstab::ui;
+
+namespace {
+
+void smallStudy(StudyTab& tab) {
+    // Two horizontal San Fernando records x mu 0.5, 0.7, as tests/data/study/small-study.json's
+    // ground cases (coarse search).
+    tab.setRecordsFolder(KINSTAB_SOURCE_DIR "/resources/records", "RSN68*.AT2", "*UP*");
+    tab.setLists("0.5,0.7", "0.099", "");
+    tab.setSearch(2.0, 0.05);
+}
+
+} // namespace
+
+class TestStudyTab : public QObject {
+    Q_OBJECT
+private slots:
+    void runFillsTableAndChartLikeTheCli() {
+        StudyTab tab;
+        smallStudy(tab);
+        QSignalSpy done(&tab, &StudyTab::finished);
+        tab.run();
+        QVERIFY(done.wait(120000));
+        QVERIFY2(tab.message().startsWith("4 cases"), qPrintable(tab.message()));
+        QCOMPARE(tab.table()->rowCount(), 4);
+        QCOMPARE(tab.fragility().size(), std::size_t(2));
+        QVERIFY(!tab.chartView()->chart()->series().isEmpty());
+        // The same study through kinstab-cli: the same rows, byte for byte (the records folder
+        // is absolute, so the rows name the records by absolute paths in both).
+        QTemporaryDir dir;
+        const QString spec = dir.filePath("gui.json");
+        writeFileAtomically(spec.toStdString(), tab.studyJson());
+        QProcess p;
+        p.start(KINSTAB_CLI, {"study", "--spec", spec, "--threads", "1"});
+        QVERIFY(p.waitForFinished(120000));
+        QCOMPARE(p.exitCode(), 0);
+        QCOMPARE(p.readAllStandardOutput(), QByteArray::fromStdString(tab.rows()));
+        // KINSTAB_SCREENSHOT_DIR=DIR saves a picture of the tab with its results, to look at.
+        if (const QString shots = qEnvironmentVariable("KINSTAB_SCREENSHOT_DIR");
+            !shots.isEmpty()) {
+            tab.resize(1100, 900);
+            tab.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&tab));
+            QVERIFY(tab.grab().save(shots + "/gui-study.png"));
+            tab.setRecordsFolder(KINSTAB_SOURCE_DIR "/resources/records", "*.AT2", "*UP*, *DWN*");
+            tab.setSearch(3.0, 0.02); // resources/examples/study-example.json
+            tab.run();
+            QVERIFY(done.wait(120000));
+            QTest::qWait(200); // the chart lays its legend out in the event loop
+            QVERIFY(tab.grab().save(shots + "/gui-study-example.png"));
+        }
+        const QString out = dir.filePath("rows.jsonl");
+        QVERIFY(tab.exportRows(out));
+        QFile f(out);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), QByteArray::fromStdString(tab.rows()));
+    }
+    void cancelShowsNothingPartial() {
+        StudyTab tab;
+        smallStudy(tab);
+        tab.setLists("0.3:0.8:0.01", "0.099", ""); // 102 cases: long enough to cancel
+        QSignalSpy done(&tab, &StudyTab::finished);
+        tab.run();
+        tab.cancel();
+        QVERIFY(done.wait(120000));
+        QVERIFY2(tab.message().startsWith("Cancelled"), qPrintable(tab.message()));
+        QCOMPARE(tab.table()->rowCount(), 0);
+        QVERIFY(tab.rows().empty());
+    }
+    void badListNamesTheField() {
+        StudyTab tab;
+        smallStudy(tab);
+        tab.setLists("0.5,-1", "0.099", "");
+        QSignalSpy done(&tab, &StudyTab::finished);
+        tab.run();
+        QVERIFY(done.wait(60000));
+        QVERIFY2(tab.message().contains("parameters.mu[1] = -1"), qPrintable(tab.message()));
+    }
+};
+
+QTEST_MAIN(TestStudyTab)
+#include "tst_study_tab.moc"

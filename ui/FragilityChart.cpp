@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/FragilityChart.h"
+
+#include <QChart>
+#include <QLegend>
+#include <QLegendMarker>
+#include <QLineSeries>
+#include <QPen>
+#include <QScatterSeries>
+#include <QValueAxis>
+
+#include <algorithm>
+
+namespace kinstab::ui {
+
+namespace {
+
+QString setName(const StudyRow& p) {
+    QString s = QString("μ = %1, t* = %2 s").arg(p.mu).arg(p.tstar);
+    if (p.floorPeriod)
+        s += QString(", floor T = %1 s, ζ = %2").arg(*p.floorPeriod).arg(*p.floorDamping);
+    return s;
+}
+
+QLineSeries* line(const std::vector<FragilityCurvePoint>& curve, double FragilityCurvePoint::*p) {
+    auto* s = new QLineSeries;
+    for (const auto& c : curve)
+        s->append(c.intensity, c.*p);
+    return s;
+}
+
+} // namespace
+
+void fillFragilityChart(QChart* chart, const std::vector<Fragility>& sets) {
+    chart->removeAllSeries();
+    for (QAbstractAxis* a : chart->axes())
+        chart->removeAxis(a);
+    auto* x = new QValueAxis;
+    auto* y = new QValueAxis;
+    const QString measure =
+        sets.empty() ? QString() : QString::fromStdString(sets.front().parameters.measure);
+    x->setTitleText(QObject::tr("critical intensity %1, g").arg(measure.toUpper()));
+    y->setTitleText(QObject::tr("P(collapse)"));
+    y->setRange(0.0, 1.0);
+    chart->addAxis(x, Qt::AlignBottom);
+    chart->addAxis(y, Qt::AlignLeft);
+    double top = 0.0;
+    const QList<QColor> colours = {QColor(31, 119, 180), QColor(214, 39, 40), QColor(44, 160, 44),
+                                   QColor(148, 103, 189), QColor(255, 127, 14)};
+    for (std::size_t i = 0; i < sets.size(); ++i) {
+        const Fragility& f = sets[i];
+        const QColor colour = colours[static_cast<int>(i) % colours.size()];
+        QList<QXYSeries*> series;
+        QString name = setName(f.parameters);
+        if (f.fit) {
+            name += QString(": θ = %1 g, β = %2")
+                        .arg(f.fit->median, 0, 'g', 3)
+                        .arg(f.fit->beta, 0, 'g', 2);
+            series << line(f.curve, &FragilityCurvePoint::probability);
+            if (f.fitted > 0)
+                series << line(f.curve, &FragilityCurvePoint::lower)
+                       << line(f.curve, &FragilityCurvePoint::upper);
+        } else {
+            name += QObject::tr(" (no fit: %1)").arg(QString::fromStdString(f.noFit));
+        }
+        auto* points = new QScatterSeries;
+        points->setMarkerSize(8);
+        for (const auto& p : f.points)
+            points->append(p.intensity, p.probability);
+        series << points;
+        for (int k = 0; k < series.size(); ++k) {
+            QXYSeries* s = series[k];
+            QPen pen(colour, k == 0 ? 2.0 : 1.0,
+                     k == 0 || s == points ? Qt::SolidLine : Qt::DashLine);
+            s->setPen(pen);
+            s->setColor(colour);
+            s->setName(k == 0 ? name : QString());
+            chart->addSeries(s);
+            s->attachAxis(x);
+            s->attachAxis(y);
+            for (const QPointF& pt : s->points())
+                top = std::max(top, pt.x());
+        }
+    }
+    // One legend entry per set: the named series (the fitted curve, or the points without a fit).
+    for (QLegendMarker* m : chart->legend()->markers())
+        m->setVisible(!m->label().isEmpty());
+    x->setRange(0.0, top > 0.0 ? 1.05 * top : 1.0); // a margin: the last point is not on the edge
+}
+
+} // namespace kinstab::ui

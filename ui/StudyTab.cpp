@@ -1,0 +1,298 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/StudyTab.h"
+
+#include "core/io/AtomicFile.h"
+#include "core/study/CpuAffinity.h"
+#include "core/study/FragilityText.h"
+#include "core/study/StudyRunner.h"
+#include "ui/FragilityChart.h"
+
+#include <nlohmann/json.hpp>
+
+#include <QChart>
+#include <QChartView>
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <sstream>
+
+namespace kinstab::ui {
+
+struct StudyTab::Outcome {
+    std::string rows, error;
+    bool cancelled = false;
+    std::vector<StudyRow> parsed;
+    std::vector<Fragility> fragility;
+};
+
+namespace {
+
+QDoubleSpinBox* spin(double lo, double hi, double value, int decimals, const QString& suffix) {
+    auto* s = new QDoubleSpinBox;
+    s->setRange(lo, hi);
+    s->setDecimals(decimals);
+    s->setValue(value);
+    s->setSuffix(suffix);
+    return s;
+}
+
+nlohmann::json patternList(const QString& text) {
+    nlohmann::json a = nlohmann::json::array();
+    for (const QString& p : text.split(',', Qt::SkipEmptyParts))
+        a.push_back(p.trimmed().toStdString());
+    return a;
+}
+
+// The worker: read the study from its text, run every case, fit the fragility.
+std::shared_ptr<StudyTab::Outcome> runWorker(const std::string& json, SweepControl* control);
+
+} // namespace
+
+StudyTab::StudyTab(QWidget* parent)
+    : QWidget(parent), m_folder(new QLineEdit(this)), m_include(new QLineEdit("*.AT2", this)),
+      m_exclude(new QLineEdit("*UP*, *DWN*", this)), m_measure(new QComboBox(this)),
+      m_saPeriod(spin(0.01, 20, 1.0, 2, " s")), m_mu(new QLineEdit("0.4,0.6", this)),
+      m_tstar(new QLineEdit("0.099", this)), m_floors(new QLineEdit(this)),
+      m_maxG(spin(0.01, 100, 3.0, 2, " g")), m_step(spin(0.001, 1, 0.02, 3, " g")),
+      m_run(new QPushButton(tr("Run study"), this)), m_cancel(new QPushButton(tr("Cancel"), this)),
+      m_export(new QPushButton(tr("Export…"), this)), m_progress(new QProgressBar(this)),
+      m_status(new QLabel(this)), m_chart(new QChartView(new QChart, this)),
+      m_table(new QTableWidget(0, 6, this)) {
+    m_measure->addItems({"pga", "sa"});
+    m_floors->setPlaceholderText(tr("none: the ground record drives the slab"));
+    m_folder->setPlaceholderText(tr("a folder of accelerograms (AT2, COSMOS, CSMIP V2, ...)"));
+    auto* browse = new QPushButton(tr("Folder…"), this);
+    auto* folderRow = new QHBoxLayout;
+    folderRow->addWidget(m_folder, 1);
+    folderRow->addWidget(browse);
+    auto* imRow = new QHBoxLayout;
+    imRow->addWidget(m_measure);
+    imRow->addWidget(new QLabel(tr("Sa period"), this));
+    imRow->addWidget(m_saPeriod);
+    auto* form = new QFormLayout;
+    form->addRow(tr("Records folder"), folderRow);
+    form->addRow(tr("Include files"), m_include);
+    form->addRow(tr("Exclude files"), m_exclude);
+    form->addRow(tr("Intensity measure"), imRow);
+    form->addRow(tr("μ (LIST)"), m_mu);
+    form->addRow(tr("t* s (LIST)"), m_tstar);
+    form->addRow(tr("Floor periods s (LIST)"), m_floors);
+    form->addRow(tr("Search up to"), m_maxG);
+    form->addRow(tr("Scan step"), m_step);
+    auto* bar = new QHBoxLayout;
+    bar->addWidget(m_run);
+    bar->addWidget(m_cancel);
+    bar->addWidget(m_progress, 1);
+    bar->addWidget(m_export);
+    m_cancel->setEnabled(false);
+    m_export->setEnabled(false);
+    m_status->setWordWrap(true);
+    m_chart->setRenderHint(QPainter::Antialiasing);
+    m_chart->setMinimumHeight(280);
+    m_table->setHorizontalHeaderLabels(
+        {tr("Record"), tr("μ"), tr("t* s"), tr("Floor T s"), tr("Critical IM g"), tr("Runs")});
+    m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    auto* split = new QSplitter(Qt::Vertical, this);
+    split->addWidget(m_chart);
+    split->addWidget(m_table);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addLayout(bar);
+    layout->addWidget(m_status);
+    layout->addWidget(split, 1);
+
+    connect(browse, &QPushButton::clicked, this, [this] {
+        const QString d =
+            QFileDialog::getExistingDirectory(this, tr("Records folder"), m_folder->text());
+        if (!d.isEmpty()) m_folder->setText(d);
+    });
+    connect(m_run, &QPushButton::clicked, this, &StudyTab::run);
+    connect(m_cancel, &QPushButton::clicked, this, &StudyTab::cancel);
+    connect(m_export, &QPushButton::clicked, this, [this] {
+        const QString f = QFileDialog::getSaveFileName(this, tr("Export study rows"), "study.jsonl",
+                                                       tr("Study rows (*.jsonl)"));
+        if (f.isEmpty() || !exportRows(f)) return;
+        QString frag = f;
+        frag.replace(QRegularExpression("\\.jsonl$"), "");
+        exportFragility(frag + "-fragility.json");
+    });
+    connect(
+        this, &StudyTab::progressed, this,
+        [this](int done, int total) {
+            m_progress->setRange(0, total);
+            m_progress->setValue(done);
+        },
+        Qt::QueuedConnection);
+    connect(&m_watcher, &QFutureWatcherBase::finished, this, &StudyTab::onFinished);
+}
+
+StudyTab::~StudyTab() {
+    cancel();
+    m_watcher.waitForFinished();
+}
+
+void StudyTab::setRecordsFolder(const QString& folder, const QString& include,
+                                const QString& exclude) {
+    m_folder->setText(folder);
+    m_include->setText(include);
+    m_exclude->setText(exclude);
+}
+
+void StudyTab::setLists(const QString& mu, const QString& tstar, const QString& floorPeriods) {
+    m_mu->setText(mu);
+    m_tstar->setText(tstar);
+    m_floors->setText(floorPeriods);
+}
+
+void StudyTab::setSearch(double maxG, double scanStepG) {
+    m_maxG->setValue(maxG);
+    m_step->setValue(scanStepG);
+}
+
+std::string StudyTab::studyJson() const {
+    nlohmann::json records = {{"path", m_folder->text().toStdString()},
+                              {"include", patternList(m_include->text())},
+                              {"exclude", patternList(m_exclude->text())}};
+    nlohmann::json im = {{"measure", m_measure->currentText().toStdString()}};
+    if (m_measure->currentText() == "sa") im["period_s"] = m_saPeriod->value();
+    // LIST text ("0.4,0.6" or "0.3:0.8:0.1") is what the study file's lists accept too.
+    nlohmann::json params = {{"mu", m_mu->text().toStdString()},
+                             {"tstar", m_tstar->text().toStdString()}};
+    if (!m_floors->text().trimmed().isEmpty())
+        params["floor_filter"] = {{"periods_s", m_floors->text().toStdString()}};
+    return nlohmann::json{
+        {"format", "kinstab-study"},
+        {"version", 1},
+        {"records", {records}},
+        {"intensity", im},
+        {"parameters", params},
+        {"search", {{"max_g", m_maxG->value()}, {"scan_step_g", m_step->value()}}}}
+        .dump(2);
+}
+
+bool StudyTab::isRunning() const {
+    return m_watcher.isRunning();
+}
+
+QString StudyTab::message() const {
+    return m_status->text();
+}
+
+void StudyTab::run() {
+    if (isRunning()) return;
+    m_control = std::make_shared<SweepControl>();
+    auto control = m_control;
+    control->onProgress = [this](std::size_t done, std::size_t total) {
+        emit progressed(static_cast<int>(done), static_cast<int>(total)); // queued to the GUI
+    };
+    const std::string json = studyJson();
+    m_watcher.setFuture(
+        QtConcurrent::run([json, control] { return runWorker(json, control.get()); }));
+    m_status->setText(tr("Running the study…"));
+    m_progress->setValue(0);
+    m_run->setEnabled(false);
+    m_cancel->setEnabled(true);
+}
+
+void StudyTab::cancel() {
+    if (m_control) m_control->cancel();
+}
+
+void StudyTab::onFinished() {
+    m_run->setEnabled(true);
+    m_cancel->setEnabled(false);
+    const std::shared_ptr<Outcome> o = m_watcher.result();
+    if (!o->error.empty()) {
+        m_status->setText(tr("Cannot run the study: %1").arg(QString::fromStdString(o->error)));
+    } else if (o->cancelled) {
+        m_status->setText(tr("Cancelled: nothing is shown of a partial study."));
+    } else {
+        m_rows = o->rows;
+        m_parsed = o->parsed;
+        m_fragility = o->fragility;
+        fillFragilityChart(m_chart->chart(), m_fragility);
+        fillTable();
+        m_export->setEnabled(true);
+        m_status->setText(
+            tr("%1 cases, %2 parameter sets.").arg(m_parsed.size()).arg(m_fragility.size()));
+    }
+    emit finished();
+}
+
+void StudyTab::fillTable() {
+    m_table->setRowCount(static_cast<int>(m_parsed.size()));
+    auto number = [](double x) { return QString::number(x, 'g', 4); };
+    for (int i = 0; i < m_table->rowCount(); ++i) {
+        const StudyRow& r = m_parsed[static_cast<std::size_t>(i)];
+        const QStringList cells = {QString::fromStdString(r.record),
+                                   number(r.mu),
+                                   number(r.tstar),
+                                   r.floorPeriod ? number(*r.floorPeriod) : tr("ground"),
+                                   r.criticalIntensity
+                                       ? number(*r.criticalIntensity)
+                                       : tr("none up to %1 g").arg(number(r.limitIntensity)),
+                                   QString::number(r.runs)};
+        for (int c = 0; c < cells.size(); ++c)
+            m_table->setItem(i, c, new QTableWidgetItem(cells[c]));
+    }
+}
+
+bool StudyTab::exportRows(const QString& path) {
+    return save(path, m_rows);
+}
+
+bool StudyTab::exportFragility(const QString& path) {
+    return save(path, fragilityJson(m_fragility, {}).dump(2) + "\n");
+}
+
+bool StudyTab::save(const QString& path, const std::string& text) {
+    try {
+        writeFileAtomically(path.toStdString(), text);
+        return true;
+    } catch (const WriteError& e) {
+        m_status->setText(tr("Cannot export: %1").arg(e.what()));
+        return false;
+    }
+}
+
+namespace {
+
+std::shared_ptr<StudyTab::Outcome> runWorker(const std::string& json, SweepControl* control) {
+    auto o = std::make_shared<StudyTab::Outcome>();
+    try {
+        const StudySpec spec = studyFromJsonText(json, "");
+        checkStudyRecords(spec);
+        StudyRunOptions options;
+        options.threads = allowedCpuCount();
+        options.control = control;
+        runStudy(spec, options, [&o](const std::string& rows) { o->rows += rows; });
+        o->cancelled = control->isCancelled();
+        if (o->cancelled) return o;
+        std::istringstream in(o->rows);
+        for (std::string line; std::getline(in, line);)
+            o->parsed.push_back(parseStudyRow(line));
+        o->fragility = studyFragility(o->parsed, {});
+    } catch (const StudyError& e) {
+        o->error = e.what();
+    }
+    return o;
+}
+
+} // namespace
+
+} // namespace kinstab::ui

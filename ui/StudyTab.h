@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The Study tab (docs/studies.md): a folder of records crossed with lists of mu, t* and floor
+// periods; every case's critical intensity found off the GUI thread, with progress and cancel;
+// then the fragility curves (fit, bootstrap bounds, empirical points), the per-record table and
+// export of the rows (JSONL, as kinstab-cli study writes them) and of the fragility (JSON).
+
+#include "core/study/Fragility.h"
+#include "core/sweep/SweepControl.h"
+
+#include <QFutureWatcher>
+#include <QWidget>
+
+#include <memory>
+#include <string>
+
+class QChartView;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
+class QTableWidget;
+
+namespace kinstab::ui {
+
+class StudyTab : public QWidget {
+    Q_OBJECT
+public:
+    struct Outcome; // what the worker hands back
+
+    explicit StudyTab(QWidget* parent = nullptr);
+    ~StudyTab() override;
+
+    // The fields, for tests and for a study opened from a file.
+    void setRecordsFolder(const QString& folder, const QString& include, const QString& exclude);
+    void setLists(const QString& mu, const QString& tstar, const QString& floorPeriods);
+    void setSearch(double maxG, double scanStepG);
+    // The study file text the fields describe (kinstab-study, version 1).
+    std::string studyJson() const;
+
+    void run();
+    void cancel();
+    bool isRunning() const;
+    QString message() const;
+    const std::string& rows() const { return m_rows; } // JSONL of the last finished run
+    const std::vector<Fragility>& fragility() const { return m_fragility; }
+    QTableWidget* table() const { return m_table; }
+    QChartView* chartView() const { return m_chart; }
+    bool exportRows(const QString& path);      // false, with the reason in message()
+    bool exportFragility(const QString& path); // JSON
+
+signals:
+    void finished();
+    void progressed(int done, int total); // from the worker, delivered queued
+
+private:
+    void onFinished();
+    void fillTable();
+    bool save(const QString& path, const std::string& text); // false: the reason in message()
+
+    QLineEdit* m_folder;
+    QLineEdit* m_include;
+    QLineEdit* m_exclude;
+    QComboBox* m_measure;
+    QDoubleSpinBox* m_saPeriod;
+    QLineEdit* m_mu;
+    QLineEdit* m_tstar;
+    QLineEdit* m_floors;
+    QDoubleSpinBox* m_maxG;
+    QDoubleSpinBox* m_step;
+    QPushButton* m_run;
+    QPushButton* m_cancel;
+    QPushButton* m_export;
+    QProgressBar* m_progress;
+    QLabel* m_status;
+    QChartView* m_chart;
+    QTableWidget* m_table;
+    QFutureWatcher<std::shared_ptr<Outcome>> m_watcher;
+    std::shared_ptr<SweepControl> m_control;
+    std::string m_rows;
+    std::vector<StudyRow> m_parsed;
+    std::vector<Fragility> m_fragility;
+};
+
+} // namespace kinstab::ui
