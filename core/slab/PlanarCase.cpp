@@ -78,9 +78,7 @@ PlanarCase planarCaseSharing(const Slab1DCase& common) {
     c.envelope = common.envelope;
     c.tstar = common.tstar;
     c.scale = common.scale;
-    c.slab.mu = common.slab.mu;
-    c.slab.limit = common.slab.limit;
-    c.slab.duration = common.slab.duration;
+    static_cast<SlabParams&>(c.slab) = common.slab;
     return c;
 }
 

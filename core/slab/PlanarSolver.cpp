@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/PlanarSolver.h"
 
-#include "core/numerics/GaussLegendre.h"
 #include "core/numerics/VectorState.h"
 
 #include "core/numerics/Dop853.h"
@@ -19,11 +18,12 @@ namespace {
 
 using Vec4 = OdeVec<4>; // (dx, dy, ux, uy) in tau
 using Vec5 = OdeVec<5>; // (ex, ey, tau - tau_entry, dx, dy) in s = ln|u|
+using Vec3 = OdeVec<3>; // (|u|, dx, dy) in tau, on the slow manifold
 
-// Below this speed a slip is slaved to -a_h (see PlanarRun::slaved).
-constexpr double kSlaved = 1e-6;
+// Sub-intervals of a window scanned for onset and lift-off roots (each holds at most one extremum
+// of |a_h| - mu n: a window is at most a half-period of each component or one record sample).
+constexpr int kOnsetSub = 8;
 
-// 10-point Gauss-Legendre on [-1, 1] (the quadrature of a slip's first stretch).
 class PlanarRun {
 public:
     PlanarRun(const SlabModel2D& m, const PlanarOptions& o) : m_(m), o_(o), mu_(m.params().mu) {}
@@ -38,8 +38,14 @@ private:
     double dissipationRate(double tau, double ex, double ey); // D = mu n + a.e = -d|u|/dtau
 
     Step window(double w0, double w1);
+    void addScanWork(const CrossingScanWork& scan);
+    void scanCuts();
+    double nextOnset(double from);
+    double nextCut(double tau);
     Step slipTo(double end);
     Step slaved(double end);
+    Vec3 rhsSlaved(double tau, const Vec3& z);
+    Vec2 slavedDirection(double tau, const Vec2& a, double n, double rho) const;
     bool isSlaved(double tau, const Vec4& y) const;
     Approach approachStop(double end);
     Step afterStop();
@@ -64,9 +70,15 @@ private:
     bool slipping_ = false;
     double hNext_ = 0;       // step proposal in tau
     double slipPeak_ = 0;    // largest |u| of the current slip (scale of the stop floor)
-    double startLength_ = 0; // length of a slip's quadrature start
+    double startLength_ = 0; // first step of a slaved slip
+    double slavedSpeed_ = 0; // below this |u| a slip may be slaved
     double fsalT_ = -1.0;    // the last accepted step's end, state and derivative
     Vec4 fsalY_ = Vec4::Zero(), fsalF_ = Vec4::Zero();
+    // The current window [winStart_, winEnd_] and its onset roots (scanned when needed); kept
+    // across windows so that no window allocates.
+    double winStart_ = 0, winEnd_ = 0;
+    bool cutsKnown_ = false;
+    std::vector<double> cuts_, roots_;
 };
 
 Vec4 PlanarRun::rhs(double tau, const Vec4& y) {
@@ -150,10 +162,13 @@ PlanarResult PlanarRun::run() {
         fail("the excitation never decays below mu n: set a duration (tau_out)");
         return r_;
     }
-    // Quadrature start of a slip: short against the horizontal time scale, so that the
-    // neglected lag of the direction behind -a_h (relative size (omega h)^2) stays below the
-    // tolerances (docs/theory.md §6.1 F7: the direction is slaved at rate |a|/|u|).
+    // First step of a slaved slip: short against the horizontal time scale (the step control
+    // takes over from there).
     startLength_ = m_.horizontalTimeScale() / 250.0;
+    // Slaved slips up to |u| = 1e-5 at the default rtol 1e-10: the neglected terms of the
+    // manifold move the displacement by O(|u|^3) per unit time, so the bound follows rtol^(1/3)
+    // (measured on the golden grids: tau_c within 3.3e-10 at 1e-5, 2.6e-9 at 4e-5, 9e-9 at 1e-4).
+    slavedSpeed_ = std::clamp(1e-5 * std::cbrt(o_.relTol / 1e-10), 1e-7, 1e-4);
     if (m_.normal(0.0) <= 0.0) {
         r_.tauLiftOff = 0.0;
         r_.slab.tauC = 0.0;
@@ -181,57 +196,47 @@ PlanarResult PlanarRun::run() {
     }
 }
 
-// One window of the time line: find lift-off and the onset roots in it, then walk the pieces
-// between them; on each piece the sign of |a_h| - mu n is fixed.
+// One window of the time line: find lift-off in it, then alternate stuck and sliding stretches.
+// The onset roots (|a_h| = mu n) matter only while the slab is stuck or slaved (whose quadrature
+// needs a fixed sign of |a_h| - mu n): they are scanned for then, once per window; a slip
+// integrated by the explicit method crosses them as any other time.
 PlanarRun::Step PlanarRun::window(double w0, double w1) {
-    constexpr int kSub = 8;
     CrossingScanWork scan;
     double wEnd = w1;
     bool lifts = false;
     if (m_.mayLiftOn(w0, w1)) {
-        std::vector<double> roots;
+        roots_.clear();
         levelCrossings(
             [&](double t, double& f, double& df) {
                 f = -m_.normal(t);
                 df = -m_.normalSlope(t);
             },
-            w0, w1, kSub, roots, scan);
-        if (!roots.empty()) {
-            wEnd = roots.front();
+            w0, w1, kOnsetSub, roots_, scan);
+        if (!roots_.empty()) {
+            wEnd = roots_.front();
             lifts = true;
         }
     }
-    std::vector<double> cuts{w0};
-    if (!m_.quietOn(w0, wEnd))
-        levelCrossings(
-            [&](double t, double& f, double& df) {
-                f = m_.onsetMargin(t);
-                df = m_.onsetMarginSlope(t);
-            },
-            w0, wEnd, kSub, cuts, scan);
-    cuts.push_back(wEnd);
-    r_.slab.work.accelEvaluations += scan.evaluations;
-    r_.slab.work.rootIterations += scan.iterations;
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-        const double lo = std::max(cuts[i], t_), hi = cuts[i + 1];
-        if (!(hi > lo)) continue;
-        const bool excess = m_.onsetMargin(0.5 * (lo + hi)) > 0.0;
-        while (t_ < hi || !slipping_) {
-            if (!slipping_) {
-                if (!excess) break;
-                // Slip onset: the slab lags the walls and starts along -a_h.
-                t_ = std::max(t_, lo);
-                slipping_ = true;
-                slipPeak_ = 0.0;
-                y_[2] = y_[3] = 0.0;
-                ++r_.slab.slipIntervals;
-                if (!event(EventKind::SlipOnset)) return Step::Done;
-            }
-            if (slipTo(hi) == Step::Done) return Step::Done;
-            if (t_ >= hi) break;
+    addScanWork(scan);
+    winStart_ = w0;
+    winEnd_ = wEnd;
+    cutsKnown_ = false;
+    while (slipping_ || t_ < wEnd) {
+        if (!slipping_) {
+            const double onset = nextOnset(std::max(t_, w0));
+            if (!(onset < wEnd)) break;
+            // Slip onset: the slab lags the walls and starts along -a_h.
+            t_ = onset;
+            slipping_ = true;
+            slipPeak_ = 0.0;
+            y_[2] = y_[3] = 0.0;
+            ++r_.slab.slipIntervals;
+            if (!event(EventKind::SlipOnset)) return Step::Done;
         }
-        if (!slipping_) t_ = std::max(t_, hi);
+        if (slipTo(wEnd) == Step::Done) return Step::Done;
+        if (slipping_ && t_ >= wEnd) break;
     }
+    if (!slipping_) t_ = std::max(t_, wEnd);
     if (lifts) {
         // n reached 0: the slab leaves its support. Reported, never integrated through.
         t_ = wEnd;
@@ -241,6 +246,48 @@ PlanarRun::Step PlanarRun::window(double w0, double w1) {
         return finish(Outcome::LiftOff);
     }
     return Step::Continue;
+}
+
+void PlanarRun::addScanWork(const CrossingScanWork& scan) {
+    r_.slab.work.accelEvaluations += scan.evaluations;
+    r_.slab.work.rootIterations += scan.iterations;
+}
+
+// The window's onset roots, scanned on first use: cuts_ = {start, roots..., end}.
+void PlanarRun::scanCuts() {
+    if (cutsKnown_) return;
+    cutsKnown_ = true;
+    cuts_.clear();
+    cuts_.push_back(winStart_);
+    CrossingScanWork scan;
+    if (!m_.quietOn(winStart_, winEnd_))
+        levelCrossings(
+            [&](double t, double& f, double& df) {
+                f = m_.onsetMargin(t);
+                df = m_.onsetMarginSlope(t);
+            },
+            winStart_, winEnd_, kOnsetSub, cuts_, scan);
+    cuts_.push_back(winEnd_);
+    addScanWork(scan);
+}
+
+// The first time at or after `from` in the window where the slab slips (|a_h| > mu n on the
+// piece that follows); winEnd_ when there is none.
+double PlanarRun::nextOnset(double from) {
+    if (m_.quietOn(from, winEnd_)) return winEnd_;
+    scanCuts();
+    for (std::size_t i = 0; i + 1 < cuts_.size(); ++i) {
+        const double lo = std::max(cuts_[i], from), hi = cuts_[i + 1];
+        if (hi > lo && m_.onsetMargin(0.5 * (lo + hi)) > 0.0) return lo;
+    }
+    return winEnd_;
+}
+
+// The first onset root after tau in the window (winEnd_ when none): where a slaved stretch ends.
+double PlanarRun::nextCut(double tau) {
+    scanCuts();
+    const auto it = std::upper_bound(cuts_.begin(), cuts_.end(), tau);
+    return it == cuts_.end() ? winEnd_ : *it;
 }
 
 // Slides from t_ to end, or until the slab sticks (then returns with slipping_ false).
@@ -342,89 +389,111 @@ PlanarRun::Step PlanarRun::collapse(double tau, const Vec4& y, int comp) {
     return finish(Outcome::Collapsed);
 }
 
-// Slaved slip: while |u| is tiny the direction of u relaxes to -a_h at rate |a|/|u| and lags it
-// by only Omega |u| / |a| (docs/theory.md §6.1 F7), so |u| is the quadrature of |a_h| - mu n and
-// the displacement its integral along -a_h: a slip's first stretch from u = 0, and grazing slips
-// and stops, where an explicit method would crawl at steps of |u| / |a|. The neglected lag changes
-// |u| by O(Omega^2 |u|^2 / |a|) per unit time: below 1e-12 for |u| <= kSlaved.
+// Slaved slip (docs/theory.md §6.5): while |u| is small the direction of u relaxes to its slow
+// manifold at rate |a|/|u|, far faster than anything else moves, and an explicit method would
+// crawl at steps of about |u| / |a| (stability, not accuracy). On the manifold u lags -a_h by
+//   phi = -theta_a' |u| / (|a| + m),  m = |a_h| - mu n  (theta_a: the direction of a_h),
+// exact while the coefficients are frozen (|u| then grows or shrinks linearly and phi with it);
+// the neglected terms are O((Omega |u| / |a|)^2) relative. The reduced state (|u|, dx, dy) is
+// smooth: |u|' = |a| cos phi - mu n, delta' = |u| (-a_h / |a|) rotated by phi. It is integrated
+// by the same DOP853 with steps set by the tolerance, not by |u|.
+Vec3 PlanarRun::rhsSlaved(double tau, const Vec3& z) {
+    ++r_.slab.work.accelEvaluations;
+    const Vec2 a = m_.accel(tau);
+    const double n = m_.normal(tau);
+    const Vec2 dir = slavedDirection(tau, a, n, z[0]);
+    const double speedRate = -mu_ * n - (a.x * dir.x + a.y * dir.y);
+    Vec3 f;
+    f << speedRate, z[0] * dir.x, z[0] * dir.y;
+    return f;
+}
+
+// The unit direction of u on the slow manifold at speed rho (-a_h / |a| turned by phi).
+Vec2 PlanarRun::slavedDirection(double tau, const Vec2& a, double n, double rho) const {
+    const Vec2 sl = m_.accelSlope(tau);
+    const double am = std::hypot(a.x, a.y);
+    if (!(am > 0.0)) return {0.0, 0.0};
+    const double turn = (a.x * sl.y - a.y * sl.x) / (am * am); // theta_a'
+    const double relax = 2.0 * am - mu_ * n;                   // |a| + m
+    const double phi = -turn * rho / std::max(relax, 0.5 * am);
+    const double ex = -a.x / am, ey = -a.y / am, c = std::cos(phi), sn = std::sin(phi);
+    return {ex * c - ey * sn, ex * sn + ey * c};
+}
+
 PlanarRun::Step PlanarRun::slaved(double end) {
-    auto margin = [&](double s) {
-        ++r_.slab.work.accelEvaluations;
-        return m_.onsetMargin(s);
-    };
-    auto unitA = [&](double s) {
-        const Vec2 a = m_.accel(s);
-        const double am = std::hypot(a.x, a.y);
-        return am > 0.0 ? Vec2{a.x / am, a.y / am} : Vec2{0.0, 0.0};
-    };
-    double rho = std::hypot(y_[2], y_[3]);
+    const double rhoExit = 2.0 * slavedSpeed_;
+    Vec3 z;
+    z << std::hypot(y_[2], y_[3]), y_[0], y_[1];
+    auto f = [&](double t, const Vec3& zz) { return rhsSlaved(t, zz); };
+    // |u| is tiny here and a stop's time is |u| / |m| off per unit of error in |u|: its absolute
+    // tolerance is scaled down with the largest slaved speed.
+    Vec3 absTol = Vec3::Constant(o_.absTol);
+    absTol[0] = 1e-3 * o_.absTol;
+    Vec3 f0 = f(t_, z);
+    double h = startLength_;
     while (t_ < end) {
-        const double t0 = t_, h = std::min(startLength_, end - t0), r0 = rho;
-        ++r_.slab.work.steps;
-        auto speedAt = [&](double t) { return r0 + gaussLegendre10(margin, t0, t); };
-        // The displacement along -a_h over [t0, t1], both components from one quadrature.
-        auto shift = [&](double t1) {
-            const double m = 0.5 * (t0 + t1), r = 0.5 * (t1 - t0);
-            Vec2 sum;
-            for (std::size_t i = 0; i < kGaussLegendre10Nodes.size(); ++i)
-                for (double node :
-                     {m - r * kGaussLegendre10Nodes[i], m + r * kGaussLegendre10Nodes[i]}) {
-                    const Vec2 e = unitA(node);
-                    const double v = kGaussLegendre10Weights[i] * speedAt(node);
-                    sum.x += v * e.x;
-                    sum.y += v * e.y;
-                }
-            return Vec2{r * sum.x, r * sum.y};
-        };
-        const double rEnd = speedAt(t0 + h);
-        Vec4 y = y_;
-        if (!(rEnd > 0.0)) {
-            // The speed reaches zero in this stretch (it is monotone: the sign of |a_h| - mu n
-            // is fixed on a piece): a stop.
-            const double ts = r0 <= 0.0 ? t0
-                                        : locate(
-                                              [&](double t, double& f, double& df) {
-                                                  f = speedAt(t);
-                                                  df = margin(t);
-                                              },
-                                              t0, t0 + h, r0, rEnd);
-            const Vec2 d = shift(ts);
-            y[0] -= d.x;
-            y[1] -= d.y;
-            y[2] = y[3] = 0.0;
+        // On a piece between onset roots the sign of |u|' is fixed: |u| has no interior zero.
+        const double t0 = t_, pieceEnd = std::min(end, nextCut(t0)),
+                     hh = std::min(h, pieceEnd - t0);
+        if (++r_.slab.work.steps > o_.maxSteps) return fail("step limit reached");
+        const auto st = dop853Step<3>(f, t0, z, f0, hh);
+        const double err = dop853ErrorNorm<3>(st, z, absTol, o_.relTol);
+        if (!(err <= 1.0)) {
+            ++r_.slab.work.restarts;
+            h = hh * std::max(0.2, std::isfinite(err) ? dop853StepFactor(err) : 0.2);
+            if (h < 1e-15 * std::max(1.0, t0)) return fail("step size underflow in a slaved slip");
+            continue;
+        }
+        if (!(st.y[0] > 0.0)) {
+            // The speed reaches zero in this step: a stop, located on re-taken steps.
+            const double ts = z[0] <= 0.0
+                                  ? t0
+                                  : locate(
+                                        [&](double t, double& g, double& dg) {
+                                            const Vec3 zz = dop853Step<3>(f, t0, z, f0, t - t0).y;
+                                            g = zz[0];
+                                            dg = f(t, zz)[0];
+                                        },
+                                        t0, t0 + hh, z[0], st.y[0]);
+            const Vec3 zs = ts == t0 ? z : Vec3(dop853Step<3>(f, t0, z, f0, ts - t0).y);
+            Vec4 y;
+            y << zs[1], zs[2], 0.0, 0.0;
             moveTo(ts, y);
             return afterStop();
         }
-        const Vec2 d = shift(t0 + h);
-        y[0] -= d.x;
-        y[1] -= d.y;
-        rho = rEnd;
-        // Direction at the end: -a_h, lagging its turn (rate Omega) by Omega |u| / |a|.
-        const double tEnd = t0 + h;
-        const Vec2 a = m_.accel(tEnd), sl = m_.accelSlope(tEnd);
-        const double am2 = a.x * a.x + a.y * a.y;
-        const Vec2 ah = unitA(tEnd);
-        const double lag =
-            am2 > 0.0 ? -(a.x * sl.y - a.y * sl.x) / am2 * rho / std::sqrt(am2) : 0.0;
-        const double c = std::cos(lag), sn = std::sin(lag);
-        y[2] = -rho * (ah.x * c - ah.y * sn);
-        y[3] = -rho * (ah.x * sn + ah.y * c);
-        // The direction relaxes at rate |a|/|u|: the first explicit step must resolve that.
-        hNext_ = 0.5 * rho / std::max(std::sqrt(am2), 1e-300);
-        moveTo(tEnd, y);
-        if (rho > 10.0 * kSlaved) break;
+        const bool truncated = hh < h;
+        const double grow = hh * dop853StepFactor(err);
+        h = truncated ? std::max(h, grow) : grow;
+        z = st.y;
+        f0 = st.f;
+        const double t1 = t0 + hh;
+        const Vec2 a1 = m_.accel(t1);
+        const Vec2 dir = slavedDirection(t1, a1, m_.normal(t1), z[0]);
+        Vec4 y;
+        y << z[1], z[2], z[0] * dir.x, z[0] * dir.y;
+        moveTo(t1, y);
+        if (z[0] > rhoExit) {
+            // Back to the full equations; their first step must resolve the relaxation.
+            hNext_ = 0.5 * z[0] / std::max(std::hypot(a1.x, a1.y), 1e-300);
+            break;
+        }
     }
     return Step::Continue;
 }
 
-// True when |u| is small enough and u points along -a_h, so that the slip is slaved.
+// True when |u| is small, the manifold attracts (|a| + m >= |a| / 2) and u lies on it (within
+// 1e-3 rad: projecting onto it moves the displacement by about |u|^2 1e-3 / |a|), so that the
+// slip is slaved.
 bool PlanarRun::isSlaved(double tau, const Vec4& y) const {
     const double rho = std::hypot(y[2], y[3]);
-    if (rho > kSlaved) return false;
+    if (rho > slavedSpeed_) return false;
     if (rho == 0.0) return true;
     const Vec2 a = m_.accel(tau);
     const double am = std::hypot(a.x, a.y);
-    return am > 0.0 && -(a.x * y[2] + a.y * y[3]) / (am * rho) >= 1.0 - 1e-6;
+    const double n = m_.normal(tau);
+    if (!(am > 0.0) || 2.0 * am - mu_ * n < 0.5 * am) return false;
+    const Vec2 dir = slavedDirection(tau, a, n, rho);
+    return std::abs(dir.x * y[3] - dir.y * y[2]) <= 1e-3 * rho && dir.x * y[2] + dir.y * y[3] > 0.0;
 }
 
 // Approach of a stop in s = ln|u|, from the current state (|u| > 0, |u| decreasing).

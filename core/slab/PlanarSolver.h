@@ -5,9 +5,10 @@
 // enveloped sines at the default tolerance) with event location by brackets.
 //  - Slip onset |a_h| = mu n is a time-only event: its roots are found ahead on brackets and
 //    are step boundaries (tstops). Lift-off n = 0 likewise.
-//  - A slip starts from u = 0 along -a_h; the first short stretch is integrated as a quadrature
-//    (the direction is slaved to -a_h there), which spares the explicit method the stiff
-//    alignment of the direction (rate |a|/|u|) near |u| = 0.
+//  - While |u| is small (a slip's start, grazing slips, stops) the direction of u is slaved to
+//    -a_h, lagging it by a known small angle: the slip is integrated on that slow manifold in
+//    (|u|, dx, dy), which spares the explicit method the stiff alignment of the direction (rate
+//    |a|/|u|). The onset roots are scanned only while the slab sticks or is slaved.
 //  - The stop |u| -> 0 is approached in the log-radius variable s = ln|u| (docs/theory.md §6.5),
 //    where the direction and time are smooth; the stop time is where s -> -inf. A test on the
 //    dot product of velocities would fire early (the direction swings by up to 180 degrees in

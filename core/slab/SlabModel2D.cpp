@@ -8,15 +8,11 @@
 namespace kinstab {
 
 std::string validatePlanarParams(const PlanarParams& p) {
+    std::string e = validateSlabParams(p);
+    if (!e.empty()) return e;
     std::ostringstream s;
-    if (!std::isfinite(p.mu) || p.mu < 0.0 || p.mu > 10.0)
-        s << "mu = " << p.mu << ": friction coefficient must be between 0 and 10";
-    else if (!std::isfinite(p.limit) || p.limit <= 0.0 || p.limit > 1e6)
-        s << "limit = " << p.limit << ": bearing limit (bearing / (d/2)) must be > 0";
-    else if (!std::isfinite(p.theta) || p.theta <= 0.0 || p.theta > 1e6)
+    if (!std::isfinite(p.theta) || p.theta <= 0.0 || p.theta > 1e6)
         s << "theta = " << p.theta << ": along-wall limit (2 wall length / wall width) must be > 0";
-    else if (p.duration && (!std::isfinite(*p.duration) || *p.duration <= 0.0))
-        s << "duration = " << *p.duration << ": tau_out must be a positive number";
     return s.str();
 }
 

@@ -16,11 +16,9 @@
 
 namespace kinstab {
 
-struct PlanarParams {
-    double mu = 0.6;     // friction coefficient
-    double limit = 1.0;  // across the walls: collapse when |dx| > limit (bearing / (d/2))
+// The 1-DOF slab's inputs (mu, limit across the walls, duration) and the limit along the walls.
+struct PlanarParams : SlabParams {
     double theta = 20.0; // along the walls: collapse when |dy| > theta = 2 wall length / wall width
-    std::optional<double> duration; // tau_out
 };
 std::string validatePlanarParams(const PlanarParams& p); // empty when fine
 
