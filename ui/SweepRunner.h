@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Runs a sweep (and the A_crit(f) curve) off the GUI thread: QtConcurrent::run with a QPromise,
-// adapted to core's SweepControl. Partial results are polled a few times a second (never per
-// point), and a cancel keeps everything already computed.
+// Runs a sweep (and the A_crit(f) curve and the design check) off the GUI thread through core's
+// analysis entry point (core/analysis/RunAnalysis.h): QtConcurrent::run with a QPromise. Partial
+// results are polled a few times a second (never per point), and a cancel keeps everything already
+// computed.
 
 #include "core/codes/DesignCheck.h"
 #include "core/slab/PlanarCase.h"

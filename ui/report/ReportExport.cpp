@@ -66,7 +66,7 @@ QString exportReportDialog(QWidget* parent, const Project& project, const QStrin
 
 QString exportReportTo(QWidget* parent, const Project& project, const QString& projectPath,
                        const QString& out) {
-    auto control = std::make_shared<SweepControl>();
+    auto control = std::make_shared<AnalysisControl>();
     QFutureWatcher<AnalysisRun> watcher;
     QEventLoop loop;
     QObject::connect(&watcher, &QFutureWatcherBase::finished, &loop, &QEventLoop::quit);
