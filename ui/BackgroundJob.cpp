@@ -17,7 +17,7 @@ BackgroundJob::BackgroundJob(QObject* parent, int pollMs) : QObject(parent) {
 BackgroundJob::~BackgroundJob() {
     ++m_generation; // nothing delivers from here on (queued finishes die with this object)
     for (Running& r : m_running)
-        r.context->control.cancel();
+        r.context->cancel();
     for (Running& r : m_running)
         r.future.waitForFinished();
 }
@@ -57,7 +57,7 @@ void BackgroundJob::launch(std::function<void(JobContext&)> work, std::function<
 }
 
 void BackgroundJob::cancel() {
-    if (m_context) m_context->control.cancel();
+    if (m_context) m_context->cancel();
 }
 
 bool BackgroundJob::isRunning() const {
@@ -69,9 +69,9 @@ void BackgroundJob::waitForFinished() {
 }
 
 void BackgroundJob::poll() {
-    if (m_context)
-        emit progress(static_cast<qint64>(m_context->done.load()),
-                      static_cast<qint64>(m_context->total.load()));
+    if (!m_context) return;
+    const auto [done, total] = m_context->counts();
+    emit progress(static_cast<qint64>(done), static_cast<qint64>(total));
 }
 
 } // namespace kinstab::ui

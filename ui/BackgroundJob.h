@@ -7,6 +7,7 @@
 // GUI thread. A job superseded by a newer start() is cancelled and its late result dropped. The
 // destructor cancels and waits, so no worker outlives the object that started it.
 
+#include "core/analysis/AnalysisControl.h"
 #include "core/sweep/SweepControl.h"
 
 #include <QFuture>
@@ -17,6 +18,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace kinstab::ui {
@@ -28,6 +30,22 @@ struct JobContext {
     std::atomic<std::size_t> done{0};  // units of work finished
     std::atomic<std::size_t> total{0}; // units of work in all (0: not known yet)
     bool isCancelled() const { return control.isCancelled(); }
+    virtual void cancel() { control.cancel(); }
+    // (done, total) as the GUI shows them.
+    virtual std::pair<std::size_t, std::size_t> counts() const { return {done.load(), total.load()}; }
+};
+
+// A job that runs core's analysis entry point (core/analysis/RunAnalysis.h): its
+// AnalysisControl carries the cancel and counts the steps.
+struct AnalysisJobContext : JobContext {
+    AnalysisControl analysis;
+    void cancel() override {
+        JobContext::cancel();
+        analysis.cancel();
+    }
+    std::pair<std::size_t, std::size_t> counts() const override {
+        return {analysis.done(), analysis.total()};
+    }
 };
 
 class BackgroundJob : public QObject {

@@ -1,14 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/SweepRunner.h"
 
-#include "core/sweep/CriticalAmplitude.h"
-#include "core/sweep/ModelPoint.h"
+#include "core/analysis/RunAnalysis.h"
 
 #include <algorithm>
-#include <atomic>
+#include <exception>
 #include <mutex>
 #include <thread>
-#include <unordered_map>
 
 #ifdef __linux__
 #include <sys/resource.h>
@@ -18,90 +16,62 @@
 
 namespace kinstab::ui {
 
-// State shared by the GUI and the worker threads (cancel and counters from JobContext); outlives
+// State shared by the GUI and the worker threads (cancel and counters from the analysis); outlives
 // both through shared_ptr.
-struct SweepRunner::Live : JobContext {
+struct SweepRunner::Live : AnalysisJobContext {
     std::mutex mutex;
     SweepResult partial; // guarded by mutex
 };
 
 namespace {
 
-std::unordered_map<double, std::size_t> indexOf(const std::vector<double>& values) {
-    std::unordered_map<double, std::size_t> m;
-    for (std::size_t i = 0; i < values.size(); ++i)
-        m.emplace(values[i], i);
-    return m;
+// The job as core's analysis request: the surface, A_crit at every grid frequency (searched up
+// to the grid's top amplitude), and the design check when there are codes.
+AnalysisRequest analysisRequest(const SweepJob& job) {
+    AnalysisRequest q;
+    q.slab = job.slabCase;
+    q.planar = job.planar;
+    q.grid = job.grid;
+    q.criticalFrequencies = job.grid.frequencies;
+    const auto& amplitudes = job.grid.amplitudes;
+    const double top =
+        amplitudes.empty() ? 0.0 : *std::max_element(amplitudes.begin(), amplitudes.end());
+    q.criticalSearch = CriticalSearch{0.0, top, 0.01, 1e-5};
+    q.codes = job.codes;
+    q.checkSearch = job.search;
+    q.parts.surface = true;
+    q.parts.criticalCurve = job.criticalCurve;
+    q.parts.designCheck = !job.codes.empty();
+    q.threads = job.threads;
+    return q;
 }
 
-// Runs f(k) for k in [0, n) on `threads` threads, stopping early on cancel.
-template <class F> void parallelFor(std::size_t n, int threads, const SweepControl& control, F f) {
-    std::atomic<std::size_t> next{0};
-    auto work = [&] {
-        for (std::size_t k; !control.isCancelled() && (k = next.fetch_add(1)) < n;)
-            f(k);
-    };
-    const int t = std::clamp<int>(
-        threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency()), 1,
-        static_cast<int>(std::max<std::size_t>(n, 1)));
-    std::vector<std::thread> pool;
-    for (int i = 1; i < t; ++i)
-        pool.emplace_back(work);
-    work();
-    for (auto& th : pool)
-        th.join();
+std::string errorText(const std::exception_ptr& e) {
+    try {
+        std::rethrow_exception(e);
+    } catch (const std::exception& x) {
+        return x.what();
+    } catch (...) {
+        return "unknown error";
+    }
 }
 
 SweepOutput runJob(const SweepJob& job, SweepRunner::Live& live) {
-    const ModelPoint model = modelPoint(job.slabCase, job.planar); // 1-DOF or planar
-    const PointFunction base = model.point;
-    const double scanFrom = model.scanFrom;
-    // A cancelled search returns at once: criticalAmplitude then ends within one point.
-    const PointFunction point = [&live, base](double a, double f) {
-        if (live.control.isCancelled()) return PointResult{Outcome::Failed, 0};
-        return base(a, f);
-    };
-    const auto ai = indexOf(job.grid.amplitudes);
-    const auto fi = indexOf(job.grid.frequencies);
-    const std::size_t nf = job.grid.frequencies.size();
-    const PointFunction recording = [&](double a, double f) {
-        const PointResult r = point(a, f);
-        const std::size_t k = ai.at(a) * nf + fi.at(f);
+    // Each finished point goes into the snapshot the GUI polls, at its grid index.
+    live.analysis.onPoint = [&live](std::size_t k, const PointResult& r) {
         std::lock_guard lock(live.mutex);
         live.partial.points[k] = r;
         live.partial.done[k] = 1;
         ++live.partial.completed;
-        return r;
     };
-    live.control.onProgress = [&live](std::size_t, std::size_t) { ++live.done; };
-
+    const AnalysisResult r = runAnalysis(analysisRequest(job), live.analysis);
     SweepOutput out;
-    out.tauRef = model.tauRef;
-    out.sweep = runSweep(job.grid, recording, &live.control, job.threads);
-    if (job.criticalCurve && !live.control.isCancelled()) {
-        out.aCrit.assign(nf, std::nullopt);
-        const double top =
-            *std::max_element(job.grid.amplitudes.begin(), job.grid.amplitudes.end());
-        const CriticalSearch search{0.0, top, 0.01, 1e-5};
-        parallelFor(nf, job.threads, live.control, [&](std::size_t j) {
-            out.aCrit[j] =
-                criticalAmplitude(point, job.grid.frequencies[j], scanFrom, search).amplitude;
-            ++live.done;
-        });
-    }
-    if (!job.codes.empty() && !live.control.isCancelled()) {
-        try {
-            out.check = designCheck(job.codes, job.slabCase, job.search, point, scanFrom);
-        } catch (const std::exception& e) {
-            out.checkError = e.what();
-        }
-        ++live.done;
-    }
-    out.cancelled = live.control.isCancelled();
-    if (out.cancelled) {
-        out.aCrit.clear();
-        out.check.reset();
-    }
+    out.tauRef = r.tauRef;
+    out.sweep = *r.surface;
+    if (r.critical) out.aCrit = r.critical->amplitude;
+    out.check = r.check;
+    if (r.checkError) out.checkError = errorText(r.checkError);
+    out.cancelled = r.cancelled;
     return out;
 }
 
@@ -131,14 +101,12 @@ SweepRunner::SweepRunner(QObject* parent) : QObject(parent), m_job(this, updateI
 SweepRunner::~SweepRunner() = default; // m_job cancels and waits
 
 std::size_t SweepRunner::stepCount(const SweepJob& job) {
-    return job.grid.size() + (job.criticalCurve ? job.grid.frequencies.size() : 0) +
-           (job.codes.empty() ? 0 : 1);
+    return analysisSteps(analysisRequest(job));
 }
 
 void SweepRunner::start(const SweepJob& job) {
     if (isRunning()) return;
     auto live = std::make_shared<Live>();
-    live->total = stepCount(job);
     live->partial.grid = job.grid;
     live->partial.points.assign(job.grid.size(), PointResult{Outcome::Failed, std::nan("")});
     live->partial.done.assign(job.grid.size(), 0);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Runs a sweep (and the A_crit(f) curve) off the GUI thread on a BackgroundJob. Partial results
+// Runs a sweep (and the A_crit(f) curve and the design check) off the GUI thread on a
+// BackgroundJob, through core's analysis entry point (core/analysis/RunAnalysis.h). Partial results
 // are polled a few times a second with its progress (never per point), and a cancel keeps
 // everything already computed.
 

@@ -4,11 +4,12 @@
 #include "app/cli/Commands.h"
 #include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
+#include "app/cli/PlanarFlags.h"
 #include "app/cli/RecordFlags.h"
-#include "core/codes/DesignCheck.h"
+#include "core/analysis/RunAnalysis.h"
 #include "core/io/CodesJson.h"
 #include "core/io/Project.h"
-#include "core/sweep/RecordAnalysis.h"
+#include "ui/PlanarVertical.h"
 
 #include <chrono>
 #include <iostream>
@@ -16,16 +17,42 @@
 namespace kinstab::cli {
 
 namespace {
+AnalysisRequest checkRequest(const Project& p, const std::vector<CodeResult>& codes) {
+    AnalysisRequest request;
+    request.slab = p.slab;
+    request.codes = codes;
+    request.checkSearch = p.critical;
+    return request;
+}
+
+// The model the sine's check runs: the 1-DOF slab (none), or the planar slab of Furgerson 1980
+// ch. VI with the project's planar settings and its vertical record read. Throws InputError.
+std::optional<PlanarCase> planarModel(const Project& p) {
+    if (p.model != "planar") return std::nullopt;
+    return ui::projectPlanarCase(p.slab, p.planar);
+}
+
+// A project whose excitation is the enveloped sine: each code against A_crit(1/T) of its model.
+nlohmann::json sineCheckJson(const Project& p, const std::vector<CodeResult>& codes,
+                             const std::optional<PlanarCase>& planar) {
+    AnalysisRequest request = checkRequest(p, codes);
+    request.planar = planar;
+    request.parts.designCheck = true;
+    AnalysisControl control;
+    const AnalysisResult r = runAnalysis(request, control);
+    if (r.checkError) std::rethrow_exception(r.checkError);
+    return designCheckJson(*r.check);
+}
+
 // A project whose excitation is a record: each code against the record's critical peak.
 nlohmann::json recordCheckJson(const Project& p, const std::vector<CodeResult>& codes) {
-    RecordAnalysisInput in;
-    in.slab = p.slab;
-    in.record = *p.record;
-    in.search = p.critical;
-    in.codes = codes;
+    AnalysisRequest request = checkRequest(p, codes);
+    request.record = p.record;
+    request.parts.recordCheck = true;
     RecordAnalysis a;
     try {
-        a = analyseRecord(in);
+        AnalysisControl control;
+        a = *runAnalysis(request, control).record;
     } catch (const RecordError& e) {
         throw UsageError("excitation.record.file = '" + p.record->file + "': " + e.what());
     } catch (const std::invalid_argument& e) {
@@ -41,32 +68,37 @@ nlohmann::json recordCheckJson(const Project& p, const std::vector<CodeResult>& 
 }
 } // namespace
 
-// The design check of chapter V for a project: per code the top-floor ratio, A_crit(1/T) (or
-// the critical peak of the project's record), the margin and the verdict.
+// The design check of chapter V for a project: per code the top-floor ratio, A_crit(1/T) of the
+// project's model (or the critical peak of the project's record), the margin and the verdict.
 int runCheck(const ArgList& argv) {
     const Args args(argv, {"project"});
     if (!args.has("project")) throw UsageError("missing required flag --project");
     const Project p = projectFromFlag(args);
     if (p.codes.empty())
         throw UsageError("--project " + args.text("project") + ": the project selects no code");
-    if (p.model != "slab1d")
+    if (p.model != "slab1d" && p.record)
         throw UsageError("--project " + args.text("project") + ": model '" + p.model +
-                         "': the design check uses the slab1d model");
+                         "': the check against a record uses the slab1d model");
     const auto start = std::chrono::steady_clock::now();
     nlohmann::json j;
+    std::optional<PlanarCase> planar;
     try {
         const std::vector<CodeResult> codes = kinstab::runCodes(p.building, p.codes);
-        j = p.record ? recordCheckJson(p, codes)
-                     : designCheckJson(designCheck(codes, p.slab, p.critical));
+        planar = planarModel(p);
+        j = p.record ? recordCheckJson(p, codes) : sineCheckJson(p, codes, planar);
     } catch (const InputError& e) {
         throw inputUsageError(e);
     }
     j["project"] = p.name;
-    j["model"] = "slab1d";
-    j["solver"] = solverName(p.slab.solver);
-    if (!p.record) j["envelope"] = envelopeJson(p.slab);
-    j["mu"] = p.slab.slab.mu;
-    j["tstar"] = p.slab.tstar;
+    if (planar) {
+        j.update(planarCaseJson(*planar)); // model, solver, envelope, mu, t*, the planar inputs
+    } else {
+        j["model"] = "slab1d";
+        j["solver"] = solverName(p.slab.solver);
+        if (!p.record) j["envelope"] = envelopeJson(p.slab);
+        j["mu"] = p.slab.slab.mu;
+        j["tstar"] = p.slab.tstar;
+    }
     j["search"] = {{"max_amplitude", p.critical.to},
                    {"scan_step", p.critical.scanStep},
                    {"tolerance", p.critical.tolerance}};

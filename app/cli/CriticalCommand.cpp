@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/cli/AnalysisRuns.h"
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/JsonText.h"
@@ -7,8 +8,6 @@
 #include "app/cli/SearchFlags.h"
 #include "core/excitation/FrequencyRange.h"
 #include "core/io/ResultJson.h"
-#include "core/slab/FiniteResult.h"
-#include "core/sweep/CriticalAmplitude.h"
 
 #include <iostream>
 
@@ -35,18 +34,14 @@ int runCritical(const ArgList& argv) {
         throw UsageError("--mu " + args.text("mu", "0") +
                          ": A_crit needs friction (mu > 0); without it the slab slides at any "
                          "amplitude");
+    AnalysisRequest request;
+    request.slab = c;
+    request.criticalFrequencies = freqs;
+    request.criticalSearch = search;
     // Each run is checked before its verdict counts: a collapse with no finite time is an
     // internal error (exit 3), never an A_crit.
-    const PointFunction point = [&c](double amplitude, double frequency) {
-        const SlabResult s = runSlab1D(c, amplitude, frequency);
-        requireSound(s, caseName(c, amplitude, frequency));
-        return PointResult{s.outcome, s.tauC};
-    };
-    nlohmann::json crit = nlohmann::json::array();
-    for (double f : freqs) {
-        const CriticalResult r = criticalAmplitude(point, f, c.slab.mu, search);
-        crit.push_back(r.amplitude ? nlohmann::json(*r.amplitude) : nlohmann::json());
-    }
+    request.requireSoundRuns = true;
+    const nlohmann::json crit = criticalCurveJson(request);
     nlohmann::json j = {{"frequencies", freqs},
                         {"a_crit", crit},
                         {"model", "slab1d"},

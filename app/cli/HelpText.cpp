@@ -127,8 +127,9 @@ const char* kCodes =
 
 const char* kCheck =
     "usage: kinstab-cli check --project FILE\n"
-    "The design check of a project: each code's ratio against the critical amplitude at the\n"
-    "building's frequency 1/T; verdict 'overstress governs' or 'kinetic instability governs'.\n"
+    "The design check of a project: each code's ratio against the critical amplitude of the\n"
+    "project's model (slab1d or planar) at the building's frequency 1/T; verdict 'overstress\n"
+    "governs' or 'kinetic instability governs'.\n"
     "  --project FILE               a kinstab project (.json), e.g. the shipped examples\n";
 
 const char* kFriction =

@@ -3,11 +3,11 @@
 // 1-DOF model with keys added, never renamed: exit_side ("across" | "along", null unless
 // collapsed), tau_lift_off, max_abs_delta_y, residual_delta_y, and the planar case.
 
+#include "app/cli/AnalysisRuns.h"
 #include "app/cli/Commands.h"
 #include "app/cli/JsonText.h"
 #include "app/cli/PlanarFlags.h"
 #include "core/io/ResultJson.h"
-#include "core/sweep/CriticalAmplitude.h"
 
 #include <chrono>
 #include <iostream>
@@ -78,7 +78,9 @@ int runSimulatePlanar(const Args& args, double amplitude, double frequency, doub
 int runSurfacePlanar(const Args& args, const SweepGrid& grid, int threads,
                      const std::string& format) {
     const PlanarCase c = planarCaseFromFlags(args);
-    const SweepResult r = runSweep(grid, planarPoint(c), nullptr, threads);
+    AnalysisRequest request;
+    request.planar = c;
+    const SweepResult r = surfaceOf(request, grid, threads);
     if (format == "csv") {
         writeOutput(args, "o", sweepCsv(r, c.tauRef()));
         return 0;
@@ -108,12 +110,11 @@ int runSurfacePlanar(const Args& args, const SweepGrid& grid, int threads,
 int runCriticalPlanar(const Args& args, const std::vector<double>& frequencies,
                       const CriticalSearch& search) {
     const PlanarCase c = planarCaseFromFlags(args);
-    const PointFunction point = planarPoint(c);
-    nlohmann::json crit = nlohmann::json::array();
-    for (double f : frequencies) {
-        const CriticalResult r = criticalAmplitude(point, f, planarNoSlipAmplitude(c), search);
-        crit.push_back(r.amplitude ? nlohmann::json(*r.amplitude) : nlohmann::json());
-    }
+    AnalysisRequest request;
+    request.planar = c;
+    request.criticalFrequencies = frequencies;
+    request.criticalSearch = search;
+    const nlohmann::json crit = criticalCurveJson(request);
     nlohmann::json j = planarCaseJson(c);
     j.update({{"frequencies", frequencies},
               {"a_crit", crit},

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/cli/AnalysisRuns.h"
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/JsonText.h"
@@ -25,7 +26,9 @@ int runSurface(const ArgList& argv) {
     if (isPlanar(args)) return runSurfacePlanar(args, grid, threads, format);
     const Slab1DCase c = slab1DCaseFromFlags(args);
 
-    const SweepResult r = runSweep(grid, slab1DPoint(c), nullptr, threads);
+    AnalysisRequest request;
+    request.slab = c;
+    const SweepResult r = surfaceOf(request, grid, threads);
     if (format == "table") {
         writeOutput(args, "o", sweepTable(r, c.tauRef()));
         return 0;

@@ -9,6 +9,8 @@
 
 namespace kinstab {
 
+struct PointResult; // core/sweep/Sweep.h
+
 class SweepControl {
 public:
     void cancel() { cancelled_.store(true, std::memory_order_relaxed); }
@@ -16,8 +18,9 @@ public:
 
     // Called from worker threads with (points done, total); keep it cheap and thread-safe.
     std::function<void(std::size_t, std::size_t)> onProgress;
-    // Called from worker threads when one point is finished (index into the grid).
-    std::function<void(std::size_t)> onPointDone;
+    // Called from worker threads when one grid point is finished: its index into the grid
+    // (row-major, as SweepResult::points) and its result.
+    std::function<void(std::size_t, const PointResult&)> onPointDone;
 
 private:
     std::atomic<bool> cancelled_{false};

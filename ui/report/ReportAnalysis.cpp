@@ -4,15 +4,13 @@
 #include "core/codes/CodeCatalog.h"
 
 #include "core/codes/CodeSet.h"
-#include "core/sweep/CriticalAmplitude.h"
 #include "core/sweep/ModelPoint.h"
 #include "ui/PlanarVertical.h"
-
-#include <QtConcurrent/QtConcurrentMap>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <map>
 
 namespace kinstab::ui::report {
@@ -51,17 +49,54 @@ SweepGrid mapGrid(const Project& p, const std::vector<CodeResult>& codes, std::o
     return {linspace(aLo, aHi, n), linspace(fLo, fHi, n)};
 }
 
-std::vector<std::optional<double>> criticalCurve(const ModelPoint& m, const CriticalSearch& s,
-                                                 const std::vector<double>& freqs, long& runs) {
-    const std::vector<CriticalResult> found =
-        QtConcurrent::blockingMapped<std::vector<CriticalResult>>(
-            freqs, [&](double f) { return criticalAmplitude(m.point, f, m.scanFrom, s); });
-    std::vector<std::optional<double>> out;
-    for (const CriticalResult& r : found) {
-        runs += r.runs;
-        out.push_back(r.amplitude);
+// γc(A) at the building frequency fd, up to past A_crit (the slice figure).
+SliceData designSlice(const Project& project, const ModelPoint& model,
+                      const DesignCheckResult& check, double fd, double step, SweepControl* control,
+                      long& runs) {
+    SliceData slice;
+    slice.frequency = fd;
+    double aCrit = 0;
+    for (const CodeVerdict& v : check.codes)
+        if (v.aCrit && std::abs(v.frequencyHz - fd) < 1e-12)
+            aCrit = *v.aCrit, slice.aCrit = v.aCrit;
+    const double hi = std::max(project.grid.amplitudes.back(), 1.25 * aCrit);
+    // From one step above 0: an amplitude of 0 is no excitation at all.
+    const int steps = static_cast<int>(std::ceil(hi / step));
+    const SweepGrid g{linspace(hi / steps, hi, steps), {fd}};
+    const SweepResult r = runSweep(g, model.point, control);
+    runs += static_cast<long>(r.completed);
+    const SurfaceData s = surfaceFromSweep(r, model.tauRef);
+    slice.amplitudes = s.amplitudes;
+    slice.gamma = s.gamma;
+    return slice;
+}
+
+// A_crit(f) over the map's frequencies (the overlay of the contour map).
+void criticalOverlay(AnalysisRequest request, const CriticalSearch& search, AnalysisControl& ctl,
+                     ReportAnalysis& a) {
+    request.parts = AnalysisParts{};
+    request.parts.criticalCurve = true;
+    request.criticalFrequencies = a.overlay.critFrequencies;
+    request.criticalSearch = search;
+    const AnalysisResult curve = runAnalysis(request, ctl);
+    if (!curve.critical) return;
+    a.overlay.critAmplitude = curve.critical->amplitude;
+    a.critRuns = curve.critical->runs;
+}
+
+// The project's record: single run, critical peak, verdicts; a bad record is a ProjectError.
+std::optional<RecordAnalysis> recordCheck(const Project& project, AnalysisRequest request,
+                                          AnalysisControl& ctl) {
+    request.parts = AnalysisParts{};
+    request.parts.recordCheck = true;
+    request.record = project.record;
+    try {
+        return runAnalysis(request, ctl).record;
+    } catch (const RecordError& e) {
+        throw ProjectError("excitation.record.file = '" + project.record->file + "': " + e.what());
+    } catch (const std::invalid_argument& e) {
+        throw ProjectError(e.what());
     }
-    return out;
 }
 
 SolverCrossCheck crossCheck(const Project& p, const SweepResult& exact, double steps) {
@@ -99,8 +134,11 @@ std::optional<double> designFrequency(const Project& project, const DesignCheckR
 }
 
 ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptions& options,
-                                     SweepControl* control) {
+                                     AnalysisControl* outside) {
     if (const std::string e = validateProject(project); !e.empty()) throw ProjectError(e);
+    AnalysisControl own;
+    AnalysisControl& ctl = outside ? *outside : own;
+    SweepControl* control = &ctl.sweepControl(); // of the figure sweeps, the slice and floors
     const auto t0 = std::chrono::steady_clock::now();
     ReportAnalysis a;
     const Slab1DCase& c = project.slab;
@@ -112,15 +150,24 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
     if (planarCase) a.planarSolver = planarCase->solver;
     a.scanFrom = model.scanFrom;
     a.codes = runCodes(project.building, project.codes);
-    auto t = std::chrono::steady_clock::now();
-    a.check = designCheck(a.codes, c, project.critical, model.point, model.scanFrom);
-    a.checkSeconds = secondsSince(t);
-    a.projectSweep = runSweep(project.grid, model.point, control);
+    AnalysisRequest request;
+    request.slab = c;
+    request.planar = planarCase;
+    request.grid = project.grid;
+    request.codes = a.codes;
+    request.checkSearch = project.critical;
+    request.parts.surface = true;
+    request.parts.designCheck = true;
+    const AnalysisResult sine = runAnalysis(request, ctl);
+    if (sine.checkError) std::rethrow_exception(sine.checkError);
+    a.check = sine.check.value_or(DesignCheckResult{});
+    a.checkSeconds = sine.checkSeconds;
+    a.projectSweep = *sine.surface;
 
     const std::optional<double> fd = designFrequency(project, a.check);
     const int n =
         planar ? std::min(options.figureGrid, options.planarFigureGrid) : options.figureGrid;
-    t = std::chrono::steady_clock::now();
+    const auto t = std::chrono::steady_clock::now();
     const SweepGrid net{
         linspace(project.grid.amplitudes.front(), project.grid.amplitudes.back(), n),
         linspace(project.grid.frequencies.front(), project.grid.frequencies.back(), n)};
@@ -129,39 +176,15 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
     a.figureSweepSeconds = secondsSince(t);
 
     a.overlay.critFrequencies = a.mapSurface.frequencies;
-    a.overlay.critAmplitude =
-        criticalCurve(model, project.critical, a.overlay.critFrequencies, a.critRuns);
+    criticalOverlay(request, project.critical, ctl, a);
     a.overlay.designFrequency = fd;
     for (const CodeVerdict& v : a.check.codes)
         a.overlay.codes.push_back({shortCodeName(v.code), v.ratio, v.frequencyHz});
 
-    if (fd) {
-        a.slice.frequency = *fd;
-        double aCrit = 0;
-        for (const CodeVerdict& v : a.check.codes)
-            if (v.aCrit && std::abs(v.frequencyHz - *fd) < 1e-12)
-                aCrit = *v.aCrit, a.slice.aCrit = v.aCrit;
-        const double hi = std::max(project.grid.amplitudes.back(), 1.25 * aCrit);
-        // From one step above 0: an amplitude of 0 is no excitation at all.
-        const int steps = static_cast<int>(std::ceil(hi / options.sliceStep));
-        const SweepGrid g{linspace(hi / steps, hi, steps), {*fd}};
-        const SweepResult r = runSweep(g, model.point, control);
-        a.figureRuns += static_cast<long>(r.completed);
-        const SurfaceData s = surfaceFromSweep(r, model.tauRef);
-        a.slice.amplitudes = s.amplitudes;
-        a.slice.gamma = s.gamma;
-    }
-    if (project.record) {
-        RecordAnalysisInput in{c, *project.record, project.critical, a.codes, true, false};
-        try {
-            a.record = analyseRecord(in, control);
-        } catch (const RecordError& e) {
-            throw ProjectError("excitation.record.file = '" + project.record->file +
-                               "': " + e.what());
-        } catch (const std::invalid_argument& e) {
-            throw ProjectError(e.what());
-        }
-    }
+    if (fd)
+        a.slice =
+            designSlice(project, model, a.check, *fd, options.sliceStep, control, a.figureRuns);
+    if (project.record) a.record = recordCheck(project, request, ctl);
     a.floors = computeReportFloors(project, control);
     // The paper's RK4 solver is of the 1-DOF model only.
     if (options.crossCheck && c.solver == SolverKind::Exact && !planar)

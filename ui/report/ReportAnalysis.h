@@ -5,6 +5,7 @@
 // frequency and a solver cross-check for the numerics section. The GUI can fill the same
 // struct from what it already computed; the CLI calls computeReportAnalysis.
 
+#include "core/analysis/RunAnalysis.h"
 #include "core/building/FloorAnalysis.h"
 #include "core/codes/CodeResult.h"
 #include "core/codes/DesignCheck.h"
@@ -64,8 +65,10 @@ struct AnalysisOptions {
 };
 
 // Throws kinstab::InputError / ProjectError on a bad project (nothing is computed then).
+// The sweep, the check, A_crit(f) and the record go through core's analysis entry point
+// (core/analysis/RunAnalysis.h); control cancels all of it.
 ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptions& options = {},
-                                     SweepControl* control = nullptr);
+                                     AnalysisControl* control = nullptr);
 
 // The floor-motion analysis of a project with "floors" and a record (FloorsSection.cpp);
 // none otherwise or after a cancel. Throws ProjectError on an unreadable record.

@@ -84,14 +84,15 @@ ReportExport::ReportExport(QWidget* parent, const Project& project, const QStrin
         [project](JobContext& job) {
             AnalysisRun r;
             try {
-                r.analysis = computeReportAnalysis(project, {}, &job.control);
+                auto& analysis = static_cast<AnalysisJobContext&>(job).analysis;
+                r.analysis = computeReportAnalysis(project, {}, &analysis);
             } catch (const std::exception& e) {
                 r.error = QString::fromUtf8(e.what());
             }
             r.cancelled = job.isCancelled();
             return r;
         },
-        [this](const AnalysisRun& run) { write(run); });
+        [this](const AnalysisRun& run) { write(run); }, std::make_shared<AnalysisJobContext>());
 }
 
 ReportExport::~ReportExport() {
