@@ -7,7 +7,7 @@
 #include "ui/MainWindow.h"
 #include "ui/ModelPanel.h"
 #include "ui/PlanarHistoryChart.h"
-#include "ui/PlanarVertical.h"
+#include "report/PlanarVertical.h"
 
 #include <QLabel>
 #include <QStackedWidget>

@@ -2,7 +2,7 @@
 #include "ui/ModelPanel.h"
 
 #include "ui/NumberField.h"
-#include "ui/PlanarVertical.h"
+#include "report/PlanarVertical.h"
 #include "ui/RecordPreview.h"
 
 #include <QComboBox>

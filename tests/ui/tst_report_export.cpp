@@ -7,7 +7,7 @@
 #include "core/sweep/CriticalAmplitude.h"
 #include "core/sweep/Sweep.h"
 #include "ui/MainWindow.h"
-#include "ui/report/ReportExport.h"
+#include "ui/ReportExport.h"
 
 #include <QApplication>
 #include <QMessageBox>
