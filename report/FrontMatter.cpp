@@ -6,6 +6,8 @@
 
 #include <QPainter>
 
+#include <algorithm>
+
 namespace kinstab::ui::report {
 
 namespace {
@@ -16,44 +18,42 @@ QString orBlank(const std::string& s) {
 
 void addRevisionTable(ReportDocument& doc, const ProjectInfo& info) {
     if (info.revisions.empty()) return;
-    doc.addHeading(QStringLiteral("Revisions"), 2);
-    Table t{{"rev.", "date", "description"}, {}, {0.8, 1.4, 6}, {}, {}};
+    Table t{{"revision", "date", "description"}, {}, {1, 1.4, 6}, {}, {}};
     for (const Revision& r : info.revisions)
         t.rows.push_back({qs(r.id), qs(r.date), qs(r.description)});
     t.boldRows.push_back(static_cast<int>(t.rows.size()) - 1); // the current issue
     doc.addTable(t);
 }
 
-// One box: a role, the name, then lines to sign and date; the engineer's box leaves room for
-// the seal or stamp.
+// One box of the signature block, 12 units high: the role, the name, then lines to sign and date;
+// the engineer's box keeps room on the right for the seal or stamp.
 void paintSignatureBox(QPainter& p, const QRectF& r, const QString& role, const QString& name,
                        bool seal) {
-    const double u = r.height() / 20.0; // layout unit: the block is 20 units high
-    p.setPen(QPen(Qt::black, u * 0.08));
+    const double u = r.height() / 12.0;
+    p.setPen(QPen(Qt::black, u * 0.05));
     p.setBrush(Qt::NoBrush);
     p.drawRect(r);
     QFont f = p.font();
-    f.setPixelSize(static_cast<int>(u * 1.3));
+    f.setPixelSize(std::max(1, static_cast<int>(u * 1.15)));
     f.setBold(true);
     p.setFont(f);
-    const QRectF text = r.adjusted(u, u * 0.6, -u, 0);
-    p.drawText(QRectF(text.left(), text.top(), text.width(), u * 2), Qt::AlignLeft, role);
+    const double left = r.left() + u * 0.6;
+    const double width = r.width() - u * (seal ? 7.0 : 1.2);
+    p.drawText(QRectF(left, r.top() + u * 0.4, width, u * 1.5), Qt::AlignLeft, role);
     f.setBold(false);
     p.setFont(f);
-    p.drawText(QRectF(text.left(), text.top() + u * 2, text.width(), u * 4),
-               Qt::AlignLeft | Qt::TextWordWrap, name);
-    const double lineLeft = text.left(), lineRight = text.right();
-    for (const auto& [label, y] : {std::pair{QStringLiteral("signature"), r.bottom() - u * 5.5},
-                                   std::pair{QStringLiteral("date"), r.bottom() - u * 1.8}}) {
-        p.drawLine(QPointF(lineLeft, y), QPointF(lineRight, y));
-        p.drawText(QRectF(lineLeft, y + u * 0.2, text.width(), u * 1.6), Qt::AlignLeft, label);
+    p.drawText(QRectF(left, r.top() + u * 1.9, width, u * 3.0), Qt::AlignLeft | Qt::TextWordWrap,
+               name);
+    for (const auto& [label, y] : {std::pair{QStringLiteral("signature"), r.top() + u * 8.0},
+                                   std::pair{QStringLiteral("date"), r.top() + u * 10.3}}) {
+        p.drawLine(QPointF(left, y), QPointF(left + width, y));
+        p.drawText(QRectF(left, y + u * 0.1, width, u * 1.5), Qt::AlignLeft, label);
     }
     if (!seal) return;
-    p.setPen(QPen(Qt::gray, u * 0.08, Qt::DashLine));
-    const double d = u * 7.5;
-    p.drawEllipse(QRectF(r.center().x() - d / 2, r.top() + u * 6.2, d, d));
-    p.drawText(QRectF(r.center().x() - d / 2, r.top() + u * 6.2, d, d), Qt::AlignCenter,
-               QStringLiteral("seal"));
+    p.setPen(QPen(Qt::gray, u * 0.05, Qt::DashLine));
+    const QRectF circle(r.right() - u * 6.2, r.top() + u * 2.0, u * 5.6, u * 5.6);
+    p.drawEllipse(circle);
+    p.drawText(circle, Qt::AlignCenter, QStringLiteral("seal"));
 }
 
 } // namespace
@@ -78,7 +78,7 @@ void addSignatureBlock(ReportDocument& doc, const Project& p) {
                         paintSignatureBox(pa, box.translated(2 * (w + gap), 0),
                                           QStringLiteral("Engineer of record"), engineer, true);
                     },
-                    0.26, QString()});
+                    0.155, QString()});
 }
 
 void addAcceptanceCriterion(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {
@@ -95,8 +95,7 @@ void addAcceptanceCriterion(ReportDocument& doc, const Project& p, const ReportA
             "acceleration the code requires the structure to withstand (kinetic instability "
             "governs), and the slab seating must be lengthened or the slab restrained. The "
             "verdict does not cover the strength of the members, the walls or the slab "
-            "themselves, floors other than the top floor, nor the limitations listed under "
-            "\"Assumptions and limitations\".")
+            "themselves, nor floors other than the top floor.")
             .arg(crit));
     doc.addParagraph(
         QStringLiteral("This report was produced by software (kinstab %1). Its inputs and results "

@@ -140,7 +140,7 @@ void ec8Rows(Table& t, const Eurocode8Inputs& in) {
 Table codeInputsTable(const CodeSelection& codes) {
     Table t{{"code", "input", "symbol", "value", "unit"},
             {},
-            {1.2, 3.4, 1.0, 1.8, 0.6},
+            {1.1, 3.1, 0.8, 2.5, 0.5},
             {Align::Left, Align::Left, Align::Left, Align::Right, Align::Left},
             {}};
     if (codes.ubc1976) ubc1976Rows(t, *codes.ubc1976);

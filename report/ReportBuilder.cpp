@@ -17,16 +17,18 @@ void addField(TitleBlock& t, const QString& key, const std::string& value) {
 }
 
 void addInfoFields(TitleBlock& t, const ProjectInfo& in) {
-    addField(t, QStringLiteral("Project number"), in.projectNumber);
+    addField(t, QStringLiteral("Project no."), in.projectNumber);
     addField(t, QStringLiteral("Client"), in.client);
     addField(t, QStringLiteral("Site"), in.siteAddress);
-    addField(t, QStringLiteral("Firm"), in.firm);
     std::string engineer = in.engineer;
     if (!in.registration.empty())
         engineer += (engineer.empty() ? "" : ", ") + std::string("reg. no. ") + in.registration;
-    addField(t, QStringLiteral("Engineer of record"), engineer);
-    addField(t, QStringLiteral("Prepared by"), in.preparedBy);
-    addField(t, QStringLiteral("Checked by"), in.checkedBy);
+    addField(t, QStringLiteral("Engineer"), engineer);
+    addField(t, QStringLiteral("Firm"), in.firm);
+    if (!in.preparedBy.empty() || !in.checkedBy.empty())
+        addField(t, QStringLiteral("Prepared by"),
+                 (in.preparedBy.empty() ? "—" : in.preparedBy) + ", checked by " +
+                     (in.checkedBy.empty() ? "—" : in.checkedBy));
     if (!in.revisions.empty()) {
         const Revision& r = in.revisions.back();
         addField(t, QStringLiteral("Revision"), r.id + ", " + r.date);
@@ -48,7 +50,7 @@ TitleBlock titleBlock(const ReportSource& s, const ReportAnalysis& a) {
                  QCryptographicHash::hash(s.fileContents, QCryptographicHash::Sha256).toHex())});
     t.fields.push_back({QStringLiteral("Date"),
                         s.created.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm 'UTC'"))});
-    t.fields.push_back({QStringLiteral("Application"), QStringLiteral("kinstab " KINSTAB_VERSION)});
+    // The application and version stand in the footer of every page and in the disclaimer.
     t.fields.push_back({QStringLiteral("Model"), modelName(s.project)});
     QStringList codes;
     for (const CodeResult& r : a.codes)

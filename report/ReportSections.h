@@ -25,6 +25,7 @@ inline QString qs(const std::string& s) {
     return QString::fromStdString(s);
 }
 QString gammaLabel(const Slab1DCase& c); // "γc = τmax/τc"
+QString scaleLabel(TauScale s);          // "τ_max (peak of the envelope)", not the key tau_max
 
 // Page 1 (FrontMatter.cpp): the revision table under the title block, and after the verdict the
 // signature/seal block (prepared by, checked by, engineer of record).

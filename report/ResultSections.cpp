@@ -64,7 +64,7 @@ void addSurfaceSections(ReportDocument& doc, const Project& p, const ReportAnaly
             "(|δ| > %1) and τ_ref = %2 = %3; γc = 0 where the slab stays on (stable). Larger γc "
             "means an earlier collapse, a greater hazard. Model: %7, μ = %4, t* = %5 s, "
             "%6.")
-            .arg(num(p.slab.slab.limit, 2), qs(tauScaleName(p.slab.scale)), num(p.slab.tauRef(), 2),
+            .arg(num(p.slab.slab.limit, 2), scaleLabel(p.slab.scale), num(p.slab.tauRef(), 2),
                  num(p.slab.slab.mu, 3), num(p.slab.tstar, 4), env,
                  p.model == "planar" ? QStringLiteral("planar slab, f_y = %1 Hz, A_y/A_x = %2")
                                            .arg(num(p.planar.fyHz, 3), num(p.planar.ayRatio, 3))
