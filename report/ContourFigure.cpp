@@ -108,7 +108,8 @@ void paintColourBar(QPainter& p, const PlotFrame& fr, const std::vector<double>&
     p.drawText(QPointF(x, plot.top() - 1.2 * u), label.section(QLatin1Char(' '), 0, 0));
 }
 
-void paintOverlay(QPainter& p, const PlotFrame& fr, const DesignOverlay& o) {
+// The overlay's lines and points; returns their legend, drawn below the plot by the caller.
+std::vector<LegendEntry> paintOverlay(QPainter& p, const PlotFrame& fr, const DesignOverlay& o) {
     const FigureScale& sc = fr.scale();
     const double u = sc.unit();
     const QRectF plot = fr.plot();
@@ -135,17 +136,15 @@ void paintOverlay(QPainter& p, const PlotFrame& fr, const DesignOverlay& o) {
         p.drawLine(QPointF(plot.left(), y), QPointF(plot.right(), y));
     }
     std::vector<LegendEntry> legend{{QStringLiteral("A_crit(f)"), Qt::black, Qt::SolidLine}};
-    double rightmost = plot.left();
     for (std::size_t k = 0; k < o.codes.size(); ++k) {
         const CodeMark& c = o.codes[k];
         const double x = fr.mapX(c.ratio);
         if (x < plot.left() || x > plot.right()) continue;
-        const QColor colour = seriesColour(static_cast<int>(k));
+        const QColor colour = o.codes[k].colour;
         QPen dash = sc.pen(colour, 0.3);
         dash.setStyle(Qt::DashLine);
         p.setPen(dash);
         p.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
-        rightmost = std::max(rightmost, x);
         legend.push_back(
             {QStringLiteral("%1: %2").arg(c.label).arg(c.ratio, 0, 'f', 3), colour, Qt::DashLine});
     }
@@ -153,14 +152,18 @@ void paintOverlay(QPainter& p, const PlotFrame& fr, const DesignOverlay& o) {
         const CodeMark& c = o.codes[k];
         if (c.frequency <= 0) continue;
         p.setPen(sc.pen(Qt::black, 0.15));
-        p.setBrush(seriesColour(static_cast<int>(k)));
+        p.setBrush(o.codes[k].colour);
         p.drawEllipse(fr.map(c.ratio, c.frequency), 0.8 * u, 0.8 * u);
     }
     if (o.designFrequency)
         legend.push_back({QStringLiteral("f = 1/T = %1 Hz").arg(*o.designFrequency, 0, 'f', 3),
                           QColor(30, 60, 160), Qt::DotLine});
-    // The legend sits in the stable region, right of the code lines.
-    drawLegend(p, sc, QPointF(rightmost + 1.5 * u, plot.top() + 1.5 * u), legend);
+    return legend;
+}
+
+// Entries the overlay will list: A_crit(f), the codes in range and f = 1/T.
+std::size_t legendSize(const DesignOverlay& o) {
+    return 1 + o.codes.size() + (o.designFrequency ? 1 : 0);
 }
 
 } // namespace
@@ -168,7 +171,11 @@ void paintOverlay(QPainter& p, const PlotFrame& fr, const DesignOverlay& o) {
 void paintContourMap(QPainter& p, const QRectF& area, const SurfaceData& s,
                      const DesignOverlay& overlay, const QString& gammaLabel) {
     if (s.amplitudes.size() < 2 || s.frequencies.size() < 2) return;
-    const PlotFrame fr(area, s.amplitudes.front(), s.amplitudes.back(), s.frequencies.front(),
+    // The legend goes in a strip under the axes, never over the bands or the design points.
+    const FigureScale scale{area.width()};
+    const double strip = legendRowsHeight(scale, legendSize(overlay), 3);
+    const QRectF plotArea = area.adjusted(0, 0, 0, -strip);
+    const PlotFrame fr(plotArea, s.amplitudes.front(), s.amplitudes.back(), s.frequencies.front(),
                        s.frequencies.back(), 13);
     // Band edges: 0 (stable) | a sliver above 0 | round steps up to the largest γc.
     const double top = std::max(s.maxGamma(), 1e-3);
@@ -184,7 +191,10 @@ void paintContourMap(QPainter& p, const QRectF& area, const SurfaceData& s,
     levels.front() = 0;
     fr.drawAxes(p, QStringLiteral("peak floor acceleration A (g)"),
                 QStringLiteral("frequency f (Hz)"));
-    paintOverlay(p, fr, overlay);
+    const std::vector<LegendEntry> legend = paintOverlay(p, fr, overlay);
+    drawLegendRows(p, fr.scale(),
+                   QRectF(fr.plot().left(), plotArea.bottom(), fr.plot().width(), strip), legend,
+                   3);
     paintColourBar(p, fr, levels, gammaLabel);
     p.restore();
 }

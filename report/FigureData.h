@@ -3,9 +3,11 @@
 // What the report's figures draw: γc on an (A, f) grid and the design overlays. Plain values,
 // filled from a core SweepResult and the design check.
 
+#include <QColor>
 #include <QString>
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace kinstab {
@@ -29,7 +31,11 @@ struct CodeMark {
     QString label;        // "UBC 1976"
     double ratio = 0;     // F_top / w_top
     double frequency = 0; // Hz: 1 / T of this code's period (the design point)
+    QColor colour;        // the code's colour, the GUI's too (core/codes/CodeCatalog.h)
 };
+
+// The colour of the code with JSON key `key` from core's catalogue; grey for an unknown key.
+QColor codeColour(const std::string& key);
 
 struct DesignOverlay {
     std::vector<double> critFrequencies;              // Hz

@@ -100,7 +100,7 @@ void addAcceptanceCriterion(ReportDocument& doc, const Project& p, const ReportA
     doc.addParagraph(
         QStringLiteral("This report was produced by software (kinstab %1). Its inputs and results "
                        "must be checked by a qualified engineer, who is responsible for the "
-                       "design and signs below or on the title block.")
+                       "design and signs it in the block on page 1.")
             .arg(QStringLiteral(KINSTAB_VERSION)),
         true);
 }

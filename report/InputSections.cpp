@@ -161,17 +161,22 @@ void addCodeSections(ReportDocument& doc, const Project& p, const ReportAnalysis
                 {3, 1.2, 1.4, 3.4},
                 {Align::Left, Align::Left, Align::Right, Align::Left},
                 {}};
+        // Ratios as everywhere else in the report (0.140, not 0.14); other coefficients as given.
         for (const TrailEntry& e : r.trail)
-            t.rows.push_back({qs(e.name), qs(e.symbol), coefficient(e.value), qs(e.clause)});
-        t.rows.push_back({"period used", "T", num(r.periodSeconds, 4) + " s", qs(r.periodSource)});
+            t.rows.push_back({qs(e.name), qs(e.symbol),
+                              qs(e.name).contains(QStringLiteral("ratio")) ? accelG(e.value)
+                                                                           : coefficient(e.value),
+                              qs(e.clause)});
+        t.rows.push_back(
+            {"period used", "T", coefficient(r.periodSeconds) + " s", qs(r.periodSource)});
         if (r.topRatioWithoutFt) {
             t.rows.push_back({"top-floor ratio without F_t (the paper's eq. 14)", "F_n/w_n",
-                              num(*r.topRatioWithoutFt, 3), "F_t left out of the top floor"});
+                              accelG(*r.topRatioWithoutFt), "F_t left out of the top floor"});
             t.boldRows.push_back(static_cast<int>(t.rows.size()) - 1);
             t.rows.push_back({"top-floor ratio with F_t (as the code requires)", "F_n/w_n",
-                              num(r.topRatio, 3), "F_t added to the top floor"});
+                              accelG(r.topRatio), "F_t added to the top floor"});
         } else {
-            t.rows.push_back({"top-floor ratio", "F_n/w_n", num(r.topRatio, 3), ""});
+            t.rows.push_back({"top-floor ratio", "F_n/w_n", accelG(r.topRatio), ""});
         }
         t.boldRows.push_back(static_cast<int>(t.rows.size()) - 1);
         doc.addTable(t);

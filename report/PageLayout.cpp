@@ -200,6 +200,13 @@ void PageLayout::layout() {
     if (!page.empty() || pages_.empty()) pages_.push_back(std::move(page));
 }
 
+int PageLayout::pageOf(std::size_t index) const {
+    for (std::size_t page = 0; page < pages_.size(); ++page)
+        for (const Piece& piece : pages_[page])
+            if (piece.block == static_cast<int>(index)) return static_cast<int>(page);
+    return -1;
+}
+
 void PageLayout::paintPage(QPainter& p, int page) const {
     if (page < 0 || page >= pageCount()) return;
     paintFrame(p, page);

@@ -35,6 +35,8 @@ public:
                const ReportStyle& style, double marginMm = 20.0);
 
     int pageCount() const { return static_cast<int>(pages_.size()); }
+    // The page (0-based) on which block `index` starts; -1 when it is not laid out.
+    int pageOf(std::size_t index) const;
     void paintPage(QPainter& p, int page) const;
 
 private:

@@ -47,10 +47,37 @@ QPen FigureScale::pen(const QColor& c, double widthUnits) const {
     return p;
 }
 
-QColor seriesColour(int k) {
-    static const QColor colours[] = {QColor(31, 78, 170), QColor(0, 128, 96), QColor(120, 50, 160),
-                                     QColor(20, 130, 170), QColor(150, 100, 0)};
-    return colours[k % 5];
+namespace {
+double legendRow(const FigureScale& sc) {
+    QFont f = sc.font(2.1);
+    return QFontMetricsF(f).height() * 1.15;
+}
+} // namespace
+
+double legendRowsHeight(const FigureScale& sc, std::size_t entries, int columns) {
+    const std::size_t rows =
+        (entries + static_cast<std::size_t>(columns) - 1) / static_cast<std::size_t>(columns);
+    return legendRow(sc) * static_cast<double>(rows) + sc.unit();
+}
+
+void drawLegendRows(QPainter& p, const FigureScale& sc, const QRectF& area,
+                    const std::vector<LegendEntry>& entries, int columns) {
+    const double u = sc.unit(), row = legendRow(sc), line = 4 * u;
+    const double column = area.width() / columns;
+    p.save();
+    p.setFont(sc.font(2.1));
+    const QFontMetricsF fm(p.font());
+    for (std::size_t k = 0; k < entries.size(); ++k) {
+        const double x = area.left() + column * static_cast<double>(k % columns);
+        const double y = area.top() + 0.5 * u + row * (static_cast<double>(k / columns) + 0.5);
+        QPen pen = sc.pen(entries[k].colour, 0.35);
+        pen.setStyle(entries[k].style);
+        p.setPen(pen);
+        p.drawLine(QPointF(x, y), QPointF(x + line - u, y));
+        p.setPen(entries[k].colour);
+        p.drawText(QPointF(x + line, y + fm.ascent() / 2 - fm.descent() / 2), entries[k].label);
+    }
+    p.restore();
 }
 
 void drawLegend(QPainter& p, const FigureScale& sc, const QPointF& at,

@@ -25,9 +25,6 @@ struct FigureScale {
     QPen pen(const QColor& c, double widthUnits) const;
 };
 
-// Colours for the code lines: distinct, dark enough for text on white.
-QColor seriesColour(int k);
-
 struct LegendEntry {
     QString label;
     QColor colour;
@@ -37,6 +34,12 @@ struct LegendEntry {
 // A boxed legend with its top-left corner at `at` (or its top-right when alignRight).
 void drawLegend(QPainter& p, const FigureScale& sc, const QPointF& at,
                 const std::vector<LegendEntry>& entries, bool alignRight = false);
+
+// The same entries in rows of `columns` across the strip `area` (below a plot, outside its data);
+// legendRowsHeight gives the height the strip needs.
+double legendRowsHeight(const FigureScale& sc, std::size_t entries, int columns);
+void drawLegendRows(QPainter& p, const FigureScale& sc, const QRectF& area,
+                    const std::vector<LegendEntry>& entries, int columns);
 
 class PlotFrame {
 public:

@@ -133,7 +133,8 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
         criticalCurve(model, project.critical, a.overlay.critFrequencies, a.critRuns);
     a.overlay.designFrequency = fd;
     for (const CodeVerdict& v : a.check.codes)
-        a.overlay.codes.push_back({shortCodeName(v.code), v.ratio, v.frequencyHz});
+        a.overlay.codes.push_back(
+            {shortCodeName(v.code), v.ratio, v.frequencyHz, codeColour(v.code)});
 
     if (fd) {
         a.slice.frequency = *fd;

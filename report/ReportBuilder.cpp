@@ -69,9 +69,10 @@ ReportDocument buildReportDocument(const ReportSource& s, const ReportAnalysis& 
                    s.created.toUTC().toString(QStringLiteral("yyyy-MM-dd"));
     doc.addTitle(titleBlock(s, a));
     addRevisions(doc, p);
+    addSignatureBlock(doc, p); // with the title block, so that the signed page is page 1
     addSummary(doc, p, a);
     addAcceptanceCriterion(doc, p, a);
-    addSignatureBlock(doc, p);
+    doc.markContents();
     for (const SectionEntry& e : sectionCatalog())
         if (s.sections.count(e.key)) e.add(doc, p, a);
     return doc;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "report/ReportDocument.h"
 
+#include <algorithm>
+#include <iterator>
 #include <utility>
 
 namespace kinstab::ui::report {
@@ -38,6 +40,15 @@ void ReportDocument::addFigure(Figure f) {
 void ReportDocument::addDrawing(Figure f) {
     Block b{Block::Kind::Figure, {}, {}, {}, std::move(f), {}};
     blocks_.push_back(std::move(b));
+}
+
+ReportDocument ReportDocument::withInserted(std::size_t at, std::vector<Block> extra) const {
+    ReportDocument d = *this;
+    at = std::min(at, d.blocks_.size());
+    d.blocks_.insert(d.blocks_.begin() + static_cast<std::ptrdiff_t>(at),
+                     std::make_move_iterator(extra.begin()), std::make_move_iterator(extra.end()));
+    d.contentsAt_.reset();
+    return d;
 }
 
 void ReportDocument::addPageBreak() {

@@ -11,6 +11,7 @@
 #include <QStringList>
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace kinstab::ui::report {
@@ -75,11 +76,17 @@ public:
     void addFigure(Figure f);  // numbers the caption: "Figure n. ..."
     void addDrawing(Figure f); // a form or block drawn in place (the signature block): unnumbered
     void addPageBreak();
+    // Where a table of contents goes if the report turns out long (report/TableOfContents.h).
+    void markContents() { contentsAt_ = blocks_.size(); }
+    std::optional<std::size_t> contentsAt() const { return contentsAt_; }
+    // A copy with `extra` inserted before block `at`.
+    ReportDocument withInserted(std::size_t at, std::vector<Block> extra) const;
 
     const std::vector<Block>& blocks() const { return blocks_; }
 
 private:
     std::vector<Block> blocks_;
+    std::optional<std::size_t> contentsAt_;
     int sections_ = 0;
     int figures_ = 0;
 };

@@ -35,6 +35,8 @@ void addSignatureBlock(ReportDocument& doc, const Project& p);
 void addAcceptanceCriterion(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 // The modelling assumptions that apply to this project, generated from it (AssumptionsSection.cpp).
 void addAssumptionsSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
+// The symbols used, with meaning and unit (SymbolTable.cpp).
+void addSymbolTable(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 // The design-check detail; the verdict itself stays on page 1 (ResultSections.cpp).
 void addCheckSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 // Page 1: the one verdict and the excitation it rests on (SummarySection.cpp).

@@ -2,6 +2,7 @@
 #include "report/ReportWriter.h"
 
 #include "core/io/AtomicFile.h"
+#include "report/TableOfContents.h"
 
 #include <QBuffer>
 #include <QDir>
@@ -25,7 +26,11 @@ int renderReportPdf(const ReportDocument& doc, PaperSize paper, QByteArray& byte
     ReportStyle style;
     style.dpi = pdf.resolution();
     const QRectF page(0, 0, pdf.width(), pdf.height());
-    const PageLayout layout(doc, &pdf, page, style);
+    const auto layoutOf = [&](const ReportDocument& d) {
+        return std::make_unique<PageLayout>(d, &pdf, page, style);
+    };
+    const ReportDocument printed = withContents(doc, layoutOf);
+    const PageLayout layout(printed, &pdf, page, style);
     for (int k = 0; k < layout.pageCount(); ++k) {
         if (k > 0) pdf.newPage();
         layout.paintPage(painter, k);

@@ -13,6 +13,7 @@ namespace {
 // A new section (a study, a further check) is one row here and one add function.
 constexpr SectionEntry kSections[] = {
     {"assumptions", "Assumptions and limitations", true, addAssumptionsSection},
+    {"symbols", "Symbols", true, addSymbolTable},
     {"inputs", "Inputs", true, addInputSections},
     {"codes", "Building codes: top-floor force ratio", true, addCodeSections},
     {"excitation", "Excitation (enveloped sine)", true, addExcitationSection},

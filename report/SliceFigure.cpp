@@ -62,7 +62,7 @@ void paintSlice(QPainter& p, const QRectF& area, const SliceData& s,
                           QColor(200, 30, 30), Qt::SolidLine});
     }
     for (std::size_t k = 0; k < codes.size(); ++k) {
-        const QColor colour = seriesColour(static_cast<int>(k));
+        const QColor colour = codes[k].colour;
         verticalLine(p, fr, codes[k].ratio, colour, Qt::DashLine);
         rightmost = std::max(rightmost, fr.mapX(codes[k].ratio));
         legend.push_back(

@@ -159,9 +159,10 @@ const char* kReport =
     "  --page a4|letter             paper size [a4]\n"
     "  --figure-grid N              grid points per axis of the surface figure [41]\n"
     "  --sections LIST              optional sections, comma-separated, or all [all]:\n"
-    "                               assumptions, inputs, codes, excitation, record, floors,\n"
-    "                               surface, check, numerics, references (title block, verdict\n"
-    "                               and signature block are always printed)\n";
+    "                               assumptions, symbols, inputs, codes, excitation, record,\n"
+    "                               floors, surface, check, numerics, references (the title\n"
+    "                               block, the verdict and the signature block are always\n"
+    "                               printed)\n";
 
 const char* kFloors =
     "usage: kinstab-cli floors --project FILE [--record FILE] [--stiffness uniform|weight]\n"

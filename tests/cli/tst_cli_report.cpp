@@ -18,11 +18,12 @@ namespace {
 const QString kProject =
     QStringLiteral(KINSTAB_SOURCE_DIR "/resources/examples/paper-16-story.json");
 
-// The layout of this report for the example project: title + summary, inputs, codes,
-// excitation, figures, γc table, slice, check, numerics, references. A change here means the
-// layout changed: look at the pages (pdftoppm) before updating it.
-constexpr int kPagesA4 = 8;
-constexpr int kPagesLetter = 9;
+// The layout of this report for the example project: title block, verdict and signature block;
+// contents; assumptions, symbols, inputs, codes, excitation, figures, γc table, slice, check,
+// numerics appendix, references. A change here means the layout changed: look at the pages
+// (pdftoppm) before updating it.
+constexpr int kPagesA4 = 10;
+constexpr int kPagesLetter = 12;
 
 QString pdfText(const QString& pdf) {
     const Run r = run("pdftotext", {"-layout", pdf, "-"});
@@ -135,8 +136,8 @@ private slots:
         QCOMPARE_LT(pdfPages(pdf), pdfPages(a4_));
         // The help names every section key.
         const QString help = QString::fromUtf8(cli({"report", "--help"}).out);
-        for (const char* key : {"assumptions", "inputs", "codes", "excitation", "record", "floors",
-                                "surface", "check", "numerics", "references"})
+        for (const char* key : {"assumptions", "symbols", "inputs", "codes", "excitation", "record",
+                                "floors", "surface", "check", "numerics", "references"})
             QVERIFY2(help.contains(QString::fromUtf8(key)), key);
     }
 

@@ -162,7 +162,7 @@ private slots:
         } catch (const ReportError& e) {
             const QString m = QString::fromUtf8(e.what());
             QVERIFY2(m.contains("'verdict' is not a report section"), e.what());
-            QVERIFY2(m.contains("assumptions, inputs"), e.what());
+            QVERIFY2(m.contains("assumptions, symbols, inputs"), e.what());
         }
         QVERIFY_THROWS_EXCEPTION(ReportError, parseSections(" , "));
     }
