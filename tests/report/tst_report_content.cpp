@@ -8,7 +8,7 @@
 #include "report/ReportWriter.h"
 #include "report/SectionCatalog.h"
 
-#include "PdfText.h"
+#include "ReportReading.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -19,16 +19,6 @@ using namespace kinstab::ui::report;
 namespace {
 
 const std::string kExamples = KINSTAB_SOURCE_DIR "/resources/examples/";
-
-// Small figure grids: the tests read words, not figures.
-AnalysisOptions quick() {
-    AnalysisOptions o;
-    o.figureGrid = 7;
-    o.planarFigureGrid = 5;
-    o.sliceStep = 0.05;
-    o.crossCheck = false;
-    return o;
-}
 
 } // namespace
 
@@ -41,7 +31,7 @@ class TestReportContent : public QObject {
         ReportSource s{p, "example.json", {}};
         s.sections = sections;
         const QString pdf = dir_.filePath("report.pdf");
-        const int n = writeReport(s, computeReportAnalysis(p, quick()), pdf, PaperSize::A4);
+        const int n = writeReport(s, computeReportAnalysis(p, quickAnalysis()), pdf, PaperSize::A4);
         if (pages) *pages = n;
         return flat(pdfText(pdf));
     }
@@ -56,7 +46,7 @@ private slots:
         const Project p = loadProject(kExamples + "paper-16-story.json");
         ReportSource s{p, "paper-16-story.json", {}};
         const QString pdf = dir_.filePath("meta.pdf");
-        writeReport(s, computeReportAnalysis(p, quick()), pdf, PaperSize::A4);
+        writeReport(s, computeReportAnalysis(p, quickAnalysis()), pdf, PaperSize::A4);
         const QString page1 = flat(pdfText(pdf, 1, 1));
         for (const char* field :
              {"Project no. EX-1980-016", "Client Example Property Owner LLC (example client)",
@@ -131,7 +121,7 @@ private slots:
         const QString text =
             reportText(loadProject(kExamples + "paper-16-story.json"), defaultSections());
         const Project p = loadProject(kExamples + "paper-16-story.json");
-        const ReportAnalysis a = computeReportAnalysis(p, quick());
+        const ReportAnalysis a = computeReportAnalysis(p, quickAnalysis());
         QCOMPARE(a.check.codes.size(), std::size_t(4));
         for (const CodeVerdict& v : a.check.codes) // each row once: "... 0.979 4.26 overstress"
             QCOMPARE(text.count(QString::number(*v.margin, 'f', 2) + " overstress governs"), 1);

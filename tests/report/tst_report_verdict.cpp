@@ -10,7 +10,7 @@
 #include "core/sweep/RecordAnalysis.h"
 #include "report/ReportWriter.h"
 
-#include "PdfText.h"
+#include "ReportReading.h"
 
 #include <QProcess>
 #include <QRegularExpression>
@@ -19,20 +19,6 @@
 
 using namespace kinstab;
 using namespace kinstab::ui::report;
-
-namespace {
-
-// Small figure grids: the tests read words and the tabled numbers, not the figures.
-AnalysisOptions quick() {
-    AnalysisOptions o;
-    o.figureGrid = 7;
-    o.planarFigureGrid = 5;
-    o.sliceStep = 0.05;
-    o.crossCheck = false;
-    return o;
-}
-
-} // namespace
 
 class TestReportVerdict : public QObject {
     Q_OBJECT
@@ -46,7 +32,7 @@ private slots:
     void recordProjectHasOneVerdictOnPageOne() {
         const Project p =
             loadProject(KINSTAB_SOURCE_DIR "/resources/examples/paper-16-story-record.json");
-        const ReportAnalysis a = computeReportAnalysis(p, quick());
+        const ReportAnalysis a = computeReportAnalysis(p, quickAnalysis());
         QVERIFY(a.record && a.record->critical && a.record->critical->peak);
         const QString pdf = dir_.filePath("record.pdf");
         QVERIFY(writeReport({p, "paper-16-story-record.json", {}}, a, pdf, PaperSize::A4) > 1);
@@ -86,7 +72,7 @@ private slots:
 
     void sineProjectNamesItsBasis() {
         const Project p = loadProject(KINSTAB_SOURCE_DIR "/resources/examples/paper-16-story.json");
-        const ReportAnalysis a = computeReportAnalysis(p, quick());
+        const ReportAnalysis a = computeReportAnalysis(p, quickAnalysis());
         const QString pdf = dir_.filePath("sine.pdf");
         QVERIFY(writeReport({p, "paper-16-story.json", {}}, a, pdf, PaperSize::A4) > 1);
         const QString page1 = flat(pdfText(pdf, 1, 1));
@@ -102,7 +88,7 @@ private slots:
         p.grid = {{0.9, 1.0}, {0.9, 1.1}};
         p.critical.scanStep = 0.05;
         p.critical.tolerance = 1e-3;
-        const ReportAnalysis a = computeReportAnalysis(p, quick());
+        const ReportAnalysis a = computeReportAnalysis(p, quickAnalysis());
         QVERIFY(a.planarSolver.has_value());
         const QString pdf = dir_.filePath("planar.pdf");
         QVERIFY(writeReport({p, "planar.json", {}}, a, pdf, PaperSize::A4) > 1);

@@ -38,6 +38,11 @@ private slots:
         QCOMPARE(out.revisions.size(), std::size_t(2));
         QCOMPARE(out.revisions[1].description, std::string("For permit"));
         QVERIFY(validateProjectInfo(out).empty());
+        // KINSTAB_SHOT_DIR set: the panel as the user sees it (docs/screenshots/project-info.png).
+        if (const QString dir = qEnvironmentVariable("KINSTAB_SHOT_DIR"); !dir.isEmpty()) {
+            panel.resize(560, 480);
+            QVERIFY(panel.grab().save(dir + "/project-info.png"));
+        }
         // A date the report could not print the same way everywhere is named.
         t->item(1, 1)->setText("24/11/2026");
         QVERIFY(QString::fromStdString(validateProjectInfo(panel.info()))

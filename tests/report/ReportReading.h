@@ -1,11 +1,24 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Reading a written report back as words, with poppler's pdftotext (poppler-utils).
+// What the report tests share: small analyses for reports read as words, and reading a written
+// report back with poppler's pdftotext (poppler-utils).
+
+#include "report/ReportAnalysis.h"
 
 #include <QProcess>
 #include <QString>
 
 #include <utility>
+
+// Small figure grids, no solver cross-check: the tests read words and the tabled numbers.
+inline kinstab::ui::report::AnalysisOptions quickAnalysis() {
+    kinstab::ui::report::AnalysisOptions o;
+    o.figureGrid = 7;
+    o.planarFigureGrid = 5;
+    o.sliceStep = 0.05;
+    o.crossCheck = false;
+    return o;
+}
 
 // Pages first..last as laid out text; "" when pdftotext fails.
 inline QString pdfText(const QString& pdf, int first = 1, int last = 999) {
