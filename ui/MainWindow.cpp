@@ -23,15 +23,16 @@
 #include "ui/InputHistory.h"
 #include "ui/ModelPanel.h"
 #include "ui/PlanarHistoryChart.h"
+#include "ui/ProjectInfoPanel.h"
 #include "ui/RecentFiles.h"
 #include "ui/RunProgress.h"
+#include "ui/ReportExport.h"
 #include "ui/SlabPanel.h"
 #include "ui/SliceChart.h"
 #include "ui/StaleFrame.h"
 #include "ui/SurfaceView.h"
 #include "ui/Units.h"
 #include "ui/VerdictPanel.h"
-#include "ui/report/ReportExport.h"
 #include "ui/teaching/PresentationMode.h"
 #include "ui/teaching/TeachingView.h"
 
@@ -170,6 +171,11 @@ void MainWindow::buildFileMenu() {
     file->addMenu(m_recent);
     file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
     file->addAction(tr("Save &as…"), QKeySequence::SaveAs, this, &MainWindow::saveAsDialog);
+    file->addAction(tr("Project &information…"), this, [this] {
+        // Engineer, client, revisions: kept in the project, printed on the report's title block.
+        if (ProjectInfoPanel::editInDialog(this, m_project.info))
+            statusBar()->showMessage(tr("Project information changed; save to keep it"), 5000);
+    });
     file->addSeparator();
     QAction* exportSurface =
         file->addAction(tr("Export &surface (CSV/JSON)…"), this, &MainWindow::exportSurface);
@@ -182,7 +188,7 @@ void MainWindow::buildFileMenu() {
     charts->addAction(tr("A_crit(f)…"), this,
                       [this] { exportChart(m_critical, QStringLiteral("acrit")); });
     QAction* report = file->addAction(tr("Export &report (PDF)…"), this, [this] {
-        // The same document as `kinstab-cli report` (ui/report/ReportWriter.h).
+        // The same document as `kinstab-cli report` (report/ReportWriter.h).
         report::exportReportDialog(this, project(), m_path, [this](const QString& out) {
             statusBar()->showMessage(tr("Report written to %1").arg(out), 5000);
         });

@@ -4,10 +4,10 @@
 // point shows its planar history (δx, δy). Everything else (surface, overlays, slice, verdict)
 // is model-blind.
 
+#include "report/PlanarVertical.h"
 #include "ui/MainWindow.h"
 #include "ui/ModelPanel.h"
 #include "ui/PlanarHistoryChart.h"
-#include "ui/PlanarVertical.h"
 
 #include <QLabel>
 #include <QStackedWidget>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/ModelPanel.h"
 
+#include "report/PlanarVertical.h"
 #include "ui/NumberField.h"
-#include "ui/PlanarVertical.h"
 #include "ui/RecordPreview.h"
 
 #include <QComboBox>

@@ -2,6 +2,7 @@
 #include "ui/RecordPreview.h"
 
 #include "core/excitation/FourierSpectrum.h"
+#include "report/PlanarVertical.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
@@ -87,29 +88,6 @@ void clearSeries(QChart* chart) {
 
 } // namespace
 
-QList<QPointF> decimatedSeries(const std::vector<double>& y, double dt, int buckets,
-                               bool absolute) {
-    QList<QPointF> out;
-    const std::size_t n = y.size();
-    const std::size_t per =
-        std::max<std::size_t>(1, (n + static_cast<std::size_t>(std::max(buckets, 1)) - 1) /
-                                     static_cast<std::size_t>(std::max(buckets, 1)));
-    const auto value = [&](std::size_t i) { return absolute ? std::abs(y[i]) : y[i]; };
-    for (std::size_t b = 0; b < n; b += per) {
-        const std::size_t e = std::min(n, b + per);
-        std::size_t lo = b, hi = b;
-        for (std::size_t i = b; i < e; ++i) {
-            if (value(i) < value(lo)) lo = i;
-            if (value(i) > value(hi)) hi = i;
-        }
-        for (std::size_t i : {std::min(lo, hi), std::max(lo, hi)}) {
-            out.append(QPointF(dt * static_cast<double>(i), value(i)));
-            if (lo == hi) break;
-        }
-    }
-    return out;
-}
-
 RecordPreview::RecordPreview(QWidget* parent) : QWidget(parent) {
     info_ = new QLabel(tr("No record loaded."));
     info_->setWordWrap(true);
@@ -169,13 +147,11 @@ QChart* RecordPreview::spectrumChart() const {
 }
 
 QString RecordPreview::defaultVerticalRecord() {
-    return QStringLiteral(":/records/RSN68_SFERN_PEL-UP.AT2");
+    return defaultVerticalRecordPath();
 }
 
 QString RecordPreview::defaultVerticalNote() {
-    return tr(
-        "Vertical motion: 1971 San Fernando, LA Hollywood Storage FF, UP (NGA RSN68) stands in for "
-        "the paper's Pacoima Dam vertical, which is not publicly available.");
+    return defaultVerticalRecordNote();
 }
 
 QString RecordPreview::fileDialogFilter() {

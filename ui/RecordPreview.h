@@ -8,6 +8,7 @@
 #include "core/excitation/EnvelopeFit.h"
 #include "core/excitation/FloorFilter.h"
 #include "core/io/RecordReader.h"
+#include "report/DecimatedSeries.h"
 
 #include <QWidget>
 #include <optional>
@@ -72,10 +73,5 @@ private:
     QChartView* floorView_ = nullptr;
     QChartView* spectrumView_ = nullptr;
 };
-
-// Min/max decimation of a sampled series to about `buckets` pairs of points: keeps every peak
-// visible while a chart draws a 42 000-point record quickly.
-QList<QPointF> decimatedSeries(const std::vector<double>& y, double dt, int buckets,
-                               bool absolute = false);
 
 } // namespace kinstab::ui

@@ -53,12 +53,36 @@ int runBenchPlanar(const Args& args, const SweepGrid& grid, int threads, int rep
                  b.oneDof.medianCpuSeconds, b.ratioMedian, b.ratioCpu);
     return 0;
 }
+// The exact surface with and without core/numerics/VectorState.h's clearing, alternating in one
+// process (issue 15: is the workaround still needed now that the CLI loads no Qml?).
+int runBenchVectorState(const Slab1DCase& c, const SweepGrid& grid, int threads, int repeats) {
+    const VectorStateBenchmark b = benchmarkVectorState(c, grid, repeats, threads);
+    const nlohmann::json j = {{"amplitudes", grid.amplitudes.size()},
+                              {"frequencies", grid.frequencies.size()},
+                              {"points", grid.size()},
+                              {"threads", b.threads},
+                              {"with_vzeroupper", timingJson(b.cleared)},
+                              {"without_vzeroupper", timingJson(b.uncleared)},
+                              {"ratio_without_over_with", b.ratioMedian},
+                              {"ratio_without_over_with_cpu", b.ratioCpu}};
+    std::cout << jsonText(j, 2) << "\n";
+    std::fprintf(stderr,
+                 "%zux%zu exact surface, %d threads, %d alternating runs of each after a warm-up:\n"
+                 "  with vzeroupper     median %.3f s (min %.3f s, CPU %.3f s)\n"
+                 "  without vzeroupper  median %.3f s (min %.3f s, CPU %.3f s)\n"
+                 "  without/with %.3f (wall), %.3f (CPU), medians of per-run ratios\n",
+                 grid.amplitudes.size(), grid.frequencies.size(), b.threads, b.cleared.runs,
+                 b.cleared.medianSeconds, b.cleared.minSeconds, b.cleared.medianCpuSeconds,
+                 b.uncleared.medianSeconds, b.uncleared.minSeconds, b.uncleared.medianCpuSeconds,
+                 b.ratioMedian, b.ratioCpu);
+    return 0;
+}
 } // namespace
 
 int runBench(const ArgList& argv) {
     std::set<std::string> flags = modelFlagNames();
     flags.insert({"amplitudes", "frequencies", "threads", "repeats"});
-    const Args args(argv, flags);
+    const Args args(argv, flags, {"vector-state"});
     if (args.has("solver"))
         throw UsageError("--solver: bench always runs both solvers (exact and paper)");
     const bool planar = isPlanar(args);
@@ -73,8 +97,11 @@ int runBench(const ArgList& argv) {
     const int repeats = args.integer("repeats", 5);
     if (repeats < 1 || repeats > 1000)
         throw UsageError("--repeats " + args.text("repeats") + ": must be 1 to 1000");
+    if (planar && args.has("vector-state"))
+        throw UsageError("--vector-state: times the 1-DOF exact solver, not --model planar");
     if (planar) return runBenchPlanar(args, grid, threads, repeats);
     const Slab1DCase c = slab1DCaseFromFlags(args);
+    if (args.has("vector-state")) return runBenchVectorState(c, grid, threads, repeats);
 
     const SurfaceBenchmark b = benchmarkSurface(c, grid, repeats, threads);
     nlohmann::json j = {{"amplitudes", grid.amplitudes.size()},

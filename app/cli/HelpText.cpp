@@ -84,8 +84,10 @@ const char* kPrecision =
 
 const char* kBench =
     "usage: kinstab-cli bench [--repeats N] [--threads N] [--amplitudes LIST --frequencies LIST]\n"
-    "                         [model flags]\n"
+    "                         [--vector-state] [model flags]\n"
     "Times the exact and the paper solver on one grid; prints JSON (min and median seconds).\n"
+    "  --vector-state               instead: the exact solver with and without clearing the\n"
+    "                               upper AVX state (vzeroupper) at each solver start\n"
     "  --repeats N                  timed repeats [5]\n"
     "  --threads N                  worker threads, 0 = all cores [0]\n"
     "  --amplitudes LIST            peak accelerations, g [a built-in grid]\n"
@@ -150,11 +152,18 @@ const char* kFriction =
 
 const char* kReport =
     "usage: kinstab-cli report --project FILE -o FILE.pdf [--page a4|letter] [--figure-grid N]\n"
-    "Writes the design-check report as PDF: inputs, code trails, figures, verdict.\n"
+    "                          [--sections LIST]\n"
+    "Writes the design-check report as PDF: title and signature blocks, verdict, inputs, code\n"
+    "trails, figures. Run times go to the JSON printed on stdout.\n"
     "  --project FILE               a kinstab project (.json)\n"
     "  -o FILE.pdf                  the report to write\n"
     "  --page a4|letter             paper size [a4]\n"
-    "  --figure-grid N              grid points per axis of the surface figure [41]\n";
+    "  --figure-grid N              grid points per axis of the surface figure [41]\n"
+    "  --sections LIST              optional sections, comma-separated, or all [all]:\n"
+    "                               assumptions, symbols, inputs, codes, excitation, record,\n"
+    "                               floors, surface, check, numerics, references (the title\n"
+    "                               block, the verdict and the signature block are always\n"
+    "                               printed)\n";
 
 const char* kFloors =
     "usage: kinstab-cli floors --project FILE [--record FILE] [--stiffness uniform|weight]\n"

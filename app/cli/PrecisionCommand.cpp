@@ -6,7 +6,7 @@
 #include "app/cli/Commands.h"
 #include "core/numerics/PlanarPrecision.h"
 #include "core/numerics/WorkPrecision.h"
-#include "ui/PlanarVertical.h"
+#include "report/PlanarVertical.h"
 
 #include <iostream>
 

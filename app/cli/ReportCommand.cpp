@@ -8,7 +8,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/JsonText.h"
 #include "core/io/Project.h"
-#include "ui/report/ReportWriter.h"
+#include "report/ReportWriter.h"
 
 #include <QFile>
 #include <QGuiApplication>
@@ -32,6 +32,21 @@ std::unique_ptr<QGuiApplication> ensureGuiApplication() {
     return std::make_unique<QGuiApplication>(argc, argv);
 }
 
+// The run times the report leaves out (its numerics appendix is for the engineer).
+nlohmann::json reportTimings(const ui::report::ReportAnalysis& a) {
+    nlohmann::json j = {{"project_sweep_s", a.projectSweep.wallTimeSeconds},
+                        {"figure_sweeps_s", a.figureSweepSeconds},
+                        {"design_check_s", a.checkSeconds},
+                        {"project_sweep_runs", a.projectSweep.completed},
+                        {"figure_runs", a.figureRuns},
+                        {"critical_curve_runs", a.critRuns},
+                        {"design_check_runs", a.check.runs}};
+    if (a.crossCheck)
+        j.update({{"cross_check_exact_s", a.crossCheck->exactSeconds},
+                  {"cross_check_paper_s", a.crossCheck->paperSeconds}});
+    return j;
+}
+
 QByteArray readProjectBytes(const std::string& path) {
     QFile f(QString::fromStdString(path));
     if (!f.open(QIODevice::ReadOnly))
@@ -42,7 +57,7 @@ QByteArray readProjectBytes(const std::string& path) {
 } // namespace
 
 int runReport(const ArgList& argv) {
-    const Args args(argv, {"project", "o", "page", "figure-grid"});
+    const Args args(argv, {"project", "o", "page", "figure-grid", "sections"});
     using namespace kinstab::ui::report;
     const auto t0 = std::chrono::steady_clock::now();
     if (!args.has("project")) throw UsageError("--project FILE is required");
@@ -59,6 +74,13 @@ int runReport(const ArgList& argv) {
     checkOutputPath("o", out); // an empty name or a missing folder: exit 2 before any work
 
     ReportSource source;
+    if (args.has("sections")) {
+        try {
+            source.sections = parseSections(args.text("sections"));
+        } catch (const ReportError& e) {
+            throw UsageError("--sections " + args.text("sections").substr(0, 80) + ": " + e.what());
+        }
+    }
     try {
         source.project = loadProject(path);
     } catch (const ProjectError& e) {
@@ -90,6 +112,7 @@ int runReport(const ArgList& argv) {
                               {"pages", pages},
                               {"page", paper == PaperSize::A4 ? "a4" : "letter"},
                               {"analysis_wall_time_s", analysis.totalSeconds},
+                              {"timings", reportTimings(analysis)},
                               {"wall_time_s", seconds}};
     (out == "-" ? std::cerr : std::cout) << jsonText(j, 2) << "\n"; // -o -: stdout holds the PDF
     return 0;

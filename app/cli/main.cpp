@@ -10,7 +10,6 @@
 #include "app/cli/HelpText.h"
 #include "core/io/AtomicFile.h"
 #include "core/numerics/InternalError.h"
-#include "core/numerics/VectorState.h"
 
 #include <exception>
 #include <functional>
@@ -18,7 +17,6 @@
 #include <map>
 
 int main(int argc, char** argv) {
-    kinstab::clearUpperVectorState(); // see core/numerics/VectorState.h
     using namespace kinstab::cli;
     const std::map<std::string, std::function<int(const ArgList&)>> commands = {
         {"simulate", runSimulate}, {"surface", runSurface},     {"critical", runCritical},

@@ -39,6 +39,9 @@ inline constexpr int kMaxJsonDepth = 64;
 inline constexpr std::size_t kMaxNameChars = 200;
 // Characters of a project's free-text description.
 inline constexpr std::size_t kMaxDescriptionChars = 20'000;
+// Revisions listed in a project's title block (ProjectInfo): a report's revision table fits one
+// page; a project reissued more often keeps its older history elsewhere.
+inline constexpr std::size_t kMaxRevisions = 50;
 // Characters of an offending token quoted in an error message.
 inline constexpr std::size_t kMaxQuotedChars = 40;
 

@@ -47,6 +47,7 @@ std::string validateProject(const Project& p) {
         return "description: " + std::to_string(p.description.size()) +
                " characters, more than the limit of " +
                std::to_string(limits::kMaxDescriptionChars);
+    if (std::string e = validateProjectInfo(p.info); !e.empty()) return e;
     if (p.model != "slab1d" && p.model != "planar")
         return "model = " + quotedToken(p.model) + ": must be slab1d or planar";
     std::string e = validateBuilding(p.building);
@@ -162,19 +163,21 @@ void checkHeader(const JsonReader& r) {
 } // namespace
 
 json projectToJson(const Project& p, const std::string& baseDir) {
-    return {{"format", kProjectFormat},
-            {"version", kProjectVersion},
-            {"name", p.name},
-            {"description", p.description},
-            {"building", buildingToJson(p.building)},
-            {"codes", codesToJson(p.codes)},
-            {"slab", slabToJson(p)},
-            {"grid", {{"amplitudes", p.grid.amplitudes}, {"frequencies", p.grid.frequencies}}},
-            {"model", p.model},
-            {"planar", planarSettingsToJson(p.planar, baseDir)},
-            {"check", checkToJson(p.critical)},
-            {"excitation", excitationToJson(p.record, baseDir)},
-            {"floors", p.floors ? floorSettingsToJson(*p.floors) : json()}};
+    json j = {{"format", kProjectFormat},
+              {"version", kProjectVersion},
+              {"name", p.name},
+              {"description", p.description},
+              {"building", buildingToJson(p.building)},
+              {"codes", codesToJson(p.codes)},
+              {"slab", slabToJson(p)},
+              {"grid", {{"amplitudes", p.grid.amplitudes}, {"frequencies", p.grid.frequencies}}},
+              {"model", p.model},
+              {"planar", planarSettingsToJson(p.planar, baseDir)},
+              {"check", checkToJson(p.critical)},
+              {"excitation", excitationToJson(p.record, baseDir)},
+              {"floors", p.floors ? floorSettingsToJson(*p.floors) : json()}};
+    if (!p.info.empty()) j["info"] = projectInfoToJson(p.info); // older files have none
+    return j;
 }
 
 Project projectFromJson(const json& j, const std::string& baseDir) {
@@ -184,6 +187,7 @@ Project projectFromJson(const json& j, const std::string& baseDir) {
         Project p;
         p.name = r.text("name", "");
         p.description = r.text("description", "");
+        if (r.has("info")) p.info = projectInfoFromJson(r.raw("info"));
         p.building = buildingFromJson(r.object("building"));
         if (auto c = r.optionalObject("codes")) p.codes = codesFromJson(*c);
         if (auto s = r.optionalObject("slab")) slabFrom(*s, p);

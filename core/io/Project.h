@@ -10,6 +10,7 @@
 #include "core/codes/Building.h"
 #include "core/codes/CodeSet.h"
 #include "core/excitation/RecordExcitation.h"
+#include "core/io/ProjectInfo.h"
 #include "core/slab/PlanarSettings.h"
 #include "core/slab/Slab1DCase.h"
 #include "core/sweep/CriticalAmplitude.h"
@@ -33,6 +34,7 @@ inline constexpr int kProjectVersion = 1;
 struct Project {
     std::string name;
     std::string description;
+    ProjectInfo info; // engineer, firm, client, revisions: the report's title and signature blocks
     Building building;
     CodeSelection codes;
     Slab1DCase slab;                        // envelope, t*, mu, limit, solver, scale

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/sweep/SurfaceBenchmark.h"
 
+#include "core/numerics/VectorState.h"
 #include "core/sweep/Sweep.h"
 
 #include <algorithm>
@@ -45,6 +46,32 @@ SurfaceBenchmark benchmarkSurface(const Slab1DCase& c, const SweepGrid& grid, in
             ++b.outcomeDisagreements;
         if (exactResult.points[k].outcome == Outcome::Collapsed) ++b.exactCollapsed;
     }
+    return b;
+}
+
+VectorStateBenchmark benchmarkVectorState(const Slab1DCase& c, const SweepGrid& grid, int repeats,
+                                          int threads) {
+    VectorStateBenchmark b;
+    b.grid = grid;
+    b.threads = threadsOrAll(threads);
+    Slab1DCase exact = c;
+    exact.solver = SolverKind::Exact;
+    std::atomic<bool>& clearing = upperVectorStateClearing();
+    const PairedTiming t = timePaired(
+        [&] {
+            clearing = false;
+            runSweep(grid, slab1DPoint(exact), nullptr, b.threads);
+        },
+        [&] {
+            clearing = true;
+            runSweep(grid, slab1DPoint(exact), nullptr, b.threads);
+        },
+        repeats);
+    clearing = true;
+    b.uncleared = t.first;
+    b.cleared = t.second;
+    b.ratioMedian = t.ratioWall;
+    b.ratioCpu = t.ratioCpu;
     return b;
 }
 

@@ -30,6 +30,18 @@ SweepGrid benchmarkGrid();
 SurfaceBenchmark benchmarkSurface(const Slab1DCase& c, const SweepGrid& grid, int repeats,
                                   int threads);
 
+// Whether core/numerics/VectorState.h still pays in this process: the exact surface with the
+// vzeroupper at each solver start against the same surface without it, runs alternating.
+struct VectorStateBenchmark {
+    SweepGrid grid;
+    int threads = 0;
+    TimingStats cleared, uncleared;
+    double ratioMedian = 0; // uncleared / cleared: median of the per-repeat wall-time ratios
+    double ratioCpu = 0;
+};
+VectorStateBenchmark benchmarkVectorState(const Slab1DCase& c, const SweepGrid& grid, int repeats,
+                                          int threads);
+
 // The issue-22 target: the planar surface against the 1-DOF (exact) surface on the same grid,
 // runs alternating planar / 1-DOF in one process. Counts the planar collapses and those along
 // the walls, so that a speed-up cannot hide a change of answer.

@@ -102,10 +102,11 @@ private slots:
             QJsonDocument::fromJson(r.out).object()["a_crit"].toArray()[0].toDouble();
         QVERIFY(aCrit > 0.3 && aCrit < 0.95);
         const auto m =
-            QRegularExpression("ATC 3-06 \\(1978\\) §4.2\\s+0.275\\s+1.000\\s+(\\d\\.\\d{4})")
+            QRegularExpression("ATC 3-06 \\(1978\\) §4.2\\s+0.275\\s+1.000\\s+(\\d\\.\\d{3})\\s")
                 .match(text_);
         QVERIFY2(m.hasMatch(), qPrintable(text_.left(3000)));
-        QCOMPARE_LE(std::abs(m.captured(1).toDouble() - aCrit), 1e-4 + 5e-5);
+        // The report prints A_crit to 0.001 g.
+        QCOMPARE_LE(std::abs(m.captured(1).toDouble() - aCrit), 1e-4 + 5e-4);
     }
 
     void badPlanarField_data() {

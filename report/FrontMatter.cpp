@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Page 1 above the verdict: who issues the report and for whom (the project's "info"), the
+// revision table and the signature/seal block; and, beside the verdict, the acceptance
+// criterion and the disclaimer.
+#include "report/ReportSections.h"
+
+#include <QPainter>
+
+#include <algorithm>
+
+namespace kinstab::ui::report {
+
+namespace {
+
+QString orBlank(const std::string& s) {
+    return s.empty() ? QStringLiteral("—") : qs(s);
+}
+
+void addRevisionTable(ReportDocument& doc, const ProjectInfo& info) {
+    if (info.revisions.empty()) return;
+    Table t{{"revision", "date", "description"}, {}, {1, 1.4, 6}, {}, {}};
+    for (const Revision& r : info.revisions)
+        t.rows.push_back({qs(r.id), qs(r.date), qs(r.description)});
+    t.boldRows.push_back(static_cast<int>(t.rows.size()) - 1); // the current issue
+    doc.addTable(t);
+}
+
+// One box of the signature block, 12 units high: the role, the name, then lines to sign and date;
+// the engineer's box keeps room on the right for the seal or stamp.
+void paintSignatureBox(QPainter& p, const QRectF& r, const QString& role, const QString& name,
+                       bool seal) {
+    const double u = r.height() / 12.0;
+    p.setPen(QPen(Qt::black, u * 0.05));
+    p.setBrush(Qt::NoBrush);
+    p.drawRect(r);
+    QFont f = p.font();
+    f.setPixelSize(std::max(1, static_cast<int>(u * 1.15)));
+    f.setBold(true);
+    p.setFont(f);
+    const double left = r.left() + u * 0.6;
+    const double width = r.width() - u * (seal ? 7.0 : 1.2);
+    p.drawText(QRectF(left, r.top() + u * 0.4, width, u * 1.5), Qt::AlignLeft, role);
+    f.setBold(false);
+    p.setFont(f);
+    p.drawText(QRectF(left, r.top() + u * 1.9, width, u * 3.0), Qt::AlignLeft | Qt::TextWordWrap,
+               name);
+    for (const auto& [label, y] : {std::pair{QStringLiteral("signature"), r.top() + u * 8.0},
+                                   std::pair{QStringLiteral("date"), r.top() + u * 10.3}}) {
+        p.drawLine(QPointF(left, y), QPointF(left + width, y));
+        p.drawText(QRectF(left, y + u * 0.1, width, u * 1.5), Qt::AlignLeft, label);
+    }
+    if (!seal) return;
+    p.setPen(QPen(Qt::gray, u * 0.05, Qt::DashLine));
+    const QRectF circle(r.right() - u * 6.2, r.top() + u * 2.0, u * 5.6, u * 5.6);
+    p.drawEllipse(circle);
+    p.drawText(circle, Qt::AlignCenter, QStringLiteral("seal"));
+}
+
+} // namespace
+
+void addRevisions(ReportDocument& doc, const Project& p) {
+    addRevisionTable(doc, p.info);
+}
+
+void addSignatureBlock(ReportDocument& doc, const Project& p) {
+    const ProjectInfo& in = p.info;
+    const QString engineer =
+        orBlank(in.engineer) +
+        (in.registration.empty() ? QString() : QStringLiteral("\nReg. no. ") + qs(in.registration));
+    const QString prepared = orBlank(in.preparedBy), checked = orBlank(in.checkedBy);
+    doc.addDrawing({[prepared, checked, engineer](QPainter& pa, const QRectF& r) {
+                        const double gap = r.width() * 0.02;
+                        const double w = (r.width() - 2 * gap) / 3;
+                        const QRectF box(r.left(), r.top(), w, r.height());
+                        paintSignatureBox(pa, box, QStringLiteral("Prepared by"), prepared, false);
+                        paintSignatureBox(pa, box.translated(w + gap, 0),
+                                          QStringLiteral("Checked by"), checked, false);
+                        paintSignatureBox(pa, box.translated(2 * (w + gap), 0),
+                                          QStringLiteral("Engineer of record"), engineer, true);
+                    },
+                    0.155, QString()});
+}
+
+void addAcceptanceCriterion(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {
+    if (a.check.codes.empty()) return;
+    const QString crit = recordGoverns(p, a) ? QStringLiteral("the record's critical peak")
+                                             : QStringLiteral("A_crit");
+    doc.addParagraph(
+        QStringLiteral(
+            "Acceptance criterion: margin = %1 / (F_top/w_top), the floor acceleration that "
+            "slides the slab off its walls divided by the top-floor acceleration the code "
+            "requires the structure to resist. A margin greater than 1 is acceptable: the "
+            "structure reaches its code strength before the slab can slide off (member "
+            "overstress governs). A margin below 1 is not: the slab slides off at a floor "
+            "acceleration the code requires the structure to withstand (kinetic instability "
+            "governs), and the slab seating must be lengthened or the slab restrained. The "
+            "verdict does not cover the strength of the members, the walls or the slab "
+            "themselves, nor floors other than the top floor.")
+            .arg(crit));
+    doc.addParagraph(
+        QStringLiteral("This report was produced by software (kinstab %1). Its inputs and results "
+                       "must be checked by a qualified engineer, who is responsible for the "
+                       "design and signs it in the block on page 1.")
+            .arg(QStringLiteral(KINSTAB_VERSION)),
+        true);
+}
+
+} // namespace kinstab::ui::report

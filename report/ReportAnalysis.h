@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The analyses a design report shows, run from a project: the codes, the design check, the
+// project's γc sweep, finer sweeps for the figures, A_crit(f), the slice at the building
+// frequency and a solver cross-check for the numerics section. The GUI can fill the same
+// struct from what it already computed; the CLI calls computeReportAnalysis.
+
+#include "core/analysis/RunAnalysis.h"
+#include "core/building/FloorAnalysis.h"
+#include "core/codes/CodeResult.h"
+#include "core/codes/DesignCheck.h"
+#include "core/io/Project.h"
+#include "core/slab/PlanarSolver.h"
+#include "core/sweep/RecordAnalysis.h"
+#include "core/sweep/Sweep.h"
+#include "report/FigureData.h"
+
+#include <optional>
+#include <vector>
+
+namespace kinstab::ui::report {
+
+// The exact solver's τc checked against the paper's RK4 solver at H = T / paperSteps on the
+// project grid (docs/theory.md §6.6): an estimate of the τc error, independent of the exact solver.
+struct SolverCrossCheck {
+    double paperSteps = 1024;
+    std::size_t compared = 0;        // points where both collapsed
+    std::size_t outcomeMismatch = 0; // points where one collapsed and the other did not
+    double maxRelTauDiff = 0;        // max |τc,paper − τc,exact| / τc,exact
+    double exactSeconds = 0;
+    double paperSeconds = 0;
+};
+
+struct ReportAnalysis {
+    std::vector<CodeResult> codes;
+    DesignCheckResult check;
+    double checkSeconds = 0;
+    SweepResult projectSweep; // on the project's grid (the numbers tabled in the report)
+    SurfaceData netSurface;   // fine grid over the project's range: the wireframe
+    SurfaceData mapSurface;   // fine grid down to the code ratios: the contour map
+    double figureSweepSeconds = 0;
+    long figureRuns = 0;
+    DesignOverlay overlay; // A_crit(f), code ratios, design frequency
+    long critRuns = 0;
+    SliceData slice;
+    std::optional<SolverCrossCheck> crossCheck;
+    // The planar model's integrator settings when the planar model ran (none: the 1-DOF slab).
+    std::optional<PlanarOptions> planarSolver;
+    // Where every A_crit scan started, below which nothing slips: μ for the 1-DOF slab, the
+    // planar no-slip amplitude for the planar model.
+    double scanFrom = 0;
+    // The project's record, when it has one: single run, critical peak, its verdicts.
+    std::optional<RecordAnalysis> record;
+    std::optional<FloorAnalysis> floors; // when the project has "floors" and a record
+    double totalSeconds = 0;
+};
+
+struct AnalysisOptions {
+    int figureGrid = 41; // points per axis of the figure sweeps
+    int planarFigureGrid =
+        21; // at most this with the planar model (2-5 ms of CPU a point, ~100x the 1-DOF slab)
+    double sliceStep = 0.005; // g, spacing of the slice γc(A)
+    bool crossCheck = true;   // run the paper solver for the error estimate
+    double crossCheckSteps = 1024;
+};
+
+// Throws kinstab::InputError / ProjectError on a bad project (nothing is computed then).
+// The sweep, the check, A_crit(f) and the record go through core's analysis entry point
+// (core/analysis/RunAnalysis.h); control cancels all of it.
+ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptions& options = {},
+                                     AnalysisControl* control = nullptr);
+
+// The floor-motion analysis of a project with "floors" and a record (FloorsSection.cpp);
+// none otherwise or after a cancel. Throws ProjectError on an unreadable record.
+std::optional<FloorAnalysis> computeReportFloors(const Project& p, SweepControl* control);
+
+// "UBC 1976", "ATC 3-06", ... for figure labels.
+QString shortCodeName(const std::string& key);
+
+// The building frequency 1/T the check used (first code's period; the entered period if any).
+std::optional<double> designFrequency(const Project& project, const DesignCheckResult& check);
+
+} // namespace kinstab::ui::report

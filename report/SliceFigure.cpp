@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "report/SliceFigure.h"
+
+#include "report/PlotFrame.h"
+#include "report/ReportSections.h"
+
+#include <QFontMetricsF>
+#include <QPolygonF>
+
+#include <algorithm>
+#include <cmath>
+
+namespace kinstab::ui::report {
+
+namespace {
+
+void verticalLine(QPainter& p, const PlotFrame& fr, double x, const QColor& c, Qt::PenStyle style) {
+    const QRectF plot = fr.plot();
+    const double px = fr.mapX(x);
+    if (px < plot.left() || px > plot.right()) return;
+    QPen pen = fr.scale().pen(c, 0.3);
+    pen.setStyle(style);
+    p.setPen(pen);
+    p.drawLine(QPointF(px, plot.top()), QPointF(px, plot.bottom()));
+}
+
+} // namespace
+
+void paintSlice(QPainter& p, const QRectF& area, const SliceData& s,
+                const std::vector<CodeMark>& codes, const QString& gammaLabel) {
+    if (s.amplitudes.size() < 2) return;
+    double gMax = 0;
+    for (double g : s.gamma)
+        if (std::isfinite(g)) gMax = std::max(gMax, g);
+    const std::vector<double> yt = niceTicks(0, std::max(gMax, 1e-3) * 1.08, 5);
+    const PlotFrame fr(area, s.amplitudes.front(), s.amplitudes.back(), 0, yt.back());
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing);
+    fr.drawAxes(p, QStringLiteral("peak floor acceleration A (g)"), gammaLabel);
+    // Points joined where neighbours both collapsed; the jump at A_crit is left open.
+    p.setPen(fr.scale().pen(Qt::black, 0.35));
+    QPolygonF run;
+    auto flush = [&] {
+        if (run.size() > 1) p.drawPolyline(run);
+        run.clear();
+    };
+    for (std::size_t k = 0; k < s.amplitudes.size(); ++k) {
+        const double g = s.gamma[k];
+        if (!std::isfinite(g)) {
+            flush();
+            continue;
+        }
+        if (!run.isEmpty() && (g > 0) != (s.gamma[k - 1] > 0)) flush();
+        run << fr.map(s.amplitudes[k], g);
+    }
+    flush();
+    std::vector<LegendEntry> legend;
+    double rightmost = fr.plot().left();
+    if (s.aCrit) {
+        verticalLine(p, fr, *s.aCrit, QColor(200, 30, 30), Qt::SolidLine);
+        legend.push_back({QStringLiteral("A_crit = %1 g").arg(accelG(*s.aCrit)),
+                          QColor(200, 30, 30), Qt::SolidLine});
+    }
+    for (std::size_t k = 0; k < codes.size(); ++k) {
+        const QColor colour = codes[k].colour;
+        verticalLine(p, fr, codes[k].ratio, colour, Qt::DashLine);
+        rightmost = std::max(rightmost, fr.mapX(codes[k].ratio));
+        legend.push_back(
+            {QStringLiteral("%1: %2").arg(codes[k].label).arg(codes[k].ratio, 0, 'f', 3), colour,
+             Qt::DashLine});
+    }
+    // Between the code lines and A_crit, where γc = 0 leaves the plot empty.
+    const double u = fr.scale().unit();
+    drawLegend(p, fr.scale(), QPointF(rightmost + 1.5 * u, fr.plot().top() + 1.5 * u), legend);
+    p.restore();
+}
+
+void paintExcitation(QPainter& p, const QRectF& area, const ExcitationPlot& e) {
+    if (e.timeSeconds.size() < 2) return;
+    const PlotFrame fr(area, e.timeSeconds.front(), e.timeSeconds.back(), -1.1, 1.1);
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing);
+    fr.drawAxes(p, QStringLiteral("time t (s)"), QStringLiteral("a(t) / A"));
+    QPolygonF acc, up, down;
+    for (std::size_t k = 0; k < e.timeSeconds.size(); ++k) {
+        acc << fr.map(e.timeSeconds[k], e.accel[k]);
+        up << fr.map(e.timeSeconds[k], e.envelope[k]);
+        down << fr.map(e.timeSeconds[k], -e.envelope[k]);
+    }
+    p.setPen(fr.scale().pen(QColor(60, 60, 60), 0.12));
+    p.drawPolyline(acc);
+    p.setPen(fr.scale().pen(QColor(200, 30, 30), 0.35));
+    p.drawPolyline(up);
+    p.drawPolyline(down);
+    if (!e.title.isEmpty()) {
+        p.setFont(fr.scale().font(2.1));
+        const QFontMetricsF fm(p.font());
+        const double u = fr.scale().unit();
+        const QRectF plot = fr.plot();
+        p.drawText(
+            QPointF(plot.right() - u - fm.horizontalAdvance(e.title), plot.top() + u + fm.ascent()),
+            e.title);
+    }
+    p.restore();
+}
+
+} // namespace kinstab::ui::report

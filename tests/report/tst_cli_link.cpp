@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// kinstab-cli links core and the report library only (issue 15): it writes reports through
+// Qt Gui, so neither the executable nor any library it loads may be Qt Widgets, Charts, Data
+// Visualization, Qml, Quick or OpenGL. Reads the loader's view of the binary with ldd (libc-bin)
+// and its own NEEDED entries with readelf (binutils).
+
+#include <QProcess>
+#include <QRegularExpression>
+#include <QtTest>
+
+namespace {
+
+const QRegularExpression
+    kForbidden(QStringLiteral("Qt6(Widgets|Charts|DataVisualization|Qml|Quick|OpenGL)"));
+
+QString run(const QString& program, const QStringList& args) {
+    QProcess p;
+    p.start(program, args);
+    if (!p.waitForFinished(60000) || p.exitCode() != 0) return {};
+    return QString::fromUtf8(p.readAllStandardOutput());
+}
+
+} // namespace
+
+class TestCliLink : public QObject {
+    Q_OBJECT
+private slots:
+    void loadsNoWidgetLibrary();
+    void needsNoWidgetLibrary();
+};
+
+// Every shared library the loader maps for kinstab-cli, direct or indirect.
+void TestCliLink::loadsNoWidgetLibrary() {
+    const QString libs = run(QStringLiteral("ldd"), {QStringLiteral(KINSTAB_CLI)});
+    QVERIFY2(libs.contains(QStringLiteral("libQt6Gui")), qPrintable(libs)); // ldd worked
+    const QRegularExpressionMatch m = kForbidden.match(libs);
+    QVERIFY2(!m.hasMatch(), qPrintable("kinstab-cli loads " + m.captured(0) + ":\n" + libs));
+}
+
+// The libraries the executable itself names.
+void TestCliLink::needsNoWidgetLibrary() {
+    const QString dynamic = run(QStringLiteral("readelf"), {"-d", QStringLiteral(KINSTAB_CLI)});
+    QVERIFY2(dynamic.contains(QStringLiteral("NEEDED")), qPrintable(dynamic));
+    const QRegularExpressionMatch m = kForbidden.match(dynamic);
+    QVERIFY2(!m.hasMatch(), qPrintable("kinstab-cli needs " + m.captured(0) + ":\n" + dynamic));
+}
+
+QTEST_GUILESS_MAIN(TestCliLink)
+#include "tst_cli_link.moc"
