@@ -9,7 +9,7 @@
 #include "core/analysis/RunAnalysis.h"
 #include "core/io/CodesJson.h"
 #include "core/io/Project.h"
-#include "ui/PlanarVertical.h"
+#include "report/PlanarVertical.h"
 
 #include <chrono>
 #include <iostream>
