@@ -43,7 +43,8 @@ FigurePreset surface(int fig, EnvelopePreset e, TauScale s) {
 FigurePreset planar(int fig, double fyHz) {
     FigurePreset p;
     p.id = QStringLiteral("fig%1").arg(fig);
-    p.title = QStringLiteral("Shaking in two directions, across at %1 Hz").arg(fyHz, 0, 'g', 3);
+    p.title =
+        QStringLiteral("Shaking in two directions, %1 Hz along the walls").arg(fyHz, 0, 'g', 3);
     p.figure = QStringLiteral("Fig. %1, planar").arg(fig);
     p.caption =
         QStringLiteral("Surface γc(A_x, f_x), γc = τ_max/τc, planar model, moderately rising "
@@ -68,7 +69,8 @@ std::vector<FigurePreset> build() {
     v.push_back(surface(32, EnvelopePreset::Moderate, TauScale::TauRise));
     v.push_back(surface(33, EnvelopePreset::Slow, TauScale::TauRise));
     v.push_back(
-        {QStringLiteral("fig34"), QStringLiteral("Slower shaking at 0.75 Hz: when it falls"),
+        {QStringLiteral("fig34"),
+         QStringLiteral("Shaking at 0.75 Hz: how soon the slab falls as A grows"),
          QStringLiteral("Fig. 34, τc against A"),
          QStringLiteral("Nondimensional collapse time τc vs. amplitude A given fixed frequency "
                         "f = 0.75 Hz and moderately rising acceleration envelope."),

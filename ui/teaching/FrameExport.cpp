@@ -16,32 +16,35 @@
 
 namespace kinstab::ui {
 
-void paintTeachingFrame(QPainter& p, const QRectF& area, const TeachingRun& run, double tau) {
+void paintTeachingFrame(QPainter& p, const QRectF& area, const TeachingRun& run, double tau,
+                        UnitSystem units) {
     const QRectF top(area.left(), area.top(), area.width(), area.height() * 0.55);
     const QRectF bottom(area.left(), top.bottom(), area.width(), area.height() - top.height());
-    paintSlabScene(
-        p, top,
-        SlabScene{run.frameAt(tau), run.params(), run.tstar(), run.displayEnd(), run.exitSide()});
+    paintSlabScene(p, top,
+                   SlabScene{run.frameAt(tau), run.params(), run.tstar(), run.displayEnd(),
+                             run.exitSide(), units});
     paintTraces(p, bottom, run, tau);
 }
 
 namespace {
-QImage renderImage(const TeachingRun& run, double tau, QSize size) {
+QImage renderImage(const TeachingRun& run, double tau, QSize size, UnitSystem units) {
     QImage img(size, QImage::Format_RGB32);
     img.fill(Qt::white);
     QPainter p(&img);
-    paintTeachingFrame(p, QRectF(QPointF(0, 0), QSizeF(size)), run, tau);
+    paintTeachingFrame(p, QRectF(QPointF(0, 0), QSizeF(size)), run, tau, units);
     return img;
 }
 } // namespace
 
-QString saveFramePng(const QString& path, const TeachingRun& run, double tau, QSize size) {
+QString saveFramePng(const QString& path, const TeachingRun& run, double tau, QSize size,
+                     UnitSystem units) {
     if (size.width() < 16 || size.height() < 16)
         return QStringLiteral("image size %1×%2 is too small").arg(size.width()).arg(size.height());
-    return saveImageAtomically(path, renderImage(run, tau, size), "PNG");
+    return saveImageAtomically(path, renderImage(run, tau, size, units), "PNG");
 }
 
-QString saveFrameSvg(const QString& path, const TeachingRun& run, double tau, QSize size) {
+QString saveFrameSvg(const QString& path, const TeachingRun& run, double tau, QSize size,
+                     UnitSystem units) {
     QByteArray bytes; // in memory, then written whole (ui/AtomicSave.h)
     QBuffer buffer(&bytes);
     QSvgGenerator svg;
@@ -52,7 +55,7 @@ QString saveFrameSvg(const QString& path, const TeachingRun& run, double tau, QS
     svg.setDescription(QStringLiteral("Slab on its walls and the a(τ), δ(τ) traces"));
     QPainter p;
     if (!p.begin(&svg)) return QStringLiteral("cannot write %1").arg(path);
-    paintTeachingFrame(p, QRectF(QPointF(0, 0), QSizeF(size)), run, tau);
+    paintTeachingFrame(p, QRectF(QPointF(0, 0), QSizeF(size)), run, tau, units);
     if (!p.end()) return QStringLiteral("cannot write %1").arg(path);
     return saveAtomically(path, bytes);
 }
@@ -90,7 +93,7 @@ SequenceResult saveFrameSequence(const QString& directory, const TeachingRun& ru
         const double tau = std::min(k * dTau, run.displayEnd());
         const QString file =
             dir.filePath(QStringLiteral("frame_%1.png").arg(k, 5, 10, QLatin1Char('0')));
-        r.error = saveFramePng(file, run, tau, o.size);
+        r.error = saveFramePng(file, run, tau, o.size, o.units);
         if (!r.error.isEmpty()) return r;
         r.frames = k + 1;
     }

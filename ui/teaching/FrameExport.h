@@ -4,6 +4,7 @@
 // PNG or SVG, and a whole run as a numbered PNG sequence (frame_00000.png, ...) for slides
 // and video tools.
 
+#include "ui/Units.h"
 #include "ui/teaching/TeachingRun.h"
 
 #include <QRectF>
@@ -17,17 +18,19 @@ class QPainter;
 namespace kinstab::ui {
 
 // Drawing in the upper 55 %, traces below.
-void paintTeachingFrame(QPainter& p, const QRectF& area, const TeachingRun& run, double tau);
+void paintTeachingFrame(QPainter& p, const QRectF& area, const TeachingRun& run, double tau,
+                        UnitSystem units = UnitSystem::SI);
 
 // Each returns an empty string on success, else a message naming the file.
 QString saveFramePng(const QString& path, const TeachingRun& run, double tau,
-                     QSize size = {1280, 900});
+                     QSize size = {1280, 900}, UnitSystem units = UnitSystem::SI);
 QString saveFrameSvg(const QString& path, const TeachingRun& run, double tau,
-                     QSize size = {1280, 900});
+                     QSize size = {1280, 900}, UnitSystem units = UnitSystem::SI);
 
 struct SequenceOptions {
     double framesPerSecond = 25;
-    double speed = 1.0; // as the player's: 1x = real time
+    double speed = 1.0;                // as the player's: 1x = real time
+    UnitSystem units = UnitSystem::SI; // lengths in the drawing
     QSize size{960, 675};
     int maxFrames = 20000;
 };

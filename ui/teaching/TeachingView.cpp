@@ -332,11 +332,11 @@ void TeachingView::updateOutcome() {
 }
 
 QString TeachingView::exportFramePng(const QString& path, QSize size) const {
-    return saveFramePng(path, *run_, player_->tau(), size);
+    return saveFramePng(path, *run_, player_->tau(), size, units_);
 }
 
 QString TeachingView::exportFrameSvg(const QString& path, QSize size) const {
-    return saveFrameSvg(path, *run_, player_->tau(), size);
+    return saveFrameSvg(path, *run_, player_->tau(), size, units_);
 }
 
 int TeachingView::exportSequence(const QString& directory, double framesPerSecond, QSize size,
@@ -345,6 +345,7 @@ int TeachingView::exportSequence(const QString& directory, double framesPerSecon
     o.framesPerSecond = framesPerSecond;
     o.speed = player_->speed();
     o.size = size;
+    o.units = units_;
     const SequenceResult r = saveFrameSequence(directory, *run_, o);
     if (error) *error = r.error;
     return r.error.isEmpty() ? r.frames : 0;
@@ -370,6 +371,7 @@ void TeachingView::exportSequenceDialog() {
     progress.setWindowModality(Qt::WindowModal);
     SequenceOptions o;
     o.speed = player_->speed();
+    o.units = units_;
     const SequenceResult r = saveFrameSequence(dir, *run_, o, [&](int done, int total) {
         progress.setMaximum(total);
         progress.setValue(done);
