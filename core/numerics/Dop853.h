@@ -136,4 +136,9 @@ inline double dop853StepFactor(double err) {
     return std::clamp(0.9 * std::pow(err, -0.125), 0.2, 10.0);
 }
 
+// The step to retry with after a step rejected with error norm err (NaN: a fifth of it).
+inline double dop853RetryStep(double h, double err) {
+    return h * (std::isfinite(err) ? dop853StepFactor(err) : 0.2);
+}
+
 } // namespace kinstab

@@ -10,6 +10,7 @@
 #include "core/excitation/Excitation1D.h"
 #include "core/slab/SlabTypes.h"
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -42,7 +43,8 @@ public:
     // True when nothing can start any more after tau: the root-sum-square of both components'
     // bounds is below mu times the least n can be (docs/theory.md §5, "End").
     bool quietAfter(double tau) const;
-    // True when nothing can start inside [lo, hi] (cheap rigorous bounds).
+    // True when nothing can start inside [lo, hi] (cheap rigorous bounds: the components'
+    // envelopes, or |a_h| at the middle plus the bound on |a_h'| times the half-length).
     bool quietOn(double lo, double hi) const;
     // True when n may reach 0 inside [lo, hi].
     bool mayLiftOn(double lo, double hi) const;
@@ -63,6 +65,8 @@ private:
     const EnvelopedSine* sharedX_ = nullptr;
     const EnvelopedSine* sharedY_ = nullptr;
     PlanarParams params_;
+    // Bound on |a_h'| over all time (both components enveloped sines; infinite otherwise).
+    double slopeBound_ = std::numeric_limits<double>::infinity();
 };
 
 } // namespace kinstab
