@@ -7,6 +7,7 @@
 #include "ui/NumericsView.h"
 #include "ui/RecordsTab.h"
 
+#include "core/base/ModelKind.h"
 #include "core/codes/CodeSet.h"
 #include "core/io/ResultJson.h"
 #include "ui/BuildingPanel.h"
@@ -422,7 +423,7 @@ void MainWindow::exportSurface() {
             using nlohmann::json;
             json j = sweepJson(sweep, sweepCase.tauRef());
             j["kinstab_version"] = KINSTAB_VERSION;
-            j["model"] = "slab1d";
+            j["model"] = modelKindName(ModelKind::Slab1D);
             j["solver"] = solverName(sweepCase.solver);
             j["envelope"] = {{"name", sweepCase.envelope.name()},
                              {"alpha", sweepCase.envelope.alpha},
@@ -433,7 +434,7 @@ void MainWindow::exportSurface() {
             j["limit"] = sweepCase.slab.limit;
             if (sweepPlanar) {
                 const PlanarCase& c = *sweepPlanar;
-                j.update({{"model", "planar"},
+                j.update({{"model", modelKindName(ModelKind::Planar)},
                           {"solver", "dop853"},
                           {"fy", c.fyHz},
                           {"ay_ratio", c.ayRatio},

@@ -3,7 +3,7 @@
 // that follow the building, and what QSettings keeps between sessions.
 
 #include "core/codes/CodeSet.h"
-#include "core/io/InputLimits.h"
+#include "core/base/InputLimits.h"
 #include "ui/AtomicSave.h"
 #include "ui/BuildingPanel.h"
 #include "ui/CodesPanel.h"

@@ -45,7 +45,7 @@ ModelPanel::ModelPanel(QWidget* parent)
     connect(m_normalization, &QComboBox::currentIndexChanged, this, &InputPanel::changed);
     connect(m_path, &QLineEdit::editingFinished, this, &ModelPanel::checkVerticalFile);
     connect(m_browse, &QPushButton::clicked, this, &ModelPanel::browse);
-    load("slab1d", PlanarSettings{});
+    load(modelKindName(ModelKind::Slab1D), PlanarSettings{});
 }
 
 void ModelPanel::buildPlanarRows() {
@@ -152,7 +152,7 @@ bool ModelPanel::isPlanar() const {
 }
 
 std::string ModelPanel::model() const {
-    return isPlanar() ? "planar" : "slab1d";
+    return modelKindName(isPlanar() ? ModelKind::Planar : ModelKind::Slab1D);
 }
 
 PlanarSettings ModelPanel::settings() const {
@@ -171,7 +171,7 @@ void ModelPanel::load(const std::string& model, const PlanarSettings& s) {
     m_loaded = s;
     {
         const QSignalBlocker block(this); // one changed() at the end
-        m_model->setCurrentIndex(model == "planar" ? 1 : 0);
+        m_model->setCurrentIndex(modelKindFromName(model) == ModelKind::Planar ? 1 : 0);
         m_fy->setValue(s.fyHz);
         m_ratio->setValue(s.ayRatio);
         m_theta->setValue(s.theta);

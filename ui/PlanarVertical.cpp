@@ -2,7 +2,7 @@
 #include "ui/PlanarVertical.h"
 
 #include "core/codes/Building.h"
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 #include "ui/RecordPreview.h"
 
 #include <QFile>

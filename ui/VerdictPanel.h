@@ -4,7 +4,7 @@
 // the building's frequency, the margin A_crit / ratio and what governs, in words.
 
 #include "core/codes/CodeResult.h"
-#include "core/codes/DesignCheck.h"
+#include "core/check/DesignCheck.h"
 
 #include <QWidget>
 

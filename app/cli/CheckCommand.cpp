@@ -5,10 +5,10 @@
 #include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/RecordFlags.h"
-#include "core/codes/DesignCheck.h"
+#include "core/check/DesignCheck.h"
 #include "core/io/CodesJson.h"
 #include "core/io/Project.h"
-#include "core/sweep/RecordAnalysis.h"
+#include "core/check/RecordAnalysis.h"
 
 #include <chrono>
 #include <iostream>
@@ -49,9 +49,10 @@ int runCheck(const ArgList& argv) {
     const Project p = projectFromFlag(args);
     if (p.codes.empty())
         throw UsageError("--project " + args.text("project") + ": the project selects no code");
-    if (p.model != "slab1d")
+    if (modelKindFromName(p.model) != ModelKind::Slab1D)
         throw UsageError("--project " + args.text("project") + ": model '" + p.model +
-                         "': the design check uses the slab1d model");
+                         "': the design check uses the " + modelKindName(ModelKind::Slab1D) +
+                         " model");
     const auto start = std::chrono::steady_clock::now();
     nlohmann::json j;
     try {
@@ -62,7 +63,7 @@ int runCheck(const ArgList& argv) {
         throw inputUsageError(e);
     }
     j["project"] = p.name;
-    j["model"] = "slab1d";
+    j["model"] = modelKindName(ModelKind::Slab1D);
     j["solver"] = solverName(p.slab.solver);
     if (!p.record) j["envelope"] = envelopeJson(p.slab);
     j["mu"] = p.slab.slab.mu;

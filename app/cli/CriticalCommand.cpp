@@ -49,7 +49,7 @@ int runCritical(const ArgList& argv) {
     }
     nlohmann::json j = {{"frequencies", freqs},
                         {"a_crit", crit},
-                        {"model", "slab1d"},
+                        {"model", modelKindName(ModelKind::Slab1D)},
                         {"solver", solverName(c.solver)},
                         {"envelope", envelopeJson(c)},
                         {"mu", c.slab.mu},

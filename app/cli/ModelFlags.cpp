@@ -9,10 +9,15 @@ std::set<std::string> modelFlagNames() {
             "theta", "vertical", "record", "floor-period", "damping",     "normalization"};
 }
 
+ModelKind modelFromFlags(const Args& args) {
+    std::set<std::string> names;
+    for (ModelKind m : kModelKinds) names.insert(modelKindName(m));
+    return *modelKindFromName(args.choice("model", names, modelKindName(ModelKind::Slab1D)));
+}
+
 namespace {
 void requireOnly1D(const Args& args, bool allowRecord) {
-    const std::string model = args.choice("model", {"slab1d", "planar"}, "slab1d");
-    if (model != "slab1d")
+    if (modelFromFlags(args) != ModelKind::Slab1D)
         throw UsageError(
             "--model planar: not available for this command (use simulate or surface)");
     for (const char* f : {"ay-ratio", "fy", "theta", "vertical", "normalization"})

@@ -3,6 +3,7 @@
 // The model flags shared by simulate, surface and critical (docs/user-guide.md "The command line").
 
 #include "app/cli/Args.h"
+#include "core/base/ModelKind.h"
 #include "core/slab/Slab1DCase.h"
 
 #include <nlohmann/json.hpp>
@@ -10,6 +11,8 @@
 
 namespace kinstab::cli {
 
+// --model slab1d|planar (default slab1d); throws UsageError naming the flag and the value.
+ModelKind modelFromFlags(const Args& args);
 // Flags every model command accepts.
 std::set<std::string> modelFlagNames();
 // Reads and validates the 1-DOF case; throws UsageError naming the bad flag.

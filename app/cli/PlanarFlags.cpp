@@ -5,13 +5,13 @@
 #include "core/codes/Building.h"
 #include "core/excitation/FrequencyRange.h"
 #include "core/excitation/RecordedMotion.h"
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 #include "core/slab/PlanarSettings.h"
 
 namespace kinstab::cli {
 
 bool isPlanar(const Args& args) {
-    return args.choice("model", {"slab1d", "planar"}, "slab1d") == "planar";
+    return modelFromFlags(args) == ModelKind::Planar;
 }
 
 namespace {
@@ -69,7 +69,7 @@ nlohmann::json planarCaseJson(const PlanarCase& c) {
     if (const auto* r = dynamic_cast<const RecordedMotion*>(c.vertical.get()))
         vertical = {
             {"samples", r->samples().size()}, {"dt_tau", r->sampleStep()}, {"peak_g", r->peak()}};
-    return {{"model", "planar"},
+    return {{"model", modelKindName(ModelKind::Planar)},
             {"solver", "dop853"},
             {"rel_tol", c.solver.relTol},
             {"abs_tol", c.solver.absTol},

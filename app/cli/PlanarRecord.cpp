@@ -12,7 +12,7 @@
 #include "app/cli/RecordFlags.h"
 #include "core/io/ResultJson.h"
 #include "core/slab/PlanarRecordCase.h"
-#include "core/sweep/RecordAnalysis.h"
+#include "core/check/RecordAnalysis.h"
 
 #include <chrono>
 #include <iostream>

@@ -55,7 +55,7 @@ int runSimulate(const ArgList& argv) {
     requireSound(r, caseName(c, amplitude, frequency));
 
     nlohmann::json j = slabResultJson(r, c.tauRef());
-    j["model"] = "slab1d";
+    j["model"] = modelKindName(ModelKind::Slab1D);
     j["solver"] = solverName(c.solver);
     j["amplitude"] = amplitude;
     j["frequency"] = frequency;

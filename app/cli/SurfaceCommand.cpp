@@ -35,7 +35,7 @@ int runSurface(const ArgList& argv) {
         return 0;
     }
     nlohmann::json j = sweepJson(r, c.tauRef());
-    j["model"] = "slab1d";
+    j["model"] = modelKindName(ModelKind::Slab1D);
     j["solver"] = solverName(c.solver);
     j["envelope"] = envelopeJson(c);
     j["mu"] = c.slab.mu;

@@ -9,7 +9,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/HelpText.h"
 #include "core/io/AtomicFile.h"
-#include "core/numerics/InternalError.h"
+#include "core/base/InternalError.h"
 #include "core/numerics/VectorState.h"
 
 #include <exception>

@@ -2,7 +2,7 @@
 #include "core/excitation/EnvelopedSine.h"
 
 #include "core/excitation/FrequencyRange.h"
-#include "core/numerics/InternalError.h"
+#include "core/base/InternalError.h"
 #include "core/numerics/RootFinding.h"
 
 #include <array>

@@ -6,7 +6,7 @@
 
 #include "core/codes/Building.h"
 #include "core/codes/CodeSet.h"
-#include "core/codes/DesignCheck.h"
+#include "core/check/DesignCheck.h"
 #include "core/io/JsonReader.h"
 
 #include <nlohmann/json.hpp>

@@ -2,7 +2,7 @@
 #include "core/io/PlanarJson.h"
 
 #include "core/io/MotionJson.h"
-#include "core/io/TextInput.h"
+#include "core/base/TextInput.h"
 
 namespace kinstab {
 

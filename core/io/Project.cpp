@@ -4,11 +4,11 @@
 #include "core/io/AtomicFile.h"
 #include "core/io/CodesJson.h"
 #include "core/io/FloorsJson.h"
-#include "core/io/InputLimits.h"
+#include "core/base/InputLimits.h"
 #include "core/io/JsonReader.h"
 #include "core/io/MotionJson.h"
 #include "core/io/PlanarJson.h"
-#include "core/io/TextInput.h"
+#include "core/base/TextInput.h"
 
 #include <cmath>
 #include <filesystem>
@@ -47,8 +47,8 @@ std::string validateProject(const Project& p) {
         return "description: " + std::to_string(p.description.size()) +
                " characters, more than the limit of " +
                std::to_string(limits::kMaxDescriptionChars);
-    if (p.model != "slab1d" && p.model != "planar")
-        return "model = " + quotedToken(p.model) + ": must be slab1d or planar";
+    if (!modelKindFromName(p.model))
+        return "model = " + quotedToken(p.model) + ": must be " + modelKindChoices();
     std::string e = validateBuilding(p.building);
     if (e.empty()) e = validateCodes(p.codes);
     if (e.empty() && !(e = validateCase(p.slab)).empty()) e = "slab: " + e;
@@ -191,7 +191,7 @@ Project projectFromJson(const json& j, const std::string& baseDir) {
             p.grid.amplitudes = g->numbers("amplitudes");
             p.grid.frequencies = g->numbers("frequencies");
         }
-        p.model = r.text("model", "slab1d");
+        p.model = r.text("model", modelKindName(ModelKind::Slab1D));
         // Projects written before the planar model have no "planar" key: defaults.
         if (auto pl = r.optionalObject("planar")) p.planar = planarSettingsFromJson(*pl, baseDir);
         if (auto c = r.optionalObject("check")) p.critical = checkFrom(*c);

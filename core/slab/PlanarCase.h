@@ -9,7 +9,7 @@
 #include "core/excitation/Excitation1D.h"
 #include "core/slab/PlanarSolver.h"
 #include "core/slab/Slab1DCase.h"
-#include "core/sweep/Sweep.h"
+#include "core/slab/PointResult.h"
 
 #include <memory>
 #include <optional>

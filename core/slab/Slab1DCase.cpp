@@ -2,7 +2,7 @@
 #include "core/slab/Slab1DCase.h"
 
 #include "core/excitation/EnvelopedSine.h"
-#include "core/numerics/InternalError.h"
+#include "core/base/InternalError.h"
 #include "core/slab/ExactSolver.h"
 #include "core/slab/FiniteResult.h"
 

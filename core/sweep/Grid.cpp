@@ -2,8 +2,8 @@
 #include "core/sweep/Grid.h"
 
 #include "core/excitation/FrequencyRange.h"
-#include "core/io/InputLimits.h"
-#include "core/io/TextInput.h"
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
 
 #include <cmath>
 #include <optional>

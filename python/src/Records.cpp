@@ -4,9 +4,9 @@
 
 #include "core/excitation/FloorFilter.h"
 #include "core/excitation/RecordedMotion.h"
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 #include "core/slab/History.h"
-#include "core/sweep/RecordAnalysis.h"
+#include "core/check/RecordAnalysis.h"
 #include "python/src/Arguments.h"
 #include "python/src/Arrays.h"
 #include "python/src/Bindings.h"

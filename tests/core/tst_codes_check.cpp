@@ -4,7 +4,7 @@
 // UBC, 0.275 ATC) are far below it → "overstress governs".
 
 #include "core/codes/CodeSet.h"
-#include "core/codes/DesignCheck.h"
+#include "core/check/DesignCheck.h"
 #include "core/io/Project.h"
 
 #include <QtTest>

@@ -3,7 +3,7 @@
 // nothing is computed from it (docs/theory.md §9, issue #3).
 
 #include "core/codes/CodeSet.h"
-#include "core/codes/DesignCheck.h"
+#include "core/check/DesignCheck.h"
 
 #include <QtTest>
 

@@ -8,7 +8,7 @@
 #include "core/excitation/EnvelopedSine.h"
 #include "core/excitation/FrequencyRange.h"
 #include "core/io/ResultJson.h"
-#include "core/numerics/InternalError.h"
+#include "core/base/InternalError.h"
 #include "core/slab/ExactSolver.h"
 #include "core/slab/FiniteResult.h"
 #include "core/slab/Slab1DCase.h"

@@ -7,7 +7,7 @@
 // and its tolerance, never the exact closed-form solver. Needs poppler-utils.
 
 #include "core/io/Project.h"
-#include "core/sweep/RecordAnalysis.h"
+#include "core/check/RecordAnalysis.h"
 #include "ui/report/ReportWriter.h"
 
 #include <QProcess>

@@ -7,7 +7,7 @@
 #include "WindowFields.h"
 #include "core/codes/CodeSet.h"
 #include "core/io/Project.h"
-#include "core/sweep/RecordAnalysis.h"
+#include "core/check/RecordAnalysis.h"
 #include "ui/CodesPanel.h"
 #include "ui/ExcitationPanel.h"
 #include "ui/GridPanel.h"

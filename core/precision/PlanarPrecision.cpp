@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/numerics/PlanarPrecision.h"
+#include "core/precision/PlanarPrecision.h"
 
 #include "core/slab/MoreauSolver2D.h"
 

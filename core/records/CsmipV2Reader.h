@@ -7,8 +7,8 @@
 //   "7500 points of accel data equally spaced at  .010 sec, in cm/sec2. (8f10.6)"
 // in fixed-width fields (8F10.3 unless the line names a format). Only the accel block is read.
 
-#include "core/io/Accelerogram.h"
-#include "core/io/RecordText.h"
+#include "core/records/Accelerogram.h"
+#include "core/records/RecordText.h"
 
 namespace kinstab {
 

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 
-#include "core/io/At2Reader.h"
-#include "core/io/CosmosReader.h"
-#include "core/io/CsmipV2Reader.h"
-#include "core/io/InputLimits.h"
-#include "core/io/PlainTextReader.h"
-#include "core/io/TextInput.h"
+#include "core/records/At2Reader.h"
+#include "core/records/CosmosReader.h"
+#include "core/records/CsmipV2Reader.h"
+#include "core/base/InputLimits.h"
+#include "core/records/PlainTextReader.h"
+#include "core/base/TextInput.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,7 +20,7 @@ const std::pair<RecordFormat, const char*> kNames[] = {
     {RecordFormat::Values, "values"}, {RecordFormat::TimeAccel, "time-accel"},
 };
 
-// What a file's numbers may be (core/io/InputLimits.h), and header text short enough to show.
+// What a file's numbers may be (core/base/InputLimits.h), and header text short enough to show.
 void checkLimits(const RecordText& text, Accelerogram& a) {
     using namespace limits;
     if (std::isfinite(a.dt) && (a.dt < kMinRecordDt || a.dt > kMaxRecordDt))

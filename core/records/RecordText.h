@@ -3,7 +3,7 @@
 // The text of an accelerogram file as numbered lines, and the number scanning every reader
 // shares. Every failure is a RecordError naming the file and the 1-based line.
 
-#include "core/io/Accelerogram.h"
+#include "core/records/Accelerogram.h"
 
 #include <optional>
 #include <string>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/codes/DesignCheck.h"
+#include "core/check/DesignCheck.h"
 
 #include "core/codes/Building.h"
-#include "core/io/TextInput.h"
+#include "core/base/TextInput.h"
 #include "core/sweep/Sweep.h"
 
 #include <cmath>
@@ -10,10 +10,6 @@
 #include <sstream>
 
 namespace kinstab {
-
-std::string verdictText(Verdict v) {
-    return v == Verdict::OverstressGoverns ? "overstress governs" : "kinetic instability governs";
-}
 
 std::string validateCriticalSearch(const CriticalSearch& s) {
     try {

@@ -9,7 +9,7 @@
 // no events at all; the study reports the largest relative difference of tau_c between the two.
 
 #include "core/excitation/Excitation1D.h"
-#include "core/numerics/WorkPrecision.h"
+#include "core/precision/WorkPrecision.h"
 #include "core/slab/PlanarCase.h"
 
 #include <functional>

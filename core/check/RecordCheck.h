@@ -5,7 +5,7 @@
 // the enveloped sine. A record carries its own frequency content, so one critical peak serves
 // every code; the verdict rule is the sine's (judgeCode).
 
-#include "core/codes/DesignCheck.h"
+#include "core/check/DesignCheck.h"
 #include "core/sweep/CriticalRecordScale.h"
 
 #include <vector>

@@ -6,8 +6,8 @@
 // values. The sample interval is real header #62, in milliseconds (SOURCES.md §6; #34 is the
 // raw sampling interval, not the processed one).
 
-#include "core/io/Accelerogram.h"
-#include "core/io/RecordText.h"
+#include "core/records/Accelerogram.h"
+#include "core/records/RecordText.h"
 
 namespace kinstab {
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/io/Accelerogram.h"
+#include "core/records/Accelerogram.h"
 
-#include "core/io/TextInput.h"
+#include "core/base/TextInput.h"
 
 #include <algorithm>
 #include <cctype>

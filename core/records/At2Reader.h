@@ -5,8 +5,8 @@
 //   "NPTS=   4172, DT=   .0100 SEC, ..."   "NPTS=  4000, DT= .01000 SEC"   "4164  0.0100  NPTS, DT"
 // then NPTS values in g, any number per line, blank-separated.
 
-#include "core/io/Accelerogram.h"
-#include "core/io/RecordText.h"
+#include "core/records/Accelerogram.h"
+#include "core/records/RecordText.h"
 
 namespace kinstab {
 

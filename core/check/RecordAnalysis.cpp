@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/sweep/RecordAnalysis.h"
+#include "core/check/RecordAnalysis.h"
 
 #include "core/codes/Building.h"
 #include "core/excitation/RecordedMotion.h"

@@ -6,7 +6,7 @@
 // code's verdict against it. Shared by kinstab-cli (simulate --record, check), the GUI's worker and
 // the report.
 
-#include "core/codes/RecordCheck.h"
+#include "core/check/RecordCheck.h"
 #include "core/excitation/EnvelopeFit.h"
 #include "core/excitation/RecordExcitation.h"
 #include "core/sweep/CriticalRecordScale.h"

@@ -7,8 +7,8 @@
 //    taken to start at its first row.
 // Lines starting with '#' or '%' are comments.
 
-#include "core/io/Accelerogram.h"
-#include "core/io/RecordText.h"
+#include "core/records/Accelerogram.h"
+#include "core/records/RecordText.h"
 
 namespace kinstab {
 

@@ -6,6 +6,7 @@
 // slide off (kinetic instability). Margin = A_crit / ratio.
 
 #include "core/codes/CodeResult.h"
+#include "core/codes/Verdict.h"
 #include "core/slab/Slab1DCase.h"
 #include "core/sweep/CriticalAmplitude.h"
 
@@ -14,9 +15,6 @@
 #include <vector>
 
 namespace kinstab {
-
-enum class Verdict { OverstressGoverns, KineticInstabilityGoverns };
-std::string verdictText(Verdict v); // "overstress governs" | "kinetic instability governs"
 
 struct CodeVerdict {
     std::string code;
@@ -50,7 +48,7 @@ DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1D
 std::string validateCriticalSearch(const CriticalSearch& s); // empty when fine
 
 // One code's verdict against a critical amplitude (nullopt: nothing collapsed up to
-// searchLimit); shared by the sine's check and the record's (core/codes/RecordCheck.h).
+// searchLimit); shared by the sine's check and the record's (core/check/RecordCheck.h).
 CodeVerdict judgeCode(const CodeResult& r, std::optional<double> aCrit, double searchLimit);
 
 } // namespace kinstab

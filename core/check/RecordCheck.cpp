@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/codes/RecordCheck.h"
+#include "core/check/RecordCheck.h"
 
 #include <sstream>
 

@@ -3,8 +3,8 @@
 // One entry point for every accelerogram format (docs/theory.md §7): picks the reader by the file's
 // first lines unless told, and validates the result.
 
-#include "core/io/Accelerogram.h"
-#include "core/io/RecordText.h"
+#include "core/records/Accelerogram.h"
+#include "core/records/RecordText.h"
 
 #include <optional>
 #include <string>
