@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/ModelPanel.h"
 
+#include "core/excitation/FrequencyRange.h"
+
 #include "ui/NumberField.h"
 #include "ui/PlanarVertical.h"
 #include "ui/RecordPreview.h"
@@ -52,7 +54,7 @@ void ModelPanel::buildPlanarRows() {
     m_fy = addField("fy", tr("f_&y:"), tr("Hz"),
                     tr("Frequency of the motion along the walls. The paper's Figs. 37–42 use "
                        "0.2, 0.5, 1, 2, 5 and 10 Hz; the critical amplitude rises with f_y."));
-    m_fy->setCheck(rangeCheck(0, 1000, false));
+    m_fy->setCheck(rangeCheck(0, kMaxFrequencyHz, false));
     m_ratio = addField("ayRatio", tr("A_y / A_x:"), QString(),
                        tr("Amplitude along the walls over the amplitude across them. The paper "
                           "takes 0.9, Pacoima Dam's ratio of horizontal peaks."));

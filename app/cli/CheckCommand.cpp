@@ -2,13 +2,13 @@
 #include "app/cli/Args.h"
 #include "app/cli/BuildingFlags.h"
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/RecordFlags.h"
 #include "core/check/DesignCheck.h"
-#include "core/io/CodesJson.h"
-#include "core/io/Project.h"
 #include "core/check/RecordAnalysis.h"
+#include "core/io/CodesJson.h"
+#include "core/io/JsonText.h"
+#include "core/io/Project.h"
 
 #include <chrono>
 #include <iostream>

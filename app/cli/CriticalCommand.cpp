@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/PlanarFlags.h"
 #include "app/cli/SearchFlags.h"
 #include "core/excitation/FrequencyRange.h"
+#include "core/io/JsonText.h"
 #include "core/io/ResultJson.h"
 #include "core/slab/FiniteResult.h"
 #include "core/sweep/CriticalAmplitude.h"

@@ -4,6 +4,7 @@
 
 #include "app/cli/Args.h"
 #include "core/base/ModelKind.h"
+#include "core/io/CaseJson.h"
 #include "core/slab/Slab1DCase.h"
 
 #include <nlohmann/json.hpp>
@@ -21,7 +22,5 @@ Slab1DCase slab1DCaseFromFlags(const Args& args, bool allowRecord = false);
 // The flags both models share (envelope, t*, mu, limit, scale, duration, solver), unchecked
 // against the model.
 Slab1DCase commonCaseFromFlags(const Args& args);
-// The "envelope" object of the JSON outputs.
-nlohmann::json envelopeJson(const Slab1DCase& c);
 
 } // namespace kinstab::cli

@@ -4,9 +4,10 @@
 // collapsed), tau_lift_off, max_abs_delta_y, residual_delta_y, and the planar case.
 
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
 #include "app/cli/PlanarFlags.h"
+#include "core/io/JsonText.h"
 #include "core/io/ResultJson.h"
+#include "core/io/SurfaceJson.h"
 #include "core/sweep/CriticalAmplitude.h"
 
 #include <chrono>
@@ -83,23 +84,7 @@ int runSurfacePlanar(const Args& args, const SweepGrid& grid, int threads,
         writeOutput(args, "o", sweepCsv(r, c.tauRef()));
         return 0;
     }
-    nlohmann::json j = sweepJson(r, c.tauRef());
-    j.update(planarCaseJson(c));
-    // Which side each collapse leaves by (null where the slab did not collapse).
-    nlohmann::json sides = nlohmann::json::array();
-    for (std::size_t i = 0; i < grid.amplitudes.size(); ++i) {
-        nlohmann::json row = nlohmann::json::array();
-        for (std::size_t k = 0; k < grid.frequencies.size(); ++k) {
-            const std::size_t idx = i * grid.frequencies.size() + k;
-            const PointResult& p = r.points[idx];
-            row.push_back(r.done[idx] && p.outcome == Outcome::Collapsed
-                              ? nlohmann::json(exitSideName(p.exitSide))
-                              : nlohmann::json());
-        }
-        sides.push_back(row);
-    }
-    j["exit_side"] = sides;
-    writeOutput(args, "o", jsonText(j) + "\n");
+    writeOutput(args, "o", jsonText(surfaceJson(r, c)) + "\n");
     return 0;
 }
 

@@ -60,28 +60,4 @@ PlanarCase planarCaseFromFlags(const Args& args, bool recordDriven) {
     return c;
 }
 
-nlohmann::json planarCaseJson(const PlanarCase& c) {
-    Slab1DCase common;
-    common.envelope = c.envelope;
-    common.tstar = c.tstar;
-    common.scale = c.scale;
-    nlohmann::json vertical; // null: gravity only
-    if (const auto* r = dynamic_cast<const RecordedMotion*>(c.vertical.get()))
-        vertical = {
-            {"samples", r->samples().size()}, {"dt_tau", r->sampleStep()}, {"peak_g", r->peak()}};
-    return {{"model", modelKindName(ModelKind::Planar)},
-            {"solver", "dop853"},
-            {"rel_tol", c.solver.relTol},
-            {"abs_tol", c.solver.absTol},
-            {"envelope", envelopeJson(common)},
-            {"mu", c.slab.mu},
-            {"tstar", c.tstar},
-            {"limit", c.slab.limit},
-            {"theta", c.slab.theta},
-            {"ay_ratio", c.ayRatio},
-            {"fy", c.fyHz},
-            {"normalization", normalizationName(c.normalization)},
-            {"vertical", vertical}};
-}
-
 } // namespace kinstab::cli

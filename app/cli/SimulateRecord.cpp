@@ -9,14 +9,14 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/RecordFlags.h"
 #include "app/cli/SearchFlags.h"
+#include "core/check/RecordAnalysis.h"
 #include "core/excitation/RecordedMotion.h"
+#include "core/io/JsonText.h"
 #include "core/io/ResultJson.h"
 #include "core/slab/History.h"
-#include "core/check/RecordAnalysis.h"
 
 #include <iostream>
 

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/PlanarFlags.h"
+#include "core/io/JsonText.h"
 #include "core/io/ResultJson.h"
 #include "core/io/ResultTable.h"
+#include "core/io/SurfaceJson.h"
 
 namespace kinstab::cli {
 
@@ -34,14 +35,7 @@ int runSurface(const ArgList& argv) {
         writeOutput(args, "o", sweepCsv(r, c.tauRef()));
         return 0;
     }
-    nlohmann::json j = sweepJson(r, c.tauRef());
-    j["model"] = modelKindName(ModelKind::Slab1D);
-    j["solver"] = solverName(c.solver);
-    j["envelope"] = envelopeJson(c);
-    j["mu"] = c.slab.mu;
-    j["tstar"] = c.tstar;
-    j["limit"] = c.slab.limit;
-    writeOutput(args, "o", jsonText(j) + "\n");
+    writeOutput(args, "o", jsonText(surfaceJson(r, c)) + "\n");
     return 0;
 }
 

@@ -8,8 +8,8 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/HelpText.h"
-#include "core/io/AtomicFile.h"
 #include "core/base/InternalError.h"
+#include "core/io/AtomicFile.h"
 #include "core/numerics/VectorState.h"
 
 #include <exception>

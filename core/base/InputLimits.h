@@ -50,4 +50,12 @@ inline constexpr double kMinRecordDt = 1e-4;
 // are a few g; a value of hundreds of g is a file in other units read as g.
 inline constexpr double kMaxRecordAccelG = 100.0;
 
+// Largest amplitude, peak or search limit of a motion, g: of a grid, a single run, a record's
+// target peak and the critical searches. A thousand g is far beyond any collapse of a slab on
+// its walls (A_crit is a few g at most, Furgerson 1980, Fig. 26); a larger value is a typing slip.
+inline constexpr double kMaxAmplitudeG = 1000.0;
+// Widest wall a slab rests on, inches (t* from the wall width, Furgerson 1980, eq. 4.3): a
+// thousand inches (25 m) is no wall.
+inline constexpr double kMaxWallWidthIn = 1000.0;
+
 } // namespace kinstab::limits

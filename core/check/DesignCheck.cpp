@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/check/DesignCheck.h"
 
-#include "core/codes/Building.h"
+#include "core/base/InputLimits.h"
 #include "core/base/TextInput.h"
+#include "core/codes/Building.h"
 #include "core/sweep/Sweep.h"
 
 #include <cmath>
@@ -13,8 +14,8 @@ namespace kinstab {
 
 std::string validateCriticalSearch(const CriticalSearch& s) {
     try {
-        requireRange("check.from", s.from, 0.0, 1000.0, "g");
-        requireAbove("check.max_amplitude", s.to, s.from, 1000.0, "g");
+        requireRange("check.from", s.from, 0.0, limits::kMaxAmplitudeG, "g");
+        requireAbove("check.max_amplitude", s.to, s.from, limits::kMaxAmplitudeG, "g");
         requireAbove("check.scan_step", s.scanStep, 0.0, s.to, "g");
         requireAbove("check.tolerance", s.tolerance, 0.0, s.scanStep, "g");
         // The search's own bounds (core/sweep/CriticalAmplitude.h), refused here as input

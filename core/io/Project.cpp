@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/Project.h"
 
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
 #include "core/io/AtomicFile.h"
 #include "core/io/CodesJson.h"
 #include "core/io/FloorsJson.h"
-#include "core/base/InputLimits.h"
 #include "core/io/JsonReader.h"
 #include "core/io/MotionJson.h"
 #include "core/io/PlanarJson.h"
-#include "core/base/TextInput.h"
 
 #include <cmath>
 #include <filesystem>
@@ -53,9 +53,10 @@ std::string validateProject(const Project& p) {
     if (e.empty()) e = validateCodes(p.codes);
     if (e.empty() && !(e = validateCase(p.slab)).empty()) e = "slab: " + e;
     if (e.empty() && p.wallWidthIn &&
-        (!std::isfinite(*p.wallWidthIn) || *p.wallWidthIn <= 0.0 || *p.wallWidthIn > 1000.0))
-        e = "slab.wall_width_in = " + formatDouble(*p.wallWidthIn) +
-            ": must be > 0 and at most 1000";
+        (!std::isfinite(*p.wallWidthIn) || *p.wallWidthIn <= 0.0 ||
+         *p.wallWidthIn > limits::kMaxWallWidthIn))
+        e = "slab.wall_width_in = " + formatDouble(*p.wallWidthIn) + ": must be > 0 and at most " +
+            formatDouble(limits::kMaxWallWidthIn);
     if (e.empty() && (!p.grid.amplitudes.empty() || !p.grid.frequencies.empty()) &&
         !(e = validateGrid(p.grid)).empty())
         e = "grid: " + e;
@@ -109,9 +110,9 @@ void slabFrom(const JsonReader& r, Project& p) {
         r.fail("tstar", "tstar and wall_width_in exclude each other");
     if (r.has("wall_width_in")) {
         p.wallWidthIn = r.requiredNumber("wall_width_in");
-        if (*p.wallWidthIn <= 0.0 || *p.wallWidthIn > 1000.0)
-            r.fail("wall_width_in",
-                   formatDouble(*p.wallWidthIn) + " in: must be > 0 and at most 1000");
+        if (*p.wallWidthIn <= 0.0 || *p.wallWidthIn > limits::kMaxWallWidthIn)
+            r.fail("wall_width_in", formatDouble(*p.wallWidthIn) + " in: must be > 0 and at most " +
+                                        formatDouble(limits::kMaxWallWidthIn));
         c.tstar = tstarFromWallWidthInches(*p.wallWidthIn);
     } else {
         c.tstar = r.number("tstar", c.tstar);

@@ -36,9 +36,9 @@ struct Project {
     std::string description;
     Building building;
     CodeSelection codes;
-    Slab1DCase slab;                        // envelope, t*, mu, limit, solver, scale
-    std::optional<double> wallWidthIn;      // set when t* comes from the wall width d (inches)
-    SweepGrid grid;                         // A (g) and f (Hz) of the γc surface
+    Slab1DCase slab;                   // envelope, t*, mu, limit, solver, scale
+    std::optional<double> wallWidthIn; // set when t* comes from the wall width d (inches)
+    SweepGrid grid;                    // A (g) and f (Hz) of the γc surface
     std::string model = modelKindName(ModelKind::Slab1D); // core/base/ModelKind.h
     PlanarSettings planar;                  // the planar model's own inputs (core/io/PlanarJson.h)
     CriticalSearch critical;                // A_crit search of the design check

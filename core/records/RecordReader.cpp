@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/records/RecordReader.h"
 
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
 #include "core/records/At2Reader.h"
 #include "core/records/CosmosReader.h"
 #include "core/records/CsmipV2Reader.h"
-#include "core/base/InputLimits.h"
 #include "core/records/PlainTextReader.h"
-#include "core/base/TextInput.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,13 +5,13 @@
 // checked before anything is reserved. Expected values are the Unicode code points of the
 // characters involved, counts of the inputs built here, or the limits themselves.
 
-#include "core/friction/TripletCsv.h"
 #include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
+#include "core/friction/TripletCsv.h"
 #include "core/io/JsonReader.h"
 #include "core/io/MotionJson.h"
 #include "core/io/Project.h"
 #include "core/records/RecordReader.h"
-#include "core/base/TextInput.h"
 #include "core/slab/History.h"
 #include "core/sweep/Grid.h"
 

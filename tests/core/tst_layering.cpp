@@ -20,8 +20,8 @@ namespace {
 
 // Bottom floor first. analysis/ and study/ are placed for the folders other branches add.
 const std::vector<std::string> kCoreFloors = {
-    "base",   "numerics", "records", "codes", "friction", "excitation", "slab",
-    "precision", "sweep", "check",   "building", "analysis", "study",   "io"};
+    "base",      "numerics", "records", "codes",    "friction", "excitation", "slab",
+    "precision", "sweep",    "check",   "building", "analysis", "study",      "io"};
 
 struct Finding {
     std::vector<std::string> upward;     // "core/a/X.h includes core/b/Y.h (floor b above a)"
@@ -40,8 +40,7 @@ void checkFile(const fs::path& file, const std::string& folder, Finding& out) {
     std::string line;
     while (std::getline(in, line)) {
         std::smatch m;
-        if (!std::regex_search(line, m, include) || m[1] == folder)
-            continue;
+        if (!std::regex_search(line, m, include) || m[1] == folder) continue;
         ++out.crossIncludes;
         const std::string target = m[1];
         if (floorOf(target) > floorOf(folder) || floorOf(target) < 0)
@@ -54,8 +53,7 @@ void checkFile(const fs::path& file, const std::string& folder, Finding& out) {
 Finding checkCore(const fs::path& core) {
     Finding out;
     for (const auto& dir : fs::directory_iterator(core)) {
-        if (!dir.is_directory())
-            continue;
+        if (!dir.is_directory()) continue;
         const std::string folder = dir.path().filename().string();
         if (floorOf(folder) < 0) {
             out.undeclared.push_back("core/" + folder);

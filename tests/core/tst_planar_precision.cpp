@@ -9,8 +9,8 @@
 // direction's relaxation rate |a|/|u| and, at rel 1e-6, rejected over and over; the study shows
 // it, so it is not asserted either way.)
 
-#include "core/records/RecordReader.h"
 #include "core/precision/PlanarPrecision.h"
+#include "core/records/RecordReader.h"
 #include "core/slab/PlanarSettings.h"
 
 #include "RecordMotions.h"

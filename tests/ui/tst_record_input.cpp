@@ -5,8 +5,8 @@
 // tst_record_critical), a broken file shows its reason beside the field and blocks Run, and a
 // project with a record survives save and open.
 
-#include "core/io/Project.h"
 #include "core/check/RecordAnalysis.h"
+#include "core/io/Project.h"
 #include "ui/ExcitationPanel.h"
 #include "ui/HistoryChart.h"
 #include "ui/MainWindow.h"

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "app/cli/JsonText.h"
+#include "core/io/JsonText.h"
 
-namespace kinstab::cli {
+namespace kinstab {
 
 std::string jsonText(nlohmann::json j, int indent) {
     if (j.is_object()) j["kinstab_version"] = KINSTAB_VERSION;
     return j.dump(indent);
 }
 
-} // namespace kinstab::cli
+} // namespace kinstab
