@@ -48,6 +48,11 @@ int VerdictPanel::rowCount() const {
     return m_table->rowCount();
 }
 
+QString VerdictPanel::codeText(int row) const {
+    const QTableWidgetItem* item = m_table->item(row, ColCode);
+    return item ? item->text() : QString();
+}
+
 QString VerdictPanel::verdictText(int row) const {
     const QTableWidgetItem* item = m_table->item(row, ColVerdict);
     return item ? item->text() : QString();

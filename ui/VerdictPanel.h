@@ -23,6 +23,7 @@ public:
     void setError(const QString& message);
     void setCheck(const DesignCheckResult& check);
     QString verdictText(int row) const; // for tests
+    QString codeText(int row) const;    // for tests
     int rowCount() const;
 
 private:
