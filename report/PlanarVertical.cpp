@@ -2,7 +2,7 @@
 #include "report/PlanarVertical.h"
 
 #include "core/codes/Building.h"
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 
 #include <QFile>
 #include <QFileInfo>

@@ -4,7 +4,7 @@
 // shipped RSN68 UP from the application's resources (:/records/...), or a record file. Shared by
 // the main window's sweeps and the design report, so both run the same case.
 
-#include "core/io/Accelerogram.h"
+#include "core/records/Accelerogram.h"
 #include "core/slab/PlanarSettings.h"
 
 #include <QString>

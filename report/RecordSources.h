@@ -4,7 +4,7 @@
 // comes from and the licence it is shipped under. The records shipped with kinstab are described
 // in resources/records/SOURCES.md; a user's own file is cited by what its header says.
 
-#include "core/io/Accelerogram.h"
+#include "core/records/Accelerogram.h"
 
 #include <QString>
 

@@ -30,8 +30,10 @@ CodesPanel::CodesPanel(QWidget* parent) : InputPanel(parent) {
     setCodes(defaults);
 }
 
-QGroupBox* CodesPanel::group(const QString& title, const QString& toolTip) {
-    auto* g = new QGroupBox(title, this);
+// The group's title is the code's entry in the catalogue (core/codes/CodeCatalog.h).
+QGroupBox* CodesPanel::group(CodeKey code, const QString& toolTip) {
+    const std::string_view title = codeInfo(code).title;
+    auto* g = new QGroupBox(QString::fromUtf8(title.data(), qsizetype(title.size())), this);
     g->setCheckable(true);
     g->setToolTip(toolTip);
     auto* f = new QFormLayout(g);
@@ -62,8 +64,8 @@ QComboBox* CodesPanel::combo(QFormLayout* f, const QString& label, const QString
 }
 
 void CodesPanel::buildUbc1976() {
-    m_ubc76 = group(tr("UBC 1976 §2312"),
-                    tr("Uniform Building Code 1976: V = Z I K C S W, top force F_t."));
+    m_ubc76 =
+        group(CodeKey::Ubc1976, tr("Uniform Building Code 1976: V = Z I K C S W, top force F_t."));
     auto* f = static_cast<QFormLayout*>(m_ubc76->layout());
     m_ubc76Zone =
         combo(f, tr("Zone:"), {"0", "1", "2", "3", "4"},
@@ -89,7 +91,7 @@ void CodesPanel::buildUbc1976() {
 }
 
 void CodesPanel::buildAtc306() {
-    m_atc = group(tr("ATC 3-06 (1978)"),
+    m_atc = group(CodeKey::Atc306,
                   tr("Tentative Provisions: C_s = 1.2 A_v S / (R T^(2/3)) ≤ 2.5 A_a / R."));
     auto* f = static_cast<QFormLayout*>(m_atc->layout());
     m_atcArea = combo(f, tr("Map area:"), {tr("enter A_a, A_v"), "1", "2", "3", "4", "5", "6", "7"},
@@ -115,7 +117,7 @@ void CodesPanel::buildAtc306() {
 }
 
 void CodesPanel::buildUbc1997() {
-    m_ubc97 = group(tr("UBC 1997 §1630"),
+    m_ubc97 = group(CodeKey::Ubc1997,
                     tr("Strength-level UBC: V = C_v I W / (R T), capped at 2.5 C_a I W / R."));
     auto* f = static_cast<QFormLayout*>(m_ubc97->layout());
     m_ubc97Zone = combo(f, tr("Zone:"), {"1", "2A", "2B", "3", "4"},
@@ -137,7 +139,7 @@ void CodesPanel::buildUbc1997() {
 }
 
 void CodesPanel::buildAsce7() {
-    m_asce = group(tr("ASCE 7-22 §12.8"),
+    m_asce = group(CodeKey::Asce7_22,
                    tr("Equivalent lateral force: C_s = S_DS / (R / I_e), limited by S_D1."));
     auto* f = static_cast<QFormLayout*>(m_asce->layout());
     m_asceSds = field(f, "asceSds", tr("S_DS:"), tr("g"),
@@ -168,7 +170,7 @@ void CodesPanel::buildAsce7() {
 }
 
 void CodesPanel::buildEc8() {
-    m_ec8 = group(tr("Eurocode 8 §4.3.3.2"), tr("Lateral force method: F_b = S_d(T_1) m λ."));
+    m_ec8 = group(CodeKey::Ec8, tr("Lateral force method: F_b = S_d(T_1) m λ."));
     auto* f = static_cast<QFormLayout*>(m_ec8->layout());
     m_ec8Ground =
         combo(f, tr("Ground type:"), {"A", "B", "C", "D", "E"}, tr("Ground type (Table 3.1)."));

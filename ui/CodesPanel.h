@@ -3,6 +3,7 @@
 // Codes: which building codes to check and each code's own inputs (zone, soil or site class,
 // force-reduction factor, importance). A code is checked when its box is ticked.
 
+#include "core/codes/CodeCatalog.h"
 #include "core/codes/CodeSet.h"
 #include "ui/InputPanel.h"
 
@@ -24,7 +25,7 @@ public:
     void setCodes(const CodeSelection& c);
 
 private:
-    QGroupBox* group(const QString& title, const QString& toolTip);
+    QGroupBox* group(CodeKey code, const QString& toolTip);
     NumberField* field(QFormLayout* form, const char* name, const QString& label,
                        const QString& unit, const QString& toolTip);
     QComboBox* combo(QFormLayout* form, const QString& label, const QStringList& items,

@@ -2,8 +2,8 @@
 #include "ui/FloorsView.h"
 
 #include "core/io/FloorsJson.h"
-#include "core/io/RecordReader.h"
-#include "core/io/RecordText.h"
+#include "core/records/RecordReader.h"
+#include "core/records/RecordText.h"
 #include "ui/FloorCharts.h"
 #include "ui/RecordPreview.h"
 

@@ -10,7 +10,9 @@
 #include "ui/StudyTab.h"
 
 #include "core/codes/CodeSet.h"
+#include "core/io/JsonText.h"
 #include "core/io/ResultJson.h"
+#include "core/io/SurfaceJson.h"
 #include "ui/BuildingPanel.h"
 #include "ui/ChartExport.h"
 #include "ui/CodesPanel.h"
@@ -470,29 +472,11 @@ void MainWindow::exportSurface() {
     std::string text;
     try { // the writers refuse a non-finite number where one is promised
         if (path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive)) {
-            using nlohmann::json;
-            json j = sweepJson(sweep, sweepCase.tauRef());
-            j["kinstab_version"] = KINSTAB_VERSION;
-            j["model"] = "slab1d";
-            j["solver"] = solverName(sweepCase.solver);
-            j["envelope"] = {{"name", sweepCase.envelope.name()},
-                             {"alpha", sweepCase.envelope.alpha},
-                             {"beta", sweepCase.envelope.beta},
-                             {"scale", tauScaleName(sweepCase.scale)}};
-            j["mu"] = sweepCase.slab.mu;
-            j["tstar"] = sweepCase.tstar;
-            j["limit"] = sweepCase.slab.limit;
-            if (sweepPlanar) {
-                const PlanarCase& c = *sweepPlanar;
-                j.update({{"model", "planar"},
-                          {"solver", "dop853"},
-                          {"fy", c.fyHz},
-                          {"ay_ratio", c.ayRatio},
-                          {"theta", c.slab.theta},
-                          {"normalization", normalizationName(c.normalization)},
-                          {"vertical_peak_g", c.vertical ? json(c.vertical->peak()) : json()}});
-            }
-            text = j.dump(1) + "\n";
+            // The same object as kinstab-cli surface writes (core/io/SurfaceJson.h).
+            text = jsonText(sweepPlanar ? surfaceJson(sweep, *sweepPlanar)
+                                        : surfaceJson(sweep, sweepCase),
+                            1) +
+                   "\n";
         } else {
             text = sweepCsv(sweep, sweepCase.tauRef());
         }

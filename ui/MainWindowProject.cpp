@@ -2,8 +2,8 @@
 // MainWindow, continued: the project (New/Open/Save/Save As, recent files), the code ratios
 // that follow the building, and what QSettings keeps between sessions.
 
+#include "core/base/InputLimits.h"
 #include "core/codes/CodeSet.h"
-#include "core/io/InputLimits.h"
 #include "ui/AtomicSave.h"
 #include "ui/BuildingPanel.h"
 #include "ui/CodesPanel.h"

@@ -60,7 +60,7 @@ void MainWindow::runRecord() {
     m_recordRunner->start(in);
     m_progress->start(0, tr("slab runs"));
     // The GUI runs records with the 1-DOF model; the planar slab under records is kinstab-cli's.
-    const bool planar = m_modelPanel && m_modelPanel->model() == "planar";
+    const bool planar = m_modelPanel && m_modelPanel->isPlanar();
     m_status->setText(tr("Running the record and searching its critical scale… (a record has "
                          "no (A, f) surface%1)")
                           .arg(planar ? tr("; records run the 1-DOF model here — planar: "

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/ModelPanel.h"
 
+#include "core/excitation/FrequencyRange.h"
 #include "report/PlanarVertical.h"
 #include "ui/NumberField.h"
 #include "ui/RecordPreview.h"
@@ -45,14 +46,14 @@ ModelPanel::ModelPanel(QWidget* parent)
     connect(m_normalization, &QComboBox::currentIndexChanged, this, &InputPanel::changed);
     connect(m_path, &QLineEdit::editingFinished, this, &ModelPanel::checkVerticalFile);
     connect(m_browse, &QPushButton::clicked, this, &ModelPanel::browse);
-    load("slab1d", PlanarSettings{});
+    load(modelKindName(ModelKind::Slab1D), PlanarSettings{});
 }
 
 void ModelPanel::buildPlanarRows() {
     m_fy = addField("fy", tr("f_&y:"), tr("Hz"),
                     tr("Frequency of the motion along the walls. The paper's Figs. 37–42 use "
                        "0.2, 0.5, 1, 2, 5 and 10 Hz; the critical amplitude rises with f_y."));
-    m_fy->setCheck(rangeCheck(0, 1000, false));
+    m_fy->setCheck(rangeCheck(0, kMaxFrequencyHz, false));
     m_ratio = addField("ayRatio", tr("A_y / A_x:"), QString(),
                        tr("Amplitude along the walls over the amplitude across them. The paper "
                           "takes 0.9, Pacoima Dam's ratio of horizontal peaks."));
@@ -152,7 +153,7 @@ bool ModelPanel::isPlanar() const {
 }
 
 std::string ModelPanel::model() const {
-    return isPlanar() ? "planar" : "slab1d";
+    return modelKindName(isPlanar() ? ModelKind::Planar : ModelKind::Slab1D);
 }
 
 PlanarSettings ModelPanel::settings() const {
@@ -171,7 +172,7 @@ void ModelPanel::load(const std::string& model, const PlanarSettings& s) {
     m_loaded = s;
     {
         const QSignalBlocker block(this); // one changed() at the end
-        m_model->setCurrentIndex(model == "planar" ? 1 : 0);
+        m_model->setCurrentIndex(modelKindFromName(model) == ModelKind::Planar ? 1 : 0);
         m_fy->setValue(s.fyHz);
         m_ratio->setValue(s.ayRatio);
         m_theta->setValue(s.theta);

@@ -5,6 +5,7 @@
 // A_y/A_x, Θ, normalization, vertical motion) are shown, checked and gate Run only when planar is
 // chosen.
 
+#include "core/base/ModelKind.h"
 #include "core/slab/PlanarSettings.h"
 #include "ui/InputPanel.h"
 
@@ -25,7 +26,7 @@ public:
     explicit ModelPanel(QWidget* parent = nullptr);
 
     bool isPlanar() const;
-    std::string model() const; // "slab1d" | "planar"
+    std::string model() const; // modelKindName (core/base/ModelKind.h)
     // The planar settings shown (valid fields only; the others keep their last loaded value).
     PlanarSettings settings() const;
     void load(const std::string& model, const PlanarSettings& s);

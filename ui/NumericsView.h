@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The Numerics view (docs/theory.md §6.6): the work-precision study of
-// core/numerics/WorkPrecision.h as a log-log plot of error against run time, one curve per case and
-// solver, and its table. The study runs off the GUI thread; Cancel takes effect after the row in
-// progress.
+// core/precision/WorkPrecision.h as a log-log plot of error against run time, one curve per case
+// and solver, and its table. The study runs off the GUI thread; Cancel takes effect after the row
+// in progress.
 
-#include "core/numerics/WorkPrecision.h"
+#include "core/precision/WorkPrecision.h"
 #include "ui/BackgroundJob.h"
 
 #include <QWidget>

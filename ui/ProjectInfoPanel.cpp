@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/ProjectInfoPanel.h"
 
-#include "core/io/InputLimits.h"
+#include "core/base/InputLimits.h"
 
 #include <QDate>
 #include <QDialog>

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/RecordInput.h"
 
+#include "core/base/InputLimits.h"
+
 #include "ui/NumberField.h"
 #include "ui/RecordPreview.h"
 #include "ui/StaleFrame.h"
@@ -26,7 +28,7 @@ RecordInput::RecordInput(QWidget* parent)
     m_message->setWordWrap(true);
     m_peak->setObjectName("recordPeak");
     m_peak->setOptional(tr("as recorded"));
-    m_peak->setCheck(rangeCheck(0, 1000, false));
+    m_peak->setCheck(rangeCheck(0, limits::kMaxAmplitudeG, false));
     m_peak->setFieldToolTip(tr("Peak acceleration the motion under the slab is scaled to (after "
                                "the floor filter). Empty: the record as it is."));
     auto* fileRow = new QHBoxLayout;

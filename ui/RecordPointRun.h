@@ -3,7 +3,7 @@
 // The record run as a PointRun for HistoryChart: delta(tau), the scaled motion under the slab,
 // the +-mu slip thresholds and the fitted envelope (Fig. 27) scaled like the motion.
 
-#include "core/sweep/RecordAnalysis.h"
+#include "core/check/RecordAnalysis.h"
 #include "ui/PointRun.h"
 
 namespace kinstab::ui {

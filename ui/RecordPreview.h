@@ -7,7 +7,7 @@
 
 #include "core/excitation/EnvelopeFit.h"
 #include "core/excitation/FloorFilter.h"
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 #include "report/DecimatedSeries.h"
 
 #include <QWidget>

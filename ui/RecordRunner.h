@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Runs a record analysis off the GUI thread (core/sweep/RecordAnalysis.h: the single run, the
+// Runs a record analysis off the GUI thread (core/check/RecordAnalysis.h: the single run, the
 // critical scale and the verdicts) on a BackgroundJob, like SweepRunner: progress polled a few
 // times a second, cancel within one slab run.
 
-#include "core/sweep/RecordAnalysis.h"
+#include "core/check/RecordAnalysis.h"
 #include "ui/BackgroundJob.h"
 #include "ui/PointRun.h"
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/ResultState.h"
 
-#include "core/codes/RecordCheck.h"
+#include "core/check/RecordCheck.h"
 
 #include <cmath>
 

@@ -12,7 +12,7 @@
 // kept A_crit serves (same building frequency, or the record's critical peak, which serves every
 // code); anything else that no longer matches the inputs is stale until the next run.
 
-#include "core/codes/DesignCheck.h"
+#include "core/check/DesignCheck.h"
 #include "core/io/Project.h"
 #include "core/slab/PlanarCase.h"
 #include "core/slab/Slab1DCase.h"

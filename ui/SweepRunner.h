@@ -5,7 +5,7 @@
 // are polled a few times a second with its progress (never per point), and a cancel keeps
 // everything already computed.
 
-#include "core/codes/DesignCheck.h"
+#include "core/check/DesignCheck.h"
 #include "core/slab/PlanarCase.h"
 #include "core/slab/Slab1DCase.h"
 #include "core/sweep/Sweep.h"

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/VerdictPanel.h"
 
+#include "core/codes/CodeCatalog.h"
+
 #include <QHeaderView>
 #include <QLabel>
 #include <QTableWidget>
@@ -10,12 +12,11 @@ namespace kinstab::ui {
 
 namespace {
 enum Column { ColCode, ColRatio, ColACrit, ColMargin, ColVerdict, Columns };
-// "UBC 1976 §2312" -> "UBC 1976": the dock is narrow; the full title is the tooltip.
-QString shortTitle(const QString& t) {
-    QString s = t;
-    for (const QString& cut : {QStringLiteral(" §"), QStringLiteral(" ("), QStringLiteral(":")})
-        if (const qsizetype i = s.indexOf(cut); i > 0) s.truncate(i);
-    return s;
+// The catalogue's short name ("UBC 1976"): the dock is narrow; the full title is the tooltip.
+QString shortName(const std::string& code, const QString& title) {
+    const CodeInfo* info = findCode(code);
+    return info ? QString::fromUtf8(info->shortName.data(), qsizetype(info->shortName.size()))
+                : title;
 }
 } // namespace
 
@@ -47,15 +48,20 @@ int VerdictPanel::rowCount() const {
     return m_table->rowCount();
 }
 
+QString VerdictPanel::codeText(int row) const {
+    const QTableWidgetItem* item = m_table->item(row, ColCode);
+    return item ? item->text() : QString();
+}
+
 QString VerdictPanel::verdictText(int row) const {
     const QTableWidgetItem* item = m_table->item(row, ColVerdict);
     return item ? item->text() : QString();
 }
 
-void VerdictPanel::setRow(int row, const QString& title, double period, double ratio,
-                          const QString& aCrit, const QString& margin, const QString& verdict,
-                          const QColor& colour) {
-    const QString cells[] = {shortTitle(title), QString::number(ratio, 'f', 3), aCrit, margin,
+void VerdictPanel::setRow(int row, const std::string& code, const QString& title, double period,
+                          double ratio, const QString& aCrit, const QString& margin,
+                          const QString& verdict, const QColor& colour) {
+    const QString cells[] = {shortName(code, title), QString::number(ratio, 'f', 3), aCrit, margin,
                              verdict};
     for (int c = 0; c < Columns; ++c) {
         auto* item = new QTableWidgetItem(cells[c]);
@@ -72,8 +78,8 @@ void VerdictPanel::setCodeResults(const std::vector<CodeResult>& results) {
     QStringList notes;
     for (int i = 0; i < static_cast<int>(results.size()); ++i) {
         const CodeResult& r = results[static_cast<std::size_t>(i)];
-        setRow(i, QString::fromStdString(r.title), r.periodSeconds, r.topRatio, tr("…"), tr("…"),
-               tr("press Run"), palette().color(QPalette::PlaceholderText));
+        setRow(i, r.code, QString::fromStdString(r.title), r.periodSeconds, r.topRatio, tr("…"),
+               tr("…"), tr("press Run"), palette().color(QPalette::PlaceholderText));
         if (r.topRatioWithoutFt)
             notes << tr("%1: %2 with F_t, %3 without (the paper's).")
                          .arg(QString::fromStdString(r.title))
@@ -93,7 +99,7 @@ void VerdictPanel::setCheck(const DesignCheckResult& check) {
     for (int i = 0; i < static_cast<int>(check.codes.size()); ++i) {
         const CodeVerdict& v = check.codes[static_cast<std::size_t>(i)];
         const bool kinetic = v.verdict == Verdict::KineticInstabilityGoverns;
-        setRow(i, QString::fromStdString(v.title), v.periodSeconds, v.ratio,
+        setRow(i, v.code, QString::fromStdString(v.title), v.periodSeconds, v.ratio,
                v.aCrit ? QString::number(*v.aCrit, 'f', 3) : tr("none ≤ limit"),
                v.margin ? QString::number(*v.margin, 'f', 2) : tr("—"),
                QString::fromStdString(kinstab::verdictText(v.verdict)),

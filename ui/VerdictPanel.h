@@ -3,8 +3,8 @@
 // The verdict: per code, the top-floor ratio F_top / w_top, the critical amplitude A_crit at
 // the building's frequency, the margin A_crit / ratio and what governs, in words.
 
+#include "core/check/DesignCheck.h"
 #include "core/codes/CodeResult.h"
-#include "core/codes/DesignCheck.h"
 
 #include <QWidget>
 
@@ -23,11 +23,13 @@ public:
     void setError(const QString& message);
     void setCheck(const DesignCheckResult& check);
     QString verdictText(int row) const; // for tests
+    QString codeText(int row) const;    // for tests
     int rowCount() const;
 
 private:
-    void setRow(int row, const QString& title, double period, double ratio, const QString& aCrit,
-                const QString& margin, const QString& verdict, const QColor& colour);
+    void setRow(int row, const std::string& code, const QString& title, double period, double ratio,
+                const QString& aCrit, const QString& margin, const QString& verdict,
+                const QColor& colour);
 
     QTableWidget* m_table;
     QLabel* m_note;

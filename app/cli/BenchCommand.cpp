@@ -4,9 +4,9 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/PlanarFlags.h"
+#include "core/io/JsonText.h"
 #include "core/sweep/SurfaceBenchmark.h"
 
 #include <cstdio>

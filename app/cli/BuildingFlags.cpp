@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/cli/BuildingFlags.h"
 
+#include "core/codes/CodeCatalog.h"
 #include "core/io/Project.h"
 
 #include <map>
@@ -10,18 +11,24 @@ namespace kinstab::cli {
 namespace {
 
 struct CodeFlags {
-    const char* code;
+    CodeKey code;
     std::vector<const char*> selectors; // any of these selects the code
     std::vector<const char*> others;    // need a selector
 };
 
 const std::vector<CodeFlags>& codeFlags() {
     static const std::vector<CodeFlags> t = {
-        {"UBC 1976", {"zone"}, {"importance", "k-factor", "site-period"}},
-        {"ATC 3-06", {"av", "map-area"}, {"aa", "soil", "r"}},
-        {"UBC 1997", {"ubc97-zone"}, {"ubc97-soil", "na", "nv", "ubc97-importance", "ubc97-r"}},
-        {"ASCE 7-22", {"sds"}, {"sd1", "s1", "tl", "site-class", "risk-category", "ie", "asce-r"}},
-        {"EC8", {"ag"}, {"ground", "spectrum-type", "importance-class", "gamma-i", "q", "beta"}},
+        {CodeKey::Ubc1976, {"zone"}, {"importance", "k-factor", "site-period"}},
+        {CodeKey::Atc306, {"av", "map-area"}, {"aa", "soil", "r"}},
+        {CodeKey::Ubc1997,
+         {"ubc97-zone"},
+         {"ubc97-soil", "na", "nv", "ubc97-importance", "ubc97-r"}},
+        {CodeKey::Asce7_22,
+         {"sds"},
+         {"sd1", "s1", "tl", "site-class", "risk-category", "ie", "asce-r"}},
+        {CodeKey::Ec8,
+         {"ag"},
+         {"ground", "spectrum-type", "importance-class", "gamma-i", "q", "beta"}},
     };
     return t;
 }
@@ -163,8 +170,9 @@ CodeSelection codesFromFlags(const Args& args) {
         if (!selected(args, c))
             for (const char* f : c.others)
                 if (args.has(f))
-                    throw UsageError(std::string("--") + f + " applies to " + c.code +
-                                     ", which needs --" + c.selectors[0]);
+                    throw UsageError(std::string("--") + f + " applies to " +
+                                     std::string(codeInfo(c.code).shortName) + ", which needs --" +
+                                     c.selectors[0]);
     if (args.has("irregular") && !args.has("ag"))
         throw UsageError("--irregular applies to EC8, which needs --ag");
     CodeSelection s;

@@ -2,12 +2,12 @@
 #include "app/cli/Args.h"
 #include "app/cli/BuildingFlags.h"
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/PlanarFlags.h"
 #include "app/cli/RecordFlags.h"
 #include "core/analysis/RunAnalysis.h"
 #include "core/io/CodesJson.h"
+#include "core/io/JsonText.h"
 #include "core/io/Project.h"
 #include "report/PlanarVertical.h"
 
@@ -76,9 +76,9 @@ int runCheck(const ArgList& argv) {
     const Project p = projectFromFlag(args);
     if (p.codes.empty())
         throw UsageError("--project " + args.text("project") + ": the project selects no code");
-    if (p.model != "slab1d" && p.record)
+    if (modelKindFromName(p.model) != ModelKind::Slab1D && p.record)
         throw UsageError("--project " + args.text("project") + ": model '" + p.model +
-                         "': the check against a record uses the slab1d model");
+                         "': the check against a record uses the " + modelKindName(ModelKind::Slab1D) + " model");
     const auto start = std::chrono::steady_clock::now();
     nlohmann::json j;
     std::optional<PlanarCase> planar;
@@ -90,15 +90,6 @@ int runCheck(const ArgList& argv) {
         throw inputUsageError(e);
     }
     j["project"] = p.name;
-    if (planar) {
-        j.update(planarCaseJson(*planar)); // model, solver, envelope, mu, t*, the planar inputs
-    } else {
-        j["model"] = "slab1d";
-        j["solver"] = solverName(p.slab.solver);
-        if (!p.record) j["envelope"] = envelopeJson(p.slab);
-        j["mu"] = p.slab.slab.mu;
-        j["tstar"] = p.slab.tstar;
-    }
     j["search"] = {{"max_amplitude", p.critical.to},
                    {"scan_step", p.critical.scanStep},
                    {"tolerance", p.critical.tolerance}};

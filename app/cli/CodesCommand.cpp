@@ -2,8 +2,8 @@
 #include "app/cli/Args.h"
 #include "app/cli/BuildingFlags.h"
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
 #include "core/io/CodesJson.h"
+#include "core/io/JsonText.h"
 
 #include <iostream>
 

@@ -2,11 +2,11 @@
 #include "app/cli/AnalysisRuns.h"
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/PlanarFlags.h"
 #include "app/cli/SearchFlags.h"
 #include "core/excitation/FrequencyRange.h"
+#include "core/io/JsonText.h"
 #include "core/io/ResultJson.h"
 
 #include <iostream>
@@ -44,7 +44,7 @@ int runCritical(const ArgList& argv) {
     const nlohmann::json crit = criticalCurveJson(request);
     nlohmann::json j = {{"frequencies", freqs},
                         {"a_crit", crit},
-                        {"model", "slab1d"},
+                        {"model", modelKindName(ModelKind::Slab1D)},
                         {"solver", solverName(c.solver)},
                         {"envelope", envelopeJson(c)},
                         {"mu", c.slab.mu},

@@ -7,10 +7,10 @@
 #include "app/cli/Args.h"
 #include "app/cli/BuildingFlags.h"
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
 #include "app/cli/RecordFlags.h"
 #include "core/building/FloorAnalysis.h"
 #include "core/io/FloorsJson.h"
+#include "core/io/JsonText.h"
 #include "core/io/Project.h"
 
 #include <chrono>

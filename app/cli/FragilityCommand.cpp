@@ -4,7 +4,7 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "core/io/TextInput.h"
+#include "core/base/TextInput.h"
 #include "core/study/FragilityText.h"
 #include "core/study/StudyResults.h"
 

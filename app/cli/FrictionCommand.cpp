@@ -5,10 +5,10 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
 #include "core/friction/FrictionCalibration.h"
 #include "core/friction/TripletCsv.h"
 #include "core/io/FrictionJson.h"
+#include "core/io/JsonText.h"
 
 #include <stdexcept>
 

@@ -3,7 +3,7 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "core/io/TextInput.h"
+#include "core/base/TextInput.h"
 #include "core/study/StudyResults.h"
 
 #include <sstream>

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/cli/ModelFlags.h"
 
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
+
 namespace kinstab::cli {
 
 std::set<std::string> modelFlagNames() {
@@ -9,10 +12,16 @@ std::set<std::string> modelFlagNames() {
             "theta", "vertical", "record", "floor-period", "damping",     "normalization"};
 }
 
+ModelKind modelFromFlags(const Args& args) {
+    std::set<std::string> names;
+    for (ModelKind m : kModelKinds)
+        names.insert(modelKindName(m));
+    return *modelKindFromName(args.choice("model", names, modelKindName(ModelKind::Slab1D)));
+}
+
 namespace {
 void requireOnly1D(const Args& args, bool allowRecord) {
-    const std::string model = args.choice("model", {"slab1d", "planar"}, "slab1d");
-    if (model != "slab1d")
+    if (modelFromFlags(args) != ModelKind::Slab1D)
         throw UsageError(
             "--model planar: not available for this command (use simulate or surface)");
     for (const char* f : {"ay-ratio", "fy", "theta", "vertical", "normalization"})
@@ -48,9 +57,9 @@ Slab1DCase commonCaseFromFlags(const Args& args) {
         throw UsageError("--tstar and --wall-width-in exclude each other");
     if (args.has("wall-width-in")) {
         const double d = args.requiredNumber("wall-width-in");
-        if (d <= 0.0 || d > 1000.0)
+        if (d <= 0.0 || d > limits::kMaxWallWidthIn)
             throw UsageError("--wall-width-in " + args.text("wall-width-in") +
-                             ": must be > 0 and at most 1000");
+                             ": must be > 0 and at most " + formatDouble(limits::kMaxWallWidthIn));
         c.tstar = tstarFromWallWidthInches(d);
     } else {
         c.tstar = args.number("tstar", 0.099);
@@ -77,23 +86,6 @@ Slab1DCase commonCaseFromFlags(const Args& args) {
         throw UsageError("--paper-steps " + args.text("paper-steps") +
                          ": must be between 4 and 1e6");
     return c;
-}
-
-nlohmann::json envelopeJson(const Slab1DCase& c) {
-    const CharacteristicTimes computed = c.envelope.computedTimes(c.tstar);
-    const CharacteristicTimes used = c.envelope.scalingTimes(c.tstar);
-    nlohmann::json j = {{"name", c.envelope.name()},
-                        {"alpha", c.envelope.alpha},
-                        {"beta", c.envelope.beta},
-                        {"tau_rise", used.tauRise},
-                        {"tau_max", used.tauMax},
-                        {"tau_dur", used.tauDur},
-                        {"computed",
-                         {{"tau_rise", computed.tauRise},
-                          {"tau_max", computed.tauMax},
-                          {"tau_dur", computed.tauDur}}},
-                        {"scale", tauScaleName(c.scale)}};
-    return j;
 }
 
 } // namespace kinstab::cli

@@ -5,9 +5,10 @@
 
 #include "app/cli/AnalysisRuns.h"
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
 #include "app/cli/PlanarFlags.h"
+#include "core/io/JsonText.h"
 #include "core/io/ResultJson.h"
+#include "core/io/SurfaceJson.h"
 
 #include <chrono>
 #include <iostream>
@@ -85,23 +86,7 @@ int runSurfacePlanar(const Args& args, const SweepGrid& grid, int threads,
         writeOutput(args, "o", sweepCsv(r, c.tauRef()));
         return 0;
     }
-    nlohmann::json j = sweepJson(r, c.tauRef());
-    j.update(planarCaseJson(c));
-    // Which side each collapse leaves by (null where the slab did not collapse).
-    nlohmann::json sides = nlohmann::json::array();
-    for (std::size_t i = 0; i < grid.amplitudes.size(); ++i) {
-        nlohmann::json row = nlohmann::json::array();
-        for (std::size_t k = 0; k < grid.frequencies.size(); ++k) {
-            const std::size_t idx = i * grid.frequencies.size() + k;
-            const PointResult& p = r.points[idx];
-            row.push_back(r.done[idx] && p.outcome == Outcome::Collapsed
-                              ? nlohmann::json(exitSideName(p.exitSide))
-                              : nlohmann::json());
-        }
-        sides.push_back(row);
-    }
-    j["exit_side"] = sides;
-    writeOutput(args, "o", jsonText(j) + "\n");
+    writeOutput(args, "o", jsonText(surfaceJson(r, c)) + "\n");
     return 0;
 }
 

@@ -5,13 +5,13 @@
 #include "core/codes/Building.h"
 #include "core/excitation/FrequencyRange.h"
 #include "core/excitation/RecordedMotion.h"
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 #include "core/slab/PlanarSettings.h"
 
 namespace kinstab::cli {
 
 bool isPlanar(const Args& args) {
-    return args.choice("model", {"slab1d", "planar"}, "slab1d") == "planar";
+    return modelFromFlags(args) == ModelKind::Planar;
 }
 
 namespace {
@@ -58,30 +58,6 @@ PlanarCase planarCaseFromFlags(const Args& args, bool recordDriven) {
     const std::string e = validatePlanarCase(c);
     if (!e.empty()) throw UsageError(e);
     return c;
-}
-
-nlohmann::json planarCaseJson(const PlanarCase& c) {
-    Slab1DCase common;
-    common.envelope = c.envelope;
-    common.tstar = c.tstar;
-    common.scale = c.scale;
-    nlohmann::json vertical; // null: gravity only
-    if (const auto* r = dynamic_cast<const RecordedMotion*>(c.vertical.get()))
-        vertical = {
-            {"samples", r->samples().size()}, {"dt_tau", r->sampleStep()}, {"peak_g", r->peak()}};
-    return {{"model", "planar"},
-            {"solver", "dop853"},
-            {"rel_tol", c.solver.relTol},
-            {"abs_tol", c.solver.absTol},
-            {"envelope", envelopeJson(common)},
-            {"mu", c.slab.mu},
-            {"tstar", c.tstar},
-            {"limit", c.slab.limit},
-            {"theta", c.slab.theta},
-            {"ay_ratio", c.ayRatio},
-            {"fy", c.fyHz},
-            {"normalization", normalizationName(c.normalization)},
-            {"vertical", vertical}};
 }
 
 } // namespace kinstab::cli

@@ -5,6 +5,7 @@
 // --vertical FILE (none: gravity only), --normalization product|envelope (product).
 
 #include "app/cli/Args.h"
+#include "core/io/CaseJson.h"
 #include "core/slab/PlanarCase.h"
 
 #include <nlohmann/json.hpp>
@@ -17,9 +18,6 @@ bool isPlanar(const Args& args); // --model planar
 // recordDriven: the horizontal motion comes from --record (PlanarRecord.cpp), so --fy is not
 // required and --record/--floor-period/--damping are the caller's.
 PlanarCase planarCaseFromFlags(const Args& args, bool recordDriven = false);
-// The planar keys of the JSON outputs (model, envelope, mu, tstar, limit, ay_ratio, fy, theta,
-// normalization, vertical, solver, tolerances).
-nlohmann::json planarCaseJson(const PlanarCase& c);
 
 } // namespace kinstab::cli
 

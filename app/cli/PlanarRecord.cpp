@@ -7,12 +7,12 @@
 // record keys of simulate --record.
 
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
 #include "app/cli/PlanarFlags.h"
 #include "app/cli/RecordFlags.h"
+#include "core/check/RecordAnalysis.h"
+#include "core/io/JsonText.h"
 #include "core/io/ResultJson.h"
 #include "core/slab/PlanarRecordCase.h"
-#include "core/sweep/RecordAnalysis.h"
 
 #include <chrono>
 #include <iostream>

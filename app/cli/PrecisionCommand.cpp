@@ -4,8 +4,8 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "core/numerics/PlanarPrecision.h"
-#include "core/numerics/WorkPrecision.h"
+#include "core/precision/PlanarPrecision.h"
+#include "core/precision/WorkPrecision.h"
 #include "report/PlanarVertical.h"
 
 #include <iostream>

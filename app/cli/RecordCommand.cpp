@@ -5,10 +5,10 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
 #include "app/cli/RecordFlags.h"
 #include "core/excitation/EnvelopeFit.h"
 #include "core/excitation/FourierSpectrum.h"
+#include "core/io/JsonText.h"
 #include "core/io/ResultJson.h"
 
 #include <iostream>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/cli/RecordFlags.h"
 
-#include "core/io/InputLimits.h"
-#include "core/io/TextInput.h"
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
 
 namespace kinstab::cli {
 
@@ -71,9 +71,10 @@ RecordExcitation recordExcitationFromFlags(const Args& args, const std::string& 
                          ": --amplitude and --scale-factor exclude each other");
     if (args.has("amplitude")) {
         e.targetPeak = args.requiredNumber("amplitude");
-        if (!(*e.targetPeak > 0.0) || *e.targetPeak > 1000.0)
+        if (!(*e.targetPeak > 0.0) || *e.targetPeak > limits::kMaxAmplitudeG)
             throw UsageError("--amplitude " + args.text("amplitude") +
-                             ": target peak must be > 0 and at most 1000 g");
+                             ": target peak must be > 0 and at most " +
+                             formatDouble(limits::kMaxAmplitudeG) + " g");
     }
     e.scaleFactor = args.number("scale-factor", 1.0);
     if (!(e.scaleFactor > 0.0) || e.scaleFactor > 1e6)

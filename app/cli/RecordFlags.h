@@ -10,7 +10,7 @@
 #include "app/cli/Args.h"
 #include "core/excitation/FloorFilter.h"
 #include "core/excitation/RecordExcitation.h"
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 
 #include <nlohmann/json.hpp>
 #include <optional>

@@ -6,7 +6,7 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
+#include "core/io/JsonText.h"
 #include "core/io/Project.h"
 #include "report/ReportWriter.h"
 

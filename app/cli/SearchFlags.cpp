@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/cli/SearchFlags.h"
 
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
+
 #include <charconv>
 #include <string>
 
@@ -24,9 +27,9 @@ CriticalSearch criticalSearchFromFlags(const Args& args) {
     search.to = args.number("max-amplitude", 5.0);
     search.scanStep = args.number("scan-step", 0.01);
     search.tolerance = args.number("tolerance", 1e-6);
-    if (search.to <= 0.0 || search.to > 1000.0)
+    if (search.to <= 0.0 || search.to > limits::kMaxAmplitudeG)
         throw UsageError("--max-amplitude " + args.text("max-amplitude") +
-                         ": must be > 0 and at most 1000");
+                         ": must be > 0 and at most " + formatDouble(limits::kMaxAmplitudeG));
     if (search.scanStep <= 0.0 || search.scanStep > search.to)
         throw UsageError("--scan-step " + args.text("scan-step") +
                          ": must be > 0 and below --max-amplitude");

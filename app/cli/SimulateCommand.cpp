@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/PlanarFlags.h"
 #include "app/cli/RecordFlags.h"
 #include "app/cli/SearchFlags.h"
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
 #include "core/excitation/EnvelopedSine.h"
 #include "core/excitation/FrequencyRange.h"
+#include "core/io/JsonText.h"
 #include "core/io/ResultJson.h"
 #include "core/slab/FiniteResult.h"
 #include "core/slab/History.h"
@@ -33,9 +35,9 @@ int runSimulate(const ArgList& argv) {
     if (args.has("critical")) throw UsageError("--critical: needs --record FILE");
     const double amplitude = args.requiredNumber("amplitude");
     const double frequency = args.requiredNumber("frequency");
-    if (amplitude < 0.0 || amplitude > 1000.0)
-        throw UsageError("--amplitude " + args.text("amplitude") +
-                         ": must be between 0 and 1000 g");
+    if (amplitude < 0.0 || amplitude > limits::kMaxAmplitudeG)
+        throw UsageError("--amplitude " + args.text("amplitude") + ": must be between 0 and " +
+                         formatDouble(limits::kMaxAmplitudeG) + " g");
     if (const std::string e = frequencyRangeError(frequency); !e.empty())
         throw UsageError("--frequency " + args.text("frequency") + ": " + e);
     const bool wantHistory = args.has("history");
@@ -55,7 +57,7 @@ int runSimulate(const ArgList& argv) {
     requireSound(r, caseName(c, amplitude, frequency));
 
     nlohmann::json j = slabResultJson(r, c.tauRef());
-    j["model"] = "slab1d";
+    j["model"] = modelKindName(ModelKind::Slab1D);
     j["solver"] = solverName(c.solver);
     j["amplitude"] = amplitude;
     j["frequency"] = frequency;

@@ -9,14 +9,14 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/RecordFlags.h"
 #include "app/cli/SearchFlags.h"
+#include "core/check/RecordAnalysis.h"
 #include "core/excitation/RecordedMotion.h"
+#include "core/io/JsonText.h"
 #include "core/io/ResultJson.h"
 #include "core/slab/History.h"
-#include "core/sweep/RecordAnalysis.h"
 
 #include <iostream>
 
@@ -87,7 +87,7 @@ int runSimulateRecord(const Args& args) {
     const Slab1DCase& c = in.slab;
     nlohmann::json j = slabResultJson(a.run, a.tauRef.value_or(std::nan("")));
     if (!a.tauRef) j["gamma_c"] = nullptr;
-    j["model"] = "slab1d";
+    j["model"] = modelKindName(ModelKind::Slab1D);
     j["solver"] = "exact";
     j["record"] = accelerogramJson(a.ground);
     j["floor_filter"] = in.record.floor ? floorFilterJson(*in.record.floor) : nlohmann::json();

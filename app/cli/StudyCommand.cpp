@@ -6,7 +6,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/StreamedOutput.h"
 #include "core/io/AtomicFile.h"
-#include "core/io/TextInput.h"
+#include "core/base/TextInput.h"
 #include "core/study/CpuAffinity.h"
 #include "core/study/StudyRunner.h"
 

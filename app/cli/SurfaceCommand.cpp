@@ -2,11 +2,12 @@
 #include "app/cli/AnalysisRuns.h"
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/JsonText.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/PlanarFlags.h"
+#include "core/io/JsonText.h"
 #include "core/io/ResultJson.h"
 #include "core/io/ResultTable.h"
+#include "core/io/SurfaceJson.h"
 
 namespace kinstab::cli {
 
@@ -37,14 +38,7 @@ int runSurface(const ArgList& argv) {
         writeOutput(args, "o", sweepCsv(r, c.tauRef()));
         return 0;
     }
-    nlohmann::json j = sweepJson(r, c.tauRef());
-    j["model"] = "slab1d";
-    j["solver"] = solverName(c.solver);
-    j["envelope"] = envelopeJson(c);
-    j["mu"] = c.slab.mu;
-    j["tstar"] = c.tstar;
-    j["limit"] = c.slab.limit;
-    writeOutput(args, "o", jsonText(j) + "\n");
+    writeOutput(args, "o", jsonText(surfaceJson(r, c)) + "\n");
     return 0;
 }
 

@@ -8,8 +8,9 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/HelpText.h"
+#include "core/base/InternalError.h"
 #include "core/io/AtomicFile.h"
-#include "core/numerics/InternalError.h"
+#include "core/base/InternalError.h"
 
 #include <exception>
 #include <functional>

@@ -4,8 +4,8 @@
 // part not asked for or not reached before a cancel.
 
 #include "core/analysis/CriticalCurve.h"
-#include "core/codes/DesignCheck.h"
-#include "core/sweep/RecordAnalysis.h"
+#include "core/check/DesignCheck.h"
+#include "core/check/RecordAnalysis.h"
 #include "core/sweep/Sweep.h"
 
 #include <exception>

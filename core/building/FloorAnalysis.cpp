@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/building/FloorAnalysis.h"
 
+#include "core/check/DesignCheck.h"
 #include "core/codes/Asce7FloorDemand.h"
 #include "core/codes/Ec8FloorDemand.h"
 #include "core/excitation/FloorFilter.h"

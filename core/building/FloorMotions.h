@@ -9,7 +9,7 @@
 // exact recurrence for a record linear between samples (Nigam & Jennings 1969).
 
 #include "core/building/ModalModel.h"
-#include "core/io/Accelerogram.h"
+#include "core/records/Accelerogram.h"
 
 #include <optional>
 #include <vector>

@@ -6,7 +6,7 @@
 // record search of core/sweep/CriticalRecordScale.h driven by that motion) gives the critical
 // PGA as factor x |PGA|.
 
-#include "core/io/Accelerogram.h"
+#include "core/records/Accelerogram.h"
 #include "core/slab/Slab1DCase.h"
 #include "core/sweep/CriticalAmplitude.h"
 #include "core/sweep/SweepControl.h"

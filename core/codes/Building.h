@@ -5,18 +5,13 @@
 // parallel to the force, period entered or left to each code's own formula, units, system,
 // occupancy.
 
+#include "core/base/InputError.h"
+
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace kinstab {
-
-// Bad input to a code module or the building: the message names the field, the value and the
-// allowed range. Nothing is computed from bad input.
-struct InputError : std::invalid_argument {
-    using std::invalid_argument::invalid_argument;
-};
 
 enum class LengthUnit { Feet, Metres };
 

@@ -6,7 +6,7 @@
 // slab can slide off (the paper's "kinetic instability governs").
 
 #include "core/codes/CodeResult.h"
-#include "core/codes/DesignCheck.h"
+#include "core/codes/Verdict.h"
 
 #include <optional>
 #include <string>

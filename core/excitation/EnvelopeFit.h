@@ -4,7 +4,7 @@
 // fitted by least squares to the local peaks of |a(t)| (one per half cycle), which motivates
 // the enveloped sine of docs/theory.md §3. alpha and beta in 1/s, t from the record's start.
 
-#include "core/io/Accelerogram.h"
+#include "core/records/Accelerogram.h"
 
 #include <cmath>
 #include <vector>

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/excitation/EnvelopedSine.h"
 
+#include "core/base/InputLimits.h"
+#include "core/base/InternalError.h"
+#include "core/base/TextInput.h"
 #include "core/excitation/FrequencyRange.h"
-#include "core/numerics/InternalError.h"
 #include "core/numerics/RootFinding.h"
 
 #include <array>
@@ -252,8 +254,9 @@ double EnvelopedSine::computeSMax() const {
 
 std::string validateEnvelopedSine(double amplitude, double frequencyHz, double tstar) {
     std::ostringstream s;
-    if (!std::isfinite(amplitude) || amplitude < 0.0 || amplitude > 1000.0)
-        s << "amplitude = " << amplitude << " g: must be between 0 and 1000";
+    if (!std::isfinite(amplitude) || amplitude < 0.0 || amplitude > limits::kMaxAmplitudeG)
+        s << "amplitude = " << amplitude << " g: must be between 0 and "
+          << formatDouble(limits::kMaxAmplitudeG);
     else if (!std::isfinite(frequencyHz) || frequencyHz < kMinFrequencyHz ||
              frequencyHz > kMaxFrequencyHz)
         s << "frequency = " << frequencyHz << " Hz: must be between " << kMinFrequencyHz << " and "

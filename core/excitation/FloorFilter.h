@@ -7,7 +7,7 @@
 // (Nigam & Jennings 1969, "Calculation of response spectra from strong-motion earthquake
 // records", BSSA 59(2)): a 2x2 recurrence whose coefficients depend only on T, zeta and dt.
 
-#include "core/io/Accelerogram.h"
+#include "core/records/Accelerogram.h"
 
 #include <optional>
 #include <string>

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/excitation/RecordExcitation.h"
 
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
+
 #include <cmath>
 #include <sstream>
 
@@ -16,12 +19,14 @@ std::string fieldError(const std::string& field, double value, const std::string
 
 std::string validateRecordExcitation(const RecordExcitation& e) {
     if (e.file.empty()) return "excitation.record.file: missing (the accelerogram file)";
-    if (e.read.dt && !(*e.read.dt > 0.0 && *e.read.dt <= 10.0))
-        return fieldError("dt", *e.read.dt, "must be > 0 and at most 10 s");
+    if (e.read.dt && !(*e.read.dt > 0.0 && *e.read.dt <= limits::kMaxRecordDt))
+        return fieldError("dt", *e.read.dt,
+                          "must be > 0 and at most " + formatDouble(limits::kMaxRecordDt) + " s");
     if (e.read.format == RecordFormat::Values && !e.read.dt)
         return "excitation.record.dt: missing (format 'values' has no time column)";
-    if (e.targetPeak && !(*e.targetPeak > 0.0 && *e.targetPeak <= 1000.0))
-        return fieldError("target_peak_g", *e.targetPeak, "must be > 0 and at most 1000 g");
+    if (e.targetPeak && !(*e.targetPeak > 0.0 && *e.targetPeak <= limits::kMaxAmplitudeG))
+        return fieldError("target_peak_g", *e.targetPeak,
+                          "must be > 0 and at most " + formatDouble(limits::kMaxAmplitudeG) + " g");
     if (!(e.scaleFactor > 0.0 && e.scaleFactor <= 1e6))
         return fieldError("scale_factor", e.scaleFactor, "must be > 0 and at most 1e6");
     if (e.floor) {

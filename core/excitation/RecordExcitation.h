@@ -7,8 +7,8 @@
 // the slab sees.
 
 #include "core/excitation/FloorFilter.h"
-#include "core/io/Accelerogram.h"
-#include "core/io/RecordReader.h"
+#include "core/records/Accelerogram.h"
+#include "core/records/RecordReader.h"
 
 #include <optional>
 #include <string>

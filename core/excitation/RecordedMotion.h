@@ -7,7 +7,7 @@
 // solver stays exact; the solver's segments are the sample intervals.
 
 #include "core/excitation/Excitation1D.h"
-#include "core/io/Accelerogram.h"
+#include "core/records/Accelerogram.h"
 
 #include <optional>
 #include <string>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/friction/TripletCsv.h"
 
-#include "core/io/InputLimits.h"
-#include "core/io/TextInput.h"
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
 
 #include <array>
 #include <charconv>

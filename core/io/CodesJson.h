@@ -4,9 +4,9 @@
 // keys of the project file and of `kinstab-cli codes` / `check` (docs/user-guide.md "The command
 // line").
 
+#include "core/check/DesignCheck.h"
 #include "core/codes/Building.h"
 #include "core/codes/CodeSet.h"
-#include "core/codes/DesignCheck.h"
 #include "core/io/JsonReader.h"
 
 #include <nlohmann/json.hpp>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/MotionJson.h"
 
-#include "core/io/TextInput.h"
+#include "core/base/TextInput.h"
 
 #include <filesystem>
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/PlanarJson.h"
 
+#include "core/base/TextInput.h"
 #include "core/io/MotionJson.h"
-#include "core/io/TextInput.h"
 
 namespace kinstab {
 

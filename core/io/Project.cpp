@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/Project.h"
 
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
 #include "core/io/AtomicFile.h"
 #include "core/io/CodesJson.h"
 #include "core/io/FloorsJson.h"
-#include "core/io/InputLimits.h"
 #include "core/io/JsonReader.h"
 #include "core/io/MotionJson.h"
 #include "core/io/PlanarJson.h"
-#include "core/io/TextInput.h"
 
 #include <cmath>
 #include <filesystem>
@@ -48,15 +48,16 @@ std::string validateProject(const Project& p) {
                " characters, more than the limit of " +
                std::to_string(limits::kMaxDescriptionChars);
     if (std::string e = validateProjectInfo(p.info); !e.empty()) return e;
-    if (p.model != "slab1d" && p.model != "planar")
-        return "model = " + quotedToken(p.model) + ": must be slab1d or planar";
+    if (!modelKindFromName(p.model))
+        return "model = " + quotedToken(p.model) + ": must be " + modelKindChoices();
     std::string e = validateBuilding(p.building);
     if (e.empty()) e = validateCodes(p.codes);
     if (e.empty() && !(e = validateCase(p.slab)).empty()) e = "slab: " + e;
     if (e.empty() && p.wallWidthIn &&
-        (!std::isfinite(*p.wallWidthIn) || *p.wallWidthIn <= 0.0 || *p.wallWidthIn > 1000.0))
-        e = "slab.wall_width_in = " + formatDouble(*p.wallWidthIn) +
-            ": must be > 0 and at most 1000";
+        (!std::isfinite(*p.wallWidthIn) || *p.wallWidthIn <= 0.0 ||
+         *p.wallWidthIn > limits::kMaxWallWidthIn))
+        e = "slab.wall_width_in = " + formatDouble(*p.wallWidthIn) + ": must be > 0 and at most " +
+            formatDouble(limits::kMaxWallWidthIn);
     if (e.empty() && (!p.grid.amplitudes.empty() || !p.grid.frequencies.empty()) &&
         !(e = validateGrid(p.grid)).empty())
         e = "grid: " + e;
@@ -110,9 +111,9 @@ void slabFrom(const JsonReader& r, Project& p) {
         r.fail("tstar", "tstar and wall_width_in exclude each other");
     if (r.has("wall_width_in")) {
         p.wallWidthIn = r.requiredNumber("wall_width_in");
-        if (*p.wallWidthIn <= 0.0 || *p.wallWidthIn > 1000.0)
-            r.fail("wall_width_in",
-                   formatDouble(*p.wallWidthIn) + " in: must be > 0 and at most 1000");
+        if (*p.wallWidthIn <= 0.0 || *p.wallWidthIn > limits::kMaxWallWidthIn)
+            r.fail("wall_width_in", formatDouble(*p.wallWidthIn) + " in: must be > 0 and at most " +
+                                        formatDouble(limits::kMaxWallWidthIn));
         c.tstar = tstarFromWallWidthInches(*p.wallWidthIn);
     } else {
         c.tstar = r.number("tstar", c.tstar);
@@ -195,7 +196,7 @@ Project projectFromJson(const json& j, const std::string& baseDir) {
             p.grid.amplitudes = g->numbers("amplitudes");
             p.grid.frequencies = g->numbers("frequencies");
         }
-        p.model = r.text("model", "slab1d");
+        p.model = r.text("model", modelKindName(ModelKind::Slab1D));
         // Projects written before the planar model have no "planar" key: defaults.
         if (auto pl = r.optionalObject("planar")) p.planar = planarSettingsFromJson(*pl, baseDir);
         if (auto c = r.optionalObject("check")) p.critical = checkFrom(*c);

@@ -6,6 +6,7 @@
 // the bad one ("building.height = -3: must be > 0 ..."); a truncated or corrupt file is a
 // ProjectError, never a crash. Saving is atomic (temporary file renamed into place).
 
+#include "core/base/ModelKind.h"
 #include "core/building/FloorSettings.h"
 #include "core/codes/Building.h"
 #include "core/codes/CodeSet.h"
@@ -37,10 +38,10 @@ struct Project {
     ProjectInfo info; // engineer, firm, client, revisions: the report's title and signature blocks
     Building building;
     CodeSelection codes;
-    Slab1DCase slab;                        // envelope, t*, mu, limit, solver, scale
-    std::optional<double> wallWidthIn;      // set when t* comes from the wall width d (inches)
-    SweepGrid grid;                         // A (g) and f (Hz) of the γc surface
-    std::string model = "slab1d";           // "slab1d" | "planar"
+    Slab1DCase slab;                   // envelope, t*, mu, limit, solver, scale
+    std::optional<double> wallWidthIn; // set when t* comes from the wall width d (inches)
+    SweepGrid grid;                    // A (g) and f (Hz) of the γc surface
+    std::string model = modelKindName(ModelKind::Slab1D); // core/base/ModelKind.h
     PlanarSettings planar;                  // the planar model's own inputs (core/io/PlanarJson.h)
     CriticalSearch critical;                // A_crit search of the design check
     std::optional<RecordExcitation> record; // a record drives the slab; none: the enveloped sine

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/ProjectInfo.h"
 
-#include "core/io/InputLimits.h"
+#include "core/base/InputLimits.h"
 #include "core/io/JsonReader.h"
-#include "core/io/TextInput.h"
+#include "core/base/TextInput.h"
 
 #include <utility>
 

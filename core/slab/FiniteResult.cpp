@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/FiniteResult.h"
 
-#include "core/numerics/InternalError.h"
+#include "core/base/InternalError.h"
 
 #include <cmath>
 #include <sstream>

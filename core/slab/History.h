@@ -24,7 +24,7 @@ struct History {
 };
 
 // Empty when a history from 0 to tauEnd every `step` stays within limits::kMaxHistoryRows
-// (core/io/InputLimits.h), else why not: callers name their step flag or field with it.
+// (core/base/InputLimits.h), else why not: callers name their step flag or field with it.
 std::string validateHistoryStep(double tauEnd, double step);
 // Samples every `step` from 0 to tauEnd and at every event time. Throws std::invalid_argument
 // with validateHistoryStep's message when the step is too fine.

@@ -8,8 +8,8 @@
 #include "core/excitation/Envelope.h"
 #include "core/excitation/Excitation1D.h"
 #include "core/slab/PlanarSolver.h"
+#include "core/slab/PointResult.h"
 #include "core/slab/Slab1DCase.h"
-#include "core/sweep/Sweep.h"
 
 #include <memory>
 #include <optional>

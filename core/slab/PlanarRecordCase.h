@@ -6,7 +6,7 @@
 // the PlanarCase. Both components are scaled by one factor (the one that brings a_x to its
 // target peak), so the pair keeps the ratio of its recorded peaks.
 
-#include "core/io/Accelerogram.h"
+#include "core/records/Accelerogram.h"
 #include "core/slab/PlanarCase.h"
 
 #include <optional>

@@ -6,7 +6,7 @@
 // the caller's job (the shipped RSN68 UP lives in the application's resources).
 
 #include "core/excitation/Excitation1D.h"
-#include "core/io/Accelerogram.h"
+#include "core/records/Accelerogram.h"
 #include "core/slab/PlanarCase.h"
 #include "core/slab/Slab1DCase.h"
 

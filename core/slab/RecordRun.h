@@ -4,7 +4,7 @@
 // engineer asks for when a record, not the enveloped sine, is the excitation. Only the exact solver
 // runs records (it is exact for the linearly interpolated samples, docs/theory.md §6).
 
-#include "core/io/Accelerogram.h"
+#include "core/records/Accelerogram.h"
 #include "core/slab/Slab1DCase.h"
 
 namespace kinstab {

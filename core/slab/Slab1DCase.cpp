@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/Slab1DCase.h"
 
+#include "core/base/InternalError.h"
 #include "core/excitation/EnvelopedSine.h"
-#include "core/numerics/InternalError.h"
 #include "core/slab/ExactSolver.h"
 #include "core/slab/FiniteResult.h"
 

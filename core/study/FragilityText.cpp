@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/FragilityText.h"
 
-#include "core/io/TextInput.h"
+#include "core/base/TextInput.h"
 
 namespace kinstab {
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/StudyResults.h"
 
-#include "core/io/TextInput.h"
+#include "core/base/TextInput.h"
 #include "core/study/StudySpec.h"
 
 #include <map>

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/StudySpec.h"
 
-#include "core/codes/DesignCheck.h"
+#include "core/check/DesignCheck.h"
 #include "core/excitation/FloorFilter.h"
-#include "core/io/InputLimits.h"
+#include "core/base/InputLimits.h"
 #include "core/io/JsonReader.h"
-#include "core/io/TextInput.h"
+#include "core/base/TextInput.h"
 #include "core/slab/Slab1DCase.h"
 
 #include <fnmatch.h>

@@ -4,7 +4,7 @@
 // motion at which the 1-DOF slab collapses. gamma_c need not be monotone in the scale, so this
 // is the scan-then-bisect search of CriticalAmplitude with the record's peak as the amplitude.
 
-#include "core/io/Accelerogram.h"
+#include "core/records/Accelerogram.h"
 #include "core/slab/Slab1DCase.h"
 #include "core/sweep/CriticalAmplitude.h"
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/sweep/Grid.h"
 
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
 #include "core/excitation/FrequencyRange.h"
-#include "core/io/InputLimits.h"
-#include "core/io/TextInput.h"
 
 #include <cmath>
 #include <optional>
@@ -92,8 +92,9 @@ std::string validateGrid(const SweepGrid& g) {
     if (g.amplitudes.empty()) return "amplitudes: the grid is empty";
     if (g.frequencies.empty()) return "frequencies: the grid is empty";
     for (double a : g.amplitudes)
-        if (!std::isfinite(a) || a < 0.0 || a > 1000.0)
-            return "amplitudes: " + formatDouble(a) + " g is out of range (0 to 1000)";
+        if (!std::isfinite(a) || a < 0.0 || a > limits::kMaxAmplitudeG)
+            return "amplitudes: " + formatDouble(a) + " g is out of range (0 to " +
+                   formatDouble(limits::kMaxAmplitudeG) + ")";
     for (double f : g.frequencies)
         if (!std::isfinite(f) || !frequencyRangeError(f).empty())
             return "frequencies: " + formatDouble(f) + " Hz " + frequencyRangeError(f);

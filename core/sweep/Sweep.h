@@ -4,6 +4,7 @@
 // surface shows: the collapse time and the outcome (docs/theory.md §6.6, "leave out what a scene
 // does not need"). A point function makes the same sweep serve every model.
 
+#include "core/slab/PointResult.h"
 #include "core/slab/Slab1DCase.h"
 #include "core/sweep/Grid.h"
 #include "core/sweep/SweepControl.h"
@@ -12,12 +13,6 @@
 #include <vector>
 
 namespace kinstab {
-
-struct PointResult {
-    Outcome outcome = Outcome::Failed;
-    double tauC = 0;                    // NaN unless collapsed (or lifted off)
-    ExitSide exitSide = ExitSide::None; // planar collapses: across or along the walls
-};
 
 // Results in row-major order: index = i * frequencies + j for amplitudes[i], frequencies[j].
 struct SweepResult {
@@ -32,8 +27,6 @@ struct SweepResult {
         return points[i * grid.frequencies.size() + j];
     }
 };
-
-using PointFunction = std::function<PointResult(double amplitude, double frequencyHz)>;
 
 // threads <= 0: all hardware threads.
 SweepResult runSweep(const SweepGrid& grid, const PointFunction& point,

@@ -4,7 +4,7 @@
 #include "core/excitation/FrequencyRange.h"
 
 #include "core/excitation/RecordedMotion.h"
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 #include "core/slab/PlanarSettings.h"
 #include "python/src/Arguments.h"
 

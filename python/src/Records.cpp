@@ -2,11 +2,13 @@
 // read_record, floor_filter and simulate_record: accelerograms as NumPy arrays, the floor
 // filter (Nigam & Jennings 1969 recurrence) and a run of the 1-DOF slab under a record.
 
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
+#include "core/check/RecordAnalysis.h"
 #include "core/excitation/FloorFilter.h"
 #include "core/excitation/RecordedMotion.h"
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 #include "core/slab/History.h"
-#include "core/sweep/RecordAnalysis.h"
 #include "python/src/Arguments.h"
 #include "python/src/Arrays.h"
 #include "python/src/Bindings.h"
@@ -130,8 +132,10 @@ py::dict recordRun(const Slab1DCase& c, const std::string& path, std::optional<d
         badArgument("scale_factor", *scaleFactor, "amplitude and scale_factor exclude each other");
     if (amplitude) {
         finite("amplitude", *amplitude);
-        if (!(*amplitude > 0.0 && *amplitude <= 1000.0))
-            badArgument("amplitude", *amplitude, "target peak must be > 0 and at most 1000 g");
+        if (!(*amplitude > 0.0 && *amplitude <= limits::kMaxAmplitudeG))
+            badArgument("amplitude", *amplitude,
+                        "target peak must be > 0 and at most " +
+                            formatDouble(limits::kMaxAmplitudeG) + " g");
         in.record.targetPeak = amplitude;
     }
     in.record.scaleFactor = finite("scale_factor", scaleFactor.value_or(1.0));

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "python/src/SearchArguments.h"
 
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
 #include "python/src/Arguments.h"
 
 namespace kinstab::python {
@@ -10,8 +12,9 @@ CriticalSearch searchFrom(double maxAmplitude, double scanStep, double tolerance
     s.to = finite("max_amplitude", maxAmplitude);
     s.scanStep = finite("scan_step", scanStep);
     s.tolerance = finite("tolerance", tolerance);
-    if (!(s.to > 0.0 && s.to <= 1000.0))
-        badArgument("max_amplitude", s.to, "must be > 0 and at most 1000");
+    if (!(s.to > 0.0 && s.to <= limits::kMaxAmplitudeG))
+        badArgument("max_amplitude", s.to,
+                    "must be > 0 and at most " + formatDouble(limits::kMaxAmplitudeG));
     if (!(s.scanStep > 0.0 && s.scanStep <= s.to))
         badArgument("scan_step", s.scanStep, "must be > 0 and below --max-amplitude");
     if (!(s.tolerance > 0.0 && s.tolerance <= s.scanStep))

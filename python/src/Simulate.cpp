@@ -2,6 +2,8 @@
 // simulate and simulate_planar: one run under the enveloped sine, with its events and sampled
 // history as NumPy arrays when asked.
 
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
 #include "core/excitation/EnvelopedSine.h"
 #include "core/excitation/FrequencyRange.h"
 #include "core/slab/History.h"
@@ -28,8 +30,9 @@ namespace {
 void checkAmplitudeFrequency(double amplitude, double frequency) {
     finite("amplitude", amplitude);
     finite("frequency", frequency);
-    if (!(amplitude >= 0.0 && amplitude <= 1000.0))
-        badArgument("amplitude", amplitude, "must be between 0 and 1000 g");
+    if (!(amplitude >= 0.0 && amplitude <= limits::kMaxAmplitudeG))
+        badArgument("amplitude", amplitude,
+                    "must be between 0 and " + formatDouble(limits::kMaxAmplitudeG) + " g");
     if (const std::string e = frequencyRangeError(frequency); !e.empty())
         badArgument("frequency", frequency, e);
 }

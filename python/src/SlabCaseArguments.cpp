@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "python/src/SlabCaseArguments.h"
 
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
 #include "python/src/Arguments.h"
 
 #include <cmath>
@@ -31,8 +33,9 @@ Slab1DCase slabCaseFrom(const SlabCaseArguments& a) {
     if (a.tstar && a.wallWidthIn) badArgument("tstar and wall_width_in exclude each other");
     if (a.wallWidthIn) {
         const double d = *a.wallWidthIn;
-        if (!(d > 0.0 && d <= 1000.0))
-            badArgument("wall_width_in", d, "must be > 0 and at most 1000");
+        if (!(d > 0.0 && d <= limits::kMaxWallWidthIn))
+            badArgument("wall_width_in", d,
+                        "must be > 0 and at most " + formatDouble(limits::kMaxWallWidthIn));
         c.tstar = tstarFromWallWidthInches(d);
     } else {
         c.tstar = a.tstar.value_or(0.099);

@@ -5,7 +5,7 @@
 // filter of period T (docs/theory.md §7).
 
 #include "core/excitation/FloorFilter.h"
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 
 #include <string>
 

@@ -3,8 +3,8 @@
 // and μ = 0.6, A_crit ≈ 0.95 g (read off Fig. 29 by the paper); both code ratios (0.140 / 0.2296
 // UBC, 0.275 ATC) are far below it → "overstress governs".
 
+#include "core/check/DesignCheck.h"
 #include "core/codes/CodeSet.h"
-#include "core/codes/DesignCheck.h"
 #include "core/io/Project.h"
 
 #include <QtTest>

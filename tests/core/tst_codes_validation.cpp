@@ -2,8 +2,8 @@
 // Bad input is refused with a message naming the field, the value and the allowed range;
 // nothing is computed from it (docs/theory.md §9, issue #3).
 
+#include "core/check/DesignCheck.h"
 #include "core/codes/CodeSet.h"
-#include "core/codes/DesignCheck.h"
 
 #include <QtTest>
 

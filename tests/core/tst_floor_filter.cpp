@@ -9,7 +9,7 @@
 #include "core/excitation/EnvelopeFit.h"
 #include "core/excitation/FloorFilter.h"
 #include "core/excitation/FourierSpectrum.h"
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 
 #include <QtTest>
 

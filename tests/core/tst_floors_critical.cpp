@@ -7,7 +7,7 @@
 
 #include "core/building/FloorAnalysis.h"
 #include "core/io/Project.h"
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 #include "core/slab/RecordRun.h"
 
 #include <QtTest>

@@ -12,7 +12,7 @@
 #include "core/building/ModalModel.h"
 #include "core/building/ShearBuilding.h"
 #include "core/excitation/FloorFilter.h"
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 
 #include <QtTest>
 

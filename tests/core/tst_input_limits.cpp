@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Hostile and foreign input files: every limit of core/io/InputLimits.h is enforced with a
+// Hostile and foreign input files: every limit of core/base/InputLimits.h is enforced with a
 // message naming the input and the limit; a UTF-8 byte-order mark and Latin-1 header text are
 // read; numbers parse the same in a German locale (decimal comma) as in C; header counts are
 // checked before anything is reserved. Expected values are the Unicode code points of the
 // characters involved, counts of the inputs built here, or the limits themselves.
 
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
 #include "core/friction/TripletCsv.h"
-#include "core/io/InputLimits.h"
 #include "core/io/JsonReader.h"
 #include "core/io/MotionJson.h"
 #include "core/io/Project.h"
-#include "core/io/RecordReader.h"
-#include "core/io/TextInput.h"
+#include "core/records/RecordReader.h"
 #include "core/slab/History.h"
 #include "core/sweep/Grid.h"
 

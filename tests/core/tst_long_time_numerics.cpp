@@ -5,10 +5,10 @@
 // overflowed expm1 by an underflowed exponential: inf x 0 = NaN).
 
 #include "QuadratureReference.h"
+#include "core/base/InternalError.h"
 #include "core/excitation/EnvelopedSine.h"
 #include "core/excitation/FrequencyRange.h"
 #include "core/io/ResultJson.h"
-#include "core/numerics/InternalError.h"
 #include "core/slab/ExactSolver.h"
 #include "core/slab/FiniteResult.h"
 #include "core/slab/Slab1DCase.h"

@@ -15,7 +15,7 @@
 // Regenerate (only when the model itself changes, never to make a faster solver pass):
 //   KINSTAB_WRITE_PLANAR_GOLDEN=tests/data/planar_golden.csv build/tests/tst_planar_golden
 
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 #include "core/slab/PlanarCase.h"
 #include "core/slab/PlanarSettings.h"
 #include "core/sweep/Sweep.h"

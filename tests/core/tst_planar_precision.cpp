@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The planar work-precision study (core/numerics/PlanarPrecision.h): what the tolerance of the
+// The planar work-precision study (core/precision/PlanarPrecision.h): what the tolerance of the
 // planar solver buys. Its reference (the solver at rel 1e-13) must agree with an independent
 // method, Moreau's implicit Euler at h = 2e-3 and 1e-3 with Richardson extrapolation, as in
 // tst_planar_reference (within 1e-6; the extrapolation's own error is O(h^2)). The default
@@ -9,8 +9,8 @@
 // direction's relaxation rate |a|/|u| and, at rel 1e-6, rejected over and over; the study shows
 // it, so it is not asserted either way.)
 
-#include "core/io/RecordReader.h"
-#include "core/numerics/PlanarPrecision.h"
+#include "core/precision/PlanarPrecision.h"
+#include "core/records/RecordReader.h"
 #include "core/slab/PlanarSettings.h"
 
 #include "RecordMotions.h"

@@ -6,7 +6,7 @@
 // the walls, scaled by the first component's factor.
 
 #include "core/excitation/FloorFilter.h"
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 #include "core/slab/PlanarRecordCase.h"
 #include "core/slab/RecordRun.h"
 

@@ -3,7 +3,7 @@
 // file, every field's length limited and named when too long, revision dates checked, older
 // files without "info" unchanged.
 
-#include "core/io/InputLimits.h"
+#include "core/base/InputLimits.h"
 #include "core/io/Project.h"
 
 #include <QtTest>

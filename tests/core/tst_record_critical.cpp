@@ -4,10 +4,10 @@
 // brute-force scan in steps of 0.001 g (each step a direct exact-solver run of the scaled
 // record), and the record's design-check verdicts against the code ratios.
 
-#include "core/codes/RecordCheck.h"
+#include "core/check/RecordCheck.h"
 #include "core/excitation/FloorFilter.h"
 #include "core/excitation/RecordedMotion.h"
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 #include "core/slab/ExactSolver.h"
 #include "core/slab/RecordRun.h"
 #include "core/sweep/CriticalRecordScale.h"

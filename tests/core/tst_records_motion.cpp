@@ -5,7 +5,7 @@
 // exact solver driven by a record against an independent small-step integration.
 
 #include "core/excitation/RecordedMotion.h"
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 #include "core/slab/ExactSolver.h"
 
 #include <QtTest>

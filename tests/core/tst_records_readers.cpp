@@ -4,9 +4,9 @@
 // listed in SOURCES.md "Parser notes" parse; every broken-file mode is a RecordError with a line
 // number.
 
-#include "core/io/At2Reader.h"
-#include "core/io/CsmipV2Reader.h"
-#include "core/io/RecordReader.h"
+#include "core/records/At2Reader.h"
+#include "core/records/CsmipV2Reader.h"
+#include "core/records/RecordReader.h"
 
 #include <QtTest>
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzzes core/io/CsmipV2Reader: any bytes give a record or a RecordError.
 #include "FuzzInput.h"
-#include "core/io/CsmipV2Reader.h"
+#include "core/records/CsmipV2Reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     try {

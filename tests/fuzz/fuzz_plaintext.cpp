@@ -2,8 +2,8 @@
 // Fuzzes core/io/PlainTextReader (a column of values, and time-acceleration pairs) and the
 // format detection in front of it: any bytes give a record or a RecordError.
 #include "FuzzInput.h"
-#include "core/io/PlainTextReader.h"
-#include "core/io/RecordReader.h"
+#include "core/records/PlainTextReader.h"
+#include "core/records/RecordReader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace kinstab;

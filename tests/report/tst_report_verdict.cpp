@@ -6,8 +6,9 @@
 // a labelled secondary line. A planar project's report names the numerically integrated model
 // and its tolerance, never the exact closed-form solver. Needs poppler-utils.
 
+#include "core/check/RecordAnalysis.h"
 #include "core/io/Project.h"
-#include "core/sweep/RecordAnalysis.h"
+#include "core/check/RecordAnalysis.h"
 #include "report/ReportWriter.h"
 
 #include "ReportReading.h"

@@ -7,7 +7,7 @@
 
 #include "WindowFields.h"
 #include "core/io/Project.h"
-#include "core/io/RecordReader.h"
+#include "core/records/RecordReader.h"
 #include "core/sweep/CriticalAmplitude.h"
 #include "ui/GridPanel.h"
 #include "ui/MainWindow.h"

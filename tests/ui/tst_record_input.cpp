@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // A record as the excitation in the desktop window (docs/theory.md §7; docs/user-guide.md),
 // offscreen: choosing Record, a sample file and Run gives the same single run and critical scale as
-// the core call (core/sweep/RecordAnalysis.h, itself checked against a brute-force scan in
+// the core call (core/check/RecordAnalysis.h, itself checked against a brute-force scan in
 // tst_record_critical), a broken file shows its reason beside the field and blocks Run, and a
 // project with a record survives save and open.
 
+#include "core/check/RecordAnalysis.h"
 #include "core/io/Project.h"
-#include "core/sweep/RecordAnalysis.h"
 #include "ui/ExcitationPanel.h"
 #include "ui/HistoryChart.h"
 #include "ui/MainWindow.h"

@@ -5,9 +5,9 @@
 // Cancel the points never computed are drawn "not computed", distinct from stable.
 
 #include "WindowFields.h"
+#include "core/check/RecordAnalysis.h"
 #include "core/codes/CodeSet.h"
 #include "core/io/Project.h"
-#include "core/sweep/RecordAnalysis.h"
 #include "ui/CodesPanel.h"
 #include "ui/ExcitationPanel.h"
 #include "ui/GridPanel.h"

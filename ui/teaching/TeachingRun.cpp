@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/teaching/TeachingRun.h"
 
-#include "core/io/TextInput.h"
+#include "core/base/TextInput.h"
 #include "core/slab/History.h"
 #include "ui/teaching/PlanarPath.h"
 

@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/check/DesignCheck.h"
+
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
+#include "core/codes/Building.h"
+#include "core/sweep/Sweep.h"
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace kinstab {
+
+std::string validateCriticalSearch(const CriticalSearch& s) {
+    try {
+        requireRange("check.from", s.from, 0.0, limits::kMaxAmplitudeG, "g");
+        requireAbove("check.max_amplitude", s.to, s.from, limits::kMaxAmplitudeG, "g");
+        requireAbove("check.scan_step", s.scanStep, 0.0, s.to, "g");
+        requireAbove("check.tolerance", s.tolerance, 0.0, s.scanStep, "g");
+        // The search's own bounds (core/sweep/CriticalAmplitude.h), refused here as input
+        // rather than met later as an internal error on a worker thread.
+        if ((s.to - s.from) / s.scanStep > static_cast<double>(kMaxScanPoints))
+            throw InputError("check.scan_step = " + formatDouble(s.scanStep) + " g: more than " +
+                             std::to_string(kMaxScanPoints) + " scan points up to " +
+                             formatDouble(s.to) + " g");
+        if (s.tolerance < smallestTolerance(s.to))
+            throw InputError("check.tolerance = " + formatDouble(s.tolerance) +
+                             " g: below what double precision resolves at " + formatDouble(s.to) +
+                             " g (smallest " + formatDouble(smallestTolerance(s.to)) + " g)");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return {};
+}
+
+CodeVerdict judgeCode(const CodeResult& r, std::optional<double> aCrit, double searchLimit) {
+    CodeVerdict v;
+    v.code = r.code;
+    v.title = r.title;
+    v.ratio = r.topRatio;
+    v.ratioWithoutFt = r.topRatioWithoutFt;
+    v.periodSeconds = r.periodSeconds;
+    v.frequencyHz = 1.0 / r.periodSeconds;
+    v.aCrit = aCrit;
+    std::ostringstream s;
+    if (!aCrit) {
+        // Nothing collapses up to the search limit: A_crit exceeds it.
+        v.verdict = r.topRatio < searchLimit ? Verdict::OverstressGoverns
+                                             : Verdict::KineticInstabilityGoverns;
+        s << "no collapse up to A = " << searchLimit << " g at f = " << v.frequencyHz << " Hz";
+    } else {
+        if (r.topRatio > 0) v.margin = *aCrit / r.topRatio;
+        // Chapter V: below A_crit the members overstress first.
+        v.verdict =
+            r.topRatio < *aCrit ? Verdict::OverstressGoverns : Verdict::KineticInstabilityGoverns;
+        s << "F_top/w_top = " << r.topRatio << (r.topRatio < *aCrit ? " < " : " >= ")
+          << "A_crit = " << *aCrit << " g at f = " << v.frequencyHz << " Hz";
+    }
+    v.explanation = s.str();
+    return v;
+}
+
+DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1DCase& slab,
+                              const CriticalSearch& search) {
+    return designCheck(codes, slab, search, slab1DPoint(slab));
+}
+
+DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1DCase& slab,
+                              const CriticalSearch& search, const PointFunction& point,
+                              std::optional<double> scanFrom) {
+    if (const std::string e = validateCase(slab); !e.empty()) throw InputError(e);
+    if (const std::string e = validateCriticalSearch(search); !e.empty()) throw InputError(e);
+    DesignCheckResult out;
+    std::map<double, std::optional<double>> cache; // A_crit by frequency
+    for (const CodeResult& r : codes) {
+        if (!(r.periodSeconds > 0) || !std::isfinite(r.periodSeconds))
+            throw InputError(r.code + ".period_s = " + formatDouble(r.periodSeconds) +
+                             ": must be > 0");
+        const double f = 1.0 / r.periodSeconds;
+        auto it = cache.find(f);
+        if (it == cache.end()) {
+            const CriticalResult c =
+                criticalAmplitude(point, f, scanFrom.value_or(slab.slab.mu), search);
+            out.runs += c.runs;
+            it = cache.emplace(f, c.amplitude).first;
+        }
+        out.codes.push_back(judgeCode(r, it->second, search.to));
+    }
+    return out;
+}
+
+} // namespace kinstab
