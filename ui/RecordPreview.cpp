@@ -50,7 +50,7 @@ void addSeries(QChart* chart, const QString& name, const QList<QPointF>& points,
                const QColor& color) {
     auto* s = new QLineSeries;
     s->setName(name);
-    s->replace(points); // one replace: QT-NOTES §2.4
+    s->replace(points); // one replace: appending point by point redraws the chart per point
     s->setPen(QPen(color, 1.2));
     chart->addSeries(s);
     s->attachAxis(axis(chart, Qt::Horizontal));
