@@ -6,6 +6,7 @@
 #include "app/cli/PlanarFlags.h"
 #include "app/cli/RecordFlags.h"
 #include "core/analysis/RunAnalysis.h"
+#include "core/io/CaseJson.h"
 #include "core/io/CodesJson.h"
 #include "core/io/JsonText.h"
 #include "core/io/Project.h"
@@ -28,7 +29,7 @@ AnalysisRequest checkRequest(const Project& p, const std::vector<CodeResult>& co
 // The model the sine's check runs: the 1-DOF slab (none), or the planar slab of Furgerson 1980
 // ch. VI with the project's planar settings and its vertical record read. Throws InputError.
 std::optional<PlanarCase> planarModel(const Project& p) {
-    if (p.model != "planar") return std::nullopt;
+    if (modelKindFromName(p.model) != ModelKind::Planar) return std::nullopt;
     return ui::projectPlanarCase(p.slab, p.planar);
 }
 
@@ -78,7 +79,8 @@ int runCheck(const ArgList& argv) {
         throw UsageError("--project " + args.text("project") + ": the project selects no code");
     if (modelKindFromName(p.model) != ModelKind::Slab1D && p.record)
         throw UsageError("--project " + args.text("project") + ": model '" + p.model +
-                         "': the check against a record uses the " + modelKindName(ModelKind::Slab1D) + " model");
+                         "': the check against a record uses the " +
+                         modelKindName(ModelKind::Slab1D) + " model");
     const auto start = std::chrono::steady_clock::now();
     nlohmann::json j;
     std::optional<PlanarCase> planar;
@@ -90,6 +92,15 @@ int runCheck(const ArgList& argv) {
         throw inputUsageError(e);
     }
     j["project"] = p.name;
+    if (planar) {
+        j.update(planarCaseJson(*planar)); // model, solver, envelope, mu, t*, the planar inputs
+    } else {
+        j["model"] = modelKindName(ModelKind::Slab1D);
+        j["solver"] = solverName(p.slab.solver);
+        if (!p.record) j["envelope"] = envelopeJson(p.slab);
+        j["mu"] = p.slab.slab.mu;
+        j["tstar"] = p.slab.tstar;
+    }
     j["search"] = {{"max_amplitude", p.critical.to},
                    {"scan_step", p.critical.scanStep},
                    {"tolerance", p.critical.tolerance}};

@@ -55,6 +55,7 @@ private:
 
     void moveTo(double tau, const Vec4& y);
     void extremaWithin(double h, const Vec4& y1);
+    double overshootWithin(double h, const Vec4& y1) const;
     bool event(EventKind kind);
     Step finish(Outcome o);
     Step fail(const std::string& why) {
@@ -132,27 +133,55 @@ void PlanarRun::moveTo(double tau, const Vec4& y) {
     if (o_.recordPath) r_.path.push_back({tau, y[0], y[1], y[2], y[3], slipping_});
 }
 
-// Max |dx| and |dy| inside an accepted step of length h from y_ to y1: where a velocity
-// component changes sign, the extremum of the cubic Hermite interpolant of that displacement
-// (error O(h^4)), not the step ends only.
+namespace {
+
+// Where a velocity component changes sign inside a step of length h from y0 to y1, the
+// extremum of the cubic Hermite interpolant of that displacement (error O(h^4)): its value,
+// and where it lies as a fraction of the step. False when the component keeps its sign.
+bool hermiteExtremum(double h, const Vec4& y0, const Vec4& y1, int c, double& value,
+                     double& fraction) {
+    const double p0 = y0[c], p1 = y1[c], m0 = h * y0[c + 2], m1 = h * y1[c + 2];
+    if (!(m0 * m1 < 0.0)) return false;
+    // p'(s) = a s^2 + b s + m0 on [0, 1] changes sign once: bisection.
+    const double a = 6.0 * (p0 - p1) + 3.0 * (m0 + m1), b = 6.0 * (p1 - p0) - 4.0 * m0 - 2.0 * m1;
+    double lo = 0.0, hi = 1.0;
+    for (int i = 0; i < 60 && hi - lo > 1e-16; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        ((a * mid + b) * mid + m0)* m0 > 0.0 ? lo = mid : hi = mid;
+    }
+    const double t = 0.5 * (lo + hi), t2 = t * t, t3 = t2 * t;
+    value = (2 * t3 - 3 * t2 + 1) * p0 + (t3 - 2 * t2 + t) * m0 + (-2 * t3 + 3 * t2) * p1 +
+            (t3 - t2) * m1;
+    fraction = t;
+    return true;
+}
+
+} // namespace
+
+// Max |dx| and |dy| inside an accepted step of length h from y_ to y1, not the step ends only.
 void PlanarRun::extremaWithin(double h, const Vec4& y1) {
     for (int c = 0; c < 2; ++c) {
-        const double p0 = y_[c], p1 = y1[c], m0 = h * y_[c + 2], m1 = h * y1[c + 2];
-        if (!(m0 * m1 < 0.0)) continue;
-        // p'(s) = a s^2 + b s + m0 on [0, 1] changes sign once: bisection.
-        const double a = 6.0 * (p0 - p1) + 3.0 * (m0 + m1),
-                     b = 6.0 * (p1 - p0) - 4.0 * m0 - 2.0 * m1;
-        double lo = 0.0, hi = 1.0;
-        for (int i = 0; i < 60 && hi - lo > 1e-16; ++i) {
-            const double mid = 0.5 * (lo + hi);
-            ((a * mid + b) * mid + m0)* m0 > 0.0 ? lo = mid : hi = mid;
-        }
-        const double t = 0.5 * (lo + hi), t2 = t * t, t3 = t2 * t;
-        const double p = (2 * t3 - 3 * t2 + 1) * p0 + (t3 - 2 * t2 + t) * m0 +
-                         (-2 * t3 + 3 * t2) * p1 + (t3 - t2) * m1;
+        double value = 0.0, fraction = 0.0;
+        if (!hermiteExtremum(h, y_, y1, c, value, fraction)) continue;
         double& peak = c == 0 ? r_.slab.maxAbsDelta : r_.maxAbsDeltaY;
-        peak = std::max(peak, std::abs(p));
+        peak = std::max(peak, std::abs(value));
     }
+}
+
+// A step whose ends are inside the walls can still pass an edge between them and come back:
+// a grazing collapse that a check of the step's end misses. The fraction of the step at which
+// the interpolant's extremum lies beyond an edge (the step is then retaken to end there, where
+// the end check sees the collapse and locates it), or 0 when it stays inside.
+double PlanarRun::overshootWithin(double h, const Vec4& y1) const {
+    const PlanarParams& p = m_.params();
+    double first = 0.0;
+    for (int c = 0; c < 2; ++c) {
+        double value = 0.0, fraction = 0.0;
+        if (!hermiteExtremum(h, y_, y1, c, value, fraction)) continue;
+        if (std::abs(value) > (c == 0 ? p.limit : p.theta) && fraction > 0.0)
+            first = first > 0.0 ? std::min(first, fraction) : fraction;
+    }
+    return first;
 }
 
 bool PlanarRun::event(EventKind kind) {
@@ -357,7 +386,14 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
         }
         int comp = -1;
         double sign = 0;
-        if (collapseIn(st.y, comp, sign)) {
+        const bool endsOutside = collapseIn(st.y, comp, sign);
+        if (const double s = endsOutside ? 0.0 : overshootWithin(h, st.y);
+            s > 0.0 && s * h > 1e-15 * std::max(1.0, t_)) {
+            ++r_.slab.work.restarts;
+            hNext_ = s * h * (1.0 + 1e-9); // just past the extremum, outside the edge
+            continue;
+        }
+        if (endsOutside) {
             const double lim = comp == 0 ? p.limit : p.theta;
             const Vec4 y0 = y_;
             const double t0 = t_;

@@ -11,6 +11,13 @@
 // project (exit 2, "the design check uses the slab1d model"); through the analysis entry point
 // it runs the planar model's check, and that golden was written by the CLI after the change;
 // planarCheckIsThePlanarCritical checks its A_crit against `critical --model planar` there.
+// The planar goldens (04, 08, 10, 11) were rewritten once more by the faster planar solver of
+// issue 22: τc and γc moved by at most 1e-11 (within the solver's tolerance), max |dx| is now
+// the interpolated peak inside a step rather than the largest step end (0.76601 → 0.76691 in
+// 10), and A_crit at 1.5 Hz in 04 fell from 0.839468 to 0.839241 g: between them the slab
+// passes the wall's edge inside one integration step and comes back (max |dx| 1.00005 by the
+// interpolant), a collapse the old end-of-step check missed; the step is now retaken to end at
+// that peak, where the integrated state itself is beyond the edge.
 
 #include <QDir>
 #include <QFile>

@@ -18,10 +18,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Bottom floor first. analysis/ and study/ are placed for the folders other branches add.
+// Bottom floor first. study/ reads its spec file with io/'s JSON reader, so it sits on top.
 const std::vector<std::string> kCoreFloors = {
     "base",      "numerics", "records", "codes",    "friction", "excitation", "slab",
-    "precision", "sweep",    "check",   "building", "analysis", "study",      "io"};
+    "precision", "sweep",    "check",   "building", "analysis", "io",         "study"};
 
 struct Finding {
     std::vector<std::string> upward;     // "core/a/X.h includes core/b/Y.h (floor b above a)"
