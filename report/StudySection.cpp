@@ -71,6 +71,13 @@ StudySpec studySpec(const ProjectStudy& ps) {
     }
 }
 
+// "PGA" or "Sa(T = 1 s, ζ = 0.05)": the intensity measure in words, not the file's key.
+QString measureLabel(const IntensityMeasure& im) {
+    if (im.kind == IntensityMeasure::Kind::Pga) return QStringLiteral("PGA");
+    return QStringLiteral("Sa(T = %1 s, ζ = %2)")
+        .arg(QString::number(im.period, 'g', 4), QString::number(im.damping, 'g', 3));
+}
+
 QString floorText(const StudyRow& r) {
     if (!r.floorPeriod) return QStringLiteral("none");
     return QStringLiteral("T = %1 s, ζ = %2").arg(num(*r.floorPeriod, 3), num(*r.floorDamping, 3));
@@ -95,7 +102,7 @@ void fragilityTable(ReportDocument& doc, const std::vector<Fragility>& sets) {
     Table t{{"set", "μ", "t* (s)", "floor filter", "collapsed", "median (g)", "median bounds (g)",
              "β", "β bounds"},
             {},
-            {0.5, 0.6, 0.7, 1.6, 1.0, 1.0, 1.4, 0.7, 1.2},
+            {0.4, 0.6, 0.7, 1.7, 0.9, 0.8, 1.4, 0.6, 1.3},
             {Align::Left, Align::Right, Align::Right, Align::Left, Align::Right, Align::Right,
              Align::Right, Align::Right, Align::Right},
             {}};
@@ -180,7 +187,7 @@ void addStudySection(ReportDocument& doc, const Project& p, const ReportAnalysis
     const std::vector<StudyRow> rows = studyRows(*p.study, spec);
     const BootstrapSettings boot; // the defaults of `kinstab-cli fragility`
     const std::vector<Fragility> sets = studyFragility(rows, boot);
-    const QString measure = qs(intensityName(spec.intensity));
+    const QString measure = measureLabel(spec.intensity);
     doc.addSection(QStringLiteral("Study: collapse fragility over a record suite"));
     doc.addParagraph(
         QStringLiteral(
