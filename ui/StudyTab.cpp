@@ -218,7 +218,8 @@ std::string StudyTab::studyJson() const {
         params["floor_filter"] = {{"periods_s", m_floors->text().toStdString()}};
     study["format"] = "kinstab-study";
     study["version"] = 1;
-    study["records"] = {records};
+    const QStringList fields{m_folder->text(), m_include->text(), m_exclude->text()};
+    study["records"] = fields == m_openedRecordFields ? m_openedRecords : nlohmann::json{records};
     const nlohmann::json base = m_base.value("intensity", nlohmann::json::object());
     study["intensity"] = base.is_object() ? base : nlohmann::json::object();
     study["intensity"].update(im);
@@ -270,6 +271,10 @@ bool StudyTab::openStudy(const QString& path) {
     }
     m_base = j;
     setRecordsFolder(*folders.begin(), names.join(", "), QString());
+    m_openedRecords = nlohmann::json::array();
+    for (const StudyRecord& r : spec.records)
+        m_openedRecords.push_back({{"path", r.file}});
+    m_openedRecordFields = {m_folder->text(), m_include->text(), m_exclude->text()};
     const bool sa = spec.intensity.kind == IntensityMeasure::Kind::Sa;
     m_measure->setCurrentText(sa ? "sa" : "pga");
     if (sa) m_saPeriod->setValue(spec.intensity.period);

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include <QFutureWatcher>
+#include <QStringList>
 #include <QWidget>
 
 #include <memory>
