@@ -106,6 +106,22 @@ private slots:
         QVERIFY(!text.contains("collapse fragility"));
     }
 
+    // About 200 values of μ × 3 records: some 600 cases, more than the 500 a report runs itself.
+    void largeStudyWithoutResultsIsRefused() {
+        const QString spec = dir_.filePath("large.json");
+        writeBytes(spec, "{\"format\": \"kinstab-study\", \"version\": 1, \"records\": "
+                         "[{\"path\": \"" KINSTAB_SOURCE_DIR "/resources/records\", "
+                         "\"include\": [\"RSN68*.AT2\", \"RSN6_*.AT2\"], \"exclude\": "
+                         "[\"*UP*\"]}], \"parameters\": {\"mu\": \"0.1:0.498:0.002\", "
+                         "\"tstar\": [0.099]}}");
+        const QString project = projectWith(QJsonObject{{"spec", spec}}, "large-project.json");
+        const Run r = cli({"report", "--project", project, "-o", dir_.filePath("large.pdf")});
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains(" cases, more than the report runs itself (500)"),
+                 r.err.constData());
+        QVERIFY2(r.err.contains("study.results"), r.err.constData());
+    }
+
     void badStudyPathIsExit2() {
         const QString project =
             projectWith(QJsonObject{{"spec", "no-such-study.json"}}, "bad-study.json");
