@@ -98,6 +98,10 @@ private:
     nlohmann::json m_base = nlohmann::json::object(); // the study file opened last
     QString m_studyFile;                              // its path; empty: none opened
     std::string m_openedText;                         // studyJson() right after opening
+    // The opened file's records, one absolute file each in the file's order, used while the
+    // record fields still show what opening put there (a folder pattern would sort them).
+    nlohmann::json m_openedRecords;
+    QStringList m_openedRecordFields; // folder, include, exclude as opening set them
 };
 
 } // namespace kinstab::ui
