@@ -7,6 +7,7 @@
 #include "report/ReportDocument.h"
 
 #include <QString>
+#include <QStringList>
 
 #include <optional>
 #include <string>
@@ -65,5 +66,10 @@ void addNumericsSection(ReportDocument& doc, const Project& p, const ReportAnaly
 void addReferences(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 // The floor-motion section (FloorsSection.cpp): only when the project has "floors" and a record.
 void addFloorsSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
+// The study section (StudySection.cpp): only when the project has a study. Throws ReportError
+// naming study.spec or study.results when they cannot be read, or a study too large to run here.
+void addStudySection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
+// The reference-list entries of the study's records (none without a study).
+QStringList studyCitations(const Project& p);
 
 } // namespace kinstab::ui::report

@@ -233,6 +233,7 @@ void addReferences(ReportDocument& doc, const Project& p, const ReportAnalysis& 
                                            ? defaultVerticalRecordPath()
                                            : qs(p.planar.verticalPath));
     }
+    refs << studyCitations(p);
     for (int k = 0; k < refs.size(); ++k)
         doc.addParagraph(QStringLiteral("[%1]  %2").arg(k + 1).arg(refs[k]), true);
 }

@@ -21,6 +21,7 @@ constexpr SectionEntry kSections[] = {
     {"floors", "Floor motion", true, addFloorsSection},
     {"surface", "γc surface, A_crit(f) and slice", true, addSurfaceSections},
     {"check", "Design check: which failure governs", true, addCheckSection},
+    {"study", "Study: collapse fragility over a record suite", true, addStudySection},
     {"numerics", "Appendix: numerics", true, addNumericsSection},
     {"references", "References", true, addReferences},
 };

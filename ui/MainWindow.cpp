@@ -109,7 +109,12 @@ MainWindow::MainWindow(QWidget* parent)
     // In scroll areas: their minimum sizes must not grow the window past 1280×800.
     m_centre->addTab(scrollable(m_friction), tr("Friction"));
     m_centre->addTab(scrollable(new FloorsView([this] { return project(); })), tr("Floors"));
-    m_centre->addTab(scrollable(new StudyTab), tr("Study"));
+    auto* study = new StudyTab;
+    m_centre->addTab(scrollable(study), tr("Study"));
+    connect(study, &StudyTab::studyChosen, this, [this](const QString& spec) {
+        m_project.study = ProjectStudy{spec.toStdString(), {}}; // the report runs it
+        statusBar()->showMessage(tr("The project's study is %1; save to keep it").arg(spec), 5000);
+    });
     setCentralWidget(m_centre);
     buildActions();
     installHelpMenu(this);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/StudyTab.h"
 
+#include "core/base/TextInput.h"
 #include "core/io/AtomicFile.h"
 #include "core/study/CpuAffinity.h"
 #include "core/study/FragilityText.h"
@@ -14,7 +15,9 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -28,6 +31,8 @@
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <algorithm>
+#include <set>
 #include <sstream>
 
 namespace kinstab::ui {
@@ -57,6 +62,22 @@ nlohmann::json patternList(const QString& text) {
     return a;
 }
 
+QString joined(const std::vector<double>& values) {
+    QStringList out;
+    for (double v : values)
+        out << QString::fromStdString(formatDouble(v));
+    return out.join(',');
+}
+
+// The floor periods of the study's floor filters, each once ("" when the ground drives all).
+QString floorPeriods(const StudySpec& s) {
+    std::vector<double> periods;
+    for (const auto& f : s.floors)
+        if (f && std::find(periods.begin(), periods.end(), f->period) == periods.end())
+            periods.push_back(f->period);
+    return joined(periods);
+}
+
 // The worker: read the study from its text, run every case, fit the fragility.
 std::shared_ptr<StudyTab::Outcome> runWorker(const std::string& json, SweepControl* control);
 
@@ -76,6 +97,8 @@ StudyTab::StudyTab(QWidget* parent)
     m_floors->setPlaceholderText(tr("none: the ground record drives the slab"));
     m_folder->setPlaceholderText(tr("a folder of accelerograms (AT2, COSMOS, CSMIP V2, ...)"));
     auto* browse = new QPushButton(tr("Folder…"), this);
+    auto* open = new QPushButton(tr("Open study…"), this);
+    auto* use = new QPushButton(tr("Use in project"), this);
     auto* folderRow = new QHBoxLayout;
     folderRow->addWidget(m_folder, 1);
     folderRow->addWidget(browse);
@@ -93,6 +116,10 @@ StudyTab::StudyTab(QWidget* parent)
     form->addRow(tr("Floor periods s (LIST)"), m_floors);
     form->addRow(tr("Search up to"), m_maxG);
     form->addRow(tr("Scan step"), m_step);
+    auto* fileRow = new QHBoxLayout;
+    fileRow->addWidget(open);
+    fileRow->addWidget(use);
+    fileRow->addStretch(1);
     auto* bar = new QHBoxLayout;
     bar->addWidget(m_run);
     bar->addWidget(m_cancel);
@@ -111,6 +138,7 @@ StudyTab::StudyTab(QWidget* parent)
     split->addWidget(m_chart);
     split->addWidget(m_table);
     auto* layout = new QVBoxLayout(this);
+    layout->addLayout(fileRow);
     layout->addLayout(form);
     layout->addLayout(bar);
     layout->addWidget(m_status);
@@ -120,6 +148,18 @@ StudyTab::StudyTab(QWidget* parent)
         const QString d =
             QFileDialog::getExistingDirectory(this, tr("Records folder"), m_folder->text());
         if (!d.isEmpty()) m_folder->setText(d);
+    });
+    connect(open, &QPushButton::clicked, this, [this] {
+        const QString f = QFileDialog::getOpenFileName(this, tr("Open study"), m_studyFile,
+                                                       tr("Study files (*.json)"));
+        if (!f.isEmpty()) openStudy(f);
+    });
+    connect(use, &QPushButton::clicked, this, [this] {
+        QString f;
+        if (m_studyFile.isEmpty() || studyJson() != m_openedText)
+            f = QFileDialog::getSaveFileName(this, tr("Save the study for the project"),
+                                             "study.json", tr("Study files (*.json)"));
+        if (!f.isEmpty() || !m_studyFile.isEmpty()) useInProject(f);
     });
     connect(m_run, &QPushButton::clicked, this, &StudyTab::run);
     connect(m_cancel, &QPushButton::clicked, this, &StudyTab::cancel);
@@ -165,6 +205,7 @@ void StudyTab::setSearch(double maxG, double scanStepG) {
 }
 
 std::string StudyTab::studyJson() const {
+    nlohmann::json study = m_base;
     nlohmann::json records = {{"path", m_folder->text().toStdString()},
                               {"include", patternList(m_include->text())},
                               {"exclude", patternList(m_exclude->text())}};
@@ -175,14 +216,97 @@ std::string StudyTab::studyJson() const {
                              {"tstar", m_tstar->text().toStdString()}};
     if (!m_floors->text().trimmed().isEmpty())
         params["floor_filter"] = {{"periods_s", m_floors->text().toStdString()}};
-    return nlohmann::json{
-        {"format", "kinstab-study"},
-        {"version", 1},
-        {"records", {records}},
-        {"intensity", im},
-        {"parameters", params},
-        {"search", {{"max_g", m_maxG->value()}, {"scan_step_g", m_step->value()}}}}
-        .dump(2);
+    study["format"] = "kinstab-study";
+    study["version"] = 1;
+    const QStringList fields{m_folder->text(), m_include->text(), m_exclude->text()};
+    study["records"] = fields == m_openedRecordFields ? m_openedRecords : nlohmann::json{records};
+    const nlohmann::json base = m_base.value("intensity", nlohmann::json::object());
+    study["intensity"] = base.is_object() ? base : nlohmann::json::object();
+    study["intensity"].update(im);
+    if (im["measure"] == "pga") study["intensity"].erase("period_s");
+    const nlohmann::json baseParams = m_base.value("parameters", nlohmann::json::object());
+    nlohmann::json& p = study["parameters"] =
+        baseParams.is_object() ? baseParams : nlohmann::json::object();
+    p["mu"] = params["mu"];
+    p["tstar"] = params["tstar"];
+    p.erase("wall_width_in"); // the field is t*
+    if (params.contains("floor_filter")) {
+        if (!p.contains("floor_filter") || !p["floor_filter"].is_object())
+            p["floor_filter"] = nlohmann::json::object();
+        p["floor_filter"]["periods_s"] = params["floor_filter"]["periods_s"];
+    } else {
+        p.erase("floor_filter");
+    }
+    const nlohmann::json baseSearch = m_base.value("search", nlohmann::json::object());
+    study["search"] = baseSearch.is_object() ? baseSearch : nlohmann::json::object();
+    study["search"]["max_g"] = m_maxG->value();
+    study["search"]["scan_step_g"] = m_step->value();
+    return study.dump(2);
+}
+
+bool StudyTab::openStudy(const QString& path) {
+    StudySpec spec;
+    nlohmann::json j;
+    try {
+        spec = loadStudy(path.toStdString());
+        QFile f(path);
+        if (!f.open(QIODevice::ReadOnly)) throw StudyError(f.errorString().toStdString());
+        j = nlohmann::json::parse(f.readAll().toStdString()); // loadStudy has validated it
+    } catch (const std::exception& e) {
+        m_status->setText(tr("Cannot open the study %1: %2").arg(path, e.what()));
+        return false;
+    }
+    std::set<QString> folders;
+    QStringList names;
+    for (const StudyRecord& r : spec.records) {
+        folders.insert(QFileInfo(QString::fromStdString(r.file)).absolutePath());
+        names << QFileInfo(QString::fromStdString(r.file)).fileName();
+    }
+    if (folders.size() != 1) {
+        m_status->setText(tr("Cannot open the study %1: its records lie in %2 folders; this tab "
+                             "shows one folder (run it with kinstab-cli study)")
+                              .arg(path)
+                              .arg(folders.size()));
+        return false;
+    }
+    m_base = j;
+    setRecordsFolder(*folders.begin(), names.join(", "), QString());
+    m_openedRecords = nlohmann::json::array();
+    for (const StudyRecord& r : spec.records)
+        m_openedRecords.push_back({{"path", r.file}});
+    m_openedRecordFields = {m_folder->text(), m_include->text(), m_exclude->text()};
+    const bool sa = spec.intensity.kind == IntensityMeasure::Kind::Sa;
+    m_measure->setCurrentText(sa ? "sa" : "pga");
+    if (sa) m_saPeriod->setValue(spec.intensity.period);
+    setLists(joined(spec.mu), joined(spec.tstar), floorPeriods(spec));
+    setSearch(spec.search.to, spec.search.scanStep);
+    m_studyFile = path;
+    m_openedText = studyJson();
+    m_status->setText(tr("Opened %1: %2 records.").arg(path).arg(spec.records.size()));
+    return true;
+}
+
+bool StudyTab::useInProject(const QString& savePath) {
+    const std::string text = studyJson();
+    if (m_studyFile.isEmpty() || text != m_openedText) {
+        if (savePath.isEmpty()) {
+            m_status->setText(tr("Save the study to a file first: the project names a file."));
+            return false;
+        }
+        try {
+            (void)studyFromJsonText(text, "");
+        } catch (const StudyError& e) {
+            m_status->setText(tr("Cannot use the study: %1").arg(e.what()));
+            return false;
+        }
+        if (!save(savePath, text + "\n")) return false;
+        m_studyFile = savePath;
+        m_openedText = text;
+    }
+    emit studyChosen(QFileInfo(m_studyFile).absoluteFilePath());
+    m_status->setText(
+        tr("The project's study is now %1; save the project to keep it.").arg(m_studyFile));
+    return true;
 }
 
 bool StudyTab::isRunning() const {

@@ -8,7 +8,10 @@
 #include "core/study/Fragility.h"
 #include "core/sweep/SweepControl.h"
 
+#include <nlohmann/json.hpp>
+
 #include <QFutureWatcher>
+#include <QStringList>
 #include <QWidget>
 
 #include <memory>
@@ -37,8 +40,17 @@ public:
     void setRecordsFolder(const QString& folder, const QString& include, const QString& exclude);
     void setLists(const QString& mu, const QString& tstar, const QString& floorPeriods);
     void setSearch(double maxG, double scanStepG);
-    // The study file text the fields describe (kinstab-study, version 1).
+    // The study file text the fields describe (kinstab-study, version 1); settings the fields
+    // do not show (search tolerance, floor dampings, the ground case) are kept from the study
+    // file opened last.
     std::string studyJson() const;
+    // Fills the fields from a study file; false, with the reason in message(), when it cannot be
+    // read or its records are not all in one folder (the tab shows one folder).
+    bool openStudy(const QString& path);
+    // Makes the study the project's (signal studyChosen): the file opened last, unless the
+    // fields were run or edited since, in which case they are written to savePath first.
+    bool useInProject(const QString& savePath);
+    QString studyFile() const { return m_studyFile; }
 
     void run();
     void cancel();
@@ -53,6 +65,7 @@ public:
 
 signals:
     void finished();
+    void studyChosen(const QString& specPath);
     void progressed(int done, int total); // from the worker, delivered queued
 
 private:
@@ -82,6 +95,13 @@ private:
     std::string m_rows;
     std::vector<StudyRow> m_parsed;
     std::vector<Fragility> m_fragility;
+    nlohmann::json m_base = nlohmann::json::object(); // the study file opened last
+    QString m_studyFile;                              // its path; empty: none opened
+    std::string m_openedText;                         // studyJson() right after opening
+    // The opened file's records, one absolute file each in the file's order, used while the
+    // record fields still show what opening put there (a folder pattern would sort them).
+    nlohmann::json m_openedRecords;
+    QStringList m_openedRecordFields; // folder, include, exclude as opening set them
 };
 
 } // namespace kinstab::ui

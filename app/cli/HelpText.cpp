@@ -161,9 +161,9 @@ const char* kReport =
     "  --figure-grid N              grid points per axis of the surface figure [41]\n"
     "  --sections LIST              optional sections, comma-separated, or all [all]:\n"
     "                               assumptions, symbols, inputs, codes, excitation, record,\n"
-    "                               floors, surface, check, numerics, references (the title\n"
-    "                               block, the verdict and the signature block are always\n"
-    "                               printed)\n";
+    "                               floors, surface, check, study, numerics, references (the\n"
+    "                               title block, the verdict and the signature block are\n"
+    "                               always printed; study: when the project names a study)\n";
 
 const char* kFloors =
     "usage: kinstab-cli floors --project FILE [--record FILE] [--stiffness uniform|weight]\n"

@@ -178,6 +178,7 @@ json projectToJson(const Project& p, const std::string& baseDir) {
               {"excitation", excitationToJson(p.record, baseDir)},
               {"floors", p.floors ? floorSettingsToJson(*p.floors) : json()}};
     if (!p.info.empty()) j["info"] = projectInfoToJson(p.info); // older files have none
+    if (p.study) j["study"] = studyToJson(*p.study, baseDir);   // nor a study
     return j;
 }
 
@@ -202,8 +203,10 @@ Project projectFromJson(const json& j, const std::string& baseDir) {
         if (auto c = r.optionalObject("check")) p.critical = checkFrom(*c);
         p.record = excitationFromJson(r, baseDir);
         if (auto f = r.optionalObject("floors")) p.floors = floorSettingsFromJson(*f);
+        p.study = studyFromJson(r, baseDir);
         if (const std::string e = validateProject(p); !e.empty()) throw ProjectError(e);
         if (p.record) checkRecordFile(*p.record);
+        if (p.study) checkStudyFile(*p.study);
         return p;
     } catch (const JsonFieldError& e) {
         throw ProjectError(e.what());

@@ -12,6 +12,7 @@
 #include "core/codes/CodeSet.h"
 #include "core/excitation/RecordExcitation.h"
 #include "core/io/ProjectInfo.h"
+#include "core/io/StudyJson.h"
 #include "core/slab/PlanarSettings.h"
 #include "core/slab/Slab1DCase.h"
 #include "core/sweep/CriticalAmplitude.h"
@@ -46,6 +47,7 @@ struct Project {
     CriticalSearch critical;                // A_crit search of the design check
     std::optional<RecordExcitation> record; // a record drives the slab; none: the enveloped sine
     std::optional<FloorSettings> floors;    // the floor-motion check; present: the report shows it
+    std::optional<ProjectStudy> study;      // a record-suite study; present: the report shows it
 };
 
 // The paper's 16-story building (chapter V) with the paper's slab, envelope and grid.

@@ -102,8 +102,8 @@ private slots:
 
     // No key of the project file reaches the reader; the wall width stands beside t*.
     void plainLabelsOnly() {
-        for (const char* f :
-             {"paper-16-story.json", "paper-16-story-record.json", "paper-planar.json"}) {
+        for (const char* f : {"paper-16-story.json", "paper-16-story-record.json",
+                              "paper-planar.json", "paper-16-story-study.json"}) {
             const QString text = reportText(loadProject(kExamples + f), allSections());
             for (const char* key : {"asce7_22", "ubc1976", "atc306", "dual_frame_wall", "= default",
                                     "tau_max", "site_class", "risk_category"})
