@@ -5,6 +5,7 @@
 // its bounds and the empirical points. The rows come from the project's results file when it has
 // one, else the study runs here, on one thread (a report is not a cluster job: see the limit).
 
+#include "core/io/StudySpecJson.h"
 #include "core/records/RecordReader.h"
 #include "core/study/Fragility.h"
 #include "core/study/StudyResults.h"

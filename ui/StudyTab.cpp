@@ -3,6 +3,7 @@
 
 #include "core/base/TextInput.h"
 #include "core/io/AtomicFile.h"
+#include "core/io/StudySpecJson.h"
 #include "core/study/CpuAffinity.h"
 #include "core/study/FragilityText.h"
 #include "core/study/StudyRunner.h"

@@ -5,8 +5,9 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/StreamedOutput.h"
-#include "core/io/AtomicFile.h"
 #include "core/base/TextInput.h"
+#include "core/io/AtomicFile.h"
+#include "core/io/StudySpecJson.h"
 #include "core/study/CpuAffinity.h"
 #include "core/study/StudyRunner.h"
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/StudyJson.h"
+#include "core/io/StudySpecJson.h"
 
 #include "core/base/TextInput.h"
 #include "core/io/MotionJson.h"

@@ -2,8 +2,8 @@
 #pragma once
 // A study (docs/studies.md): a suite of records crossed with lists of slab and floor parameters,
 // each case asking for the intensity at which the record, scaled, first collapses the slab.
-// The study file is versioned JSON ({"format": "kinstab-study", "version": 1, ...}); every
-// bad field is a StudyError naming it ("parameters.mu[2] = -1: must be > 0").
+// The study file (versioned JSON, read by core/io/StudySpecJson.h) names every bad field in a
+// StudyError ("parameters.mu[2] = -1: must be > 0").
 
 #include "core/sweep/CriticalAmplitude.h"
 
@@ -61,9 +61,5 @@ struct StudySpec {
     double limit = 1.0;                                   // slab.limit, bearing length / (d/2)
     CriticalSearch search;
 };
-
-// Throws StudyError naming the field; baseDir resolves relative record paths.
-StudySpec studyFromJsonText(const std::string& text, const std::string& baseDir);
-StudySpec loadStudy(const std::string& path); // throws StudyError
 
 } // namespace kinstab

@@ -18,10 +18,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Bottom floor first. study/ reads its spec file with io/'s JSON reader, so it sits on top.
+// Bottom floor first. io/ reads and writes every file, the study file and the project's study
+// included, so it sits on top.
 const std::vector<std::string> kCoreFloors = {
     "base",      "numerics", "records", "codes",    "friction", "excitation", "slab",
-    "precision", "sweep",    "check",   "building", "analysis", "io",         "study"};
+    "precision", "sweep",    "check",   "building", "analysis", "study",      "io"};
 
 struct Finding {
     std::vector<std::string> upward;     // "core/a/X.h includes core/b/Y.h (floor b above a)"

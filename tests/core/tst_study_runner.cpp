@@ -4,6 +4,7 @@
 // read back equal to the one written, and cancel (also run under ThreadSanitizer, scripts/tsan.sh).
 
 #include "core/io/AtomicFile.h"
+#include "core/io/StudySpecJson.h"
 #include "core/study/StudyRunner.h"
 
 #include <nlohmann/json.hpp>

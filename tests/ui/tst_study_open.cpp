@@ -4,6 +4,7 @@
 // not show, such as the search tolerance, kept), a study the tab cannot show is refused with the
 // reason, and "Use in project" hands on the file, or first saves edited fields.
 
+#include "core/io/StudySpecJson.h"
 #include "core/study/StudyCase.h"
 #include "core/study/StudySpec.h"
 #include "ui/StudyTab.h"

@@ -1,0 +1,233 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/io/StudySpecJson.h"
+
+#include "core/base/InputLimits.h"
+#include "core/base/TextInput.h"
+#include "core/check/DesignCheck.h"
+#include "core/excitation/FloorFilter.h"
+#include "core/io/JsonReader.h"
+#include "core/slab/Slab1DCase.h"
+
+#include <fnmatch.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace kinstab {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// "FIELD = VALUE: why", the form every project field error takes.
+[[noreturn]] void badValue(const JsonReader& r, const std::string& key, const std::string& value,
+                           const std::string& why) {
+    throw JsonFieldError(r.field(key) + " = " + value + ": " + why);
+}
+
+std::vector<std::string> patterns(const JsonReader& r, const std::string& key,
+                                  const std::string& fallback) {
+    if (!r.has(key)) return fallback.empty() ? std::vector<std::string>{} : std::vector{fallback};
+    const json& a = r.raw(key);
+    if (!a.is_array()) r.fail(key, "expected an array of file-name patterns");
+    std::vector<std::string> out;
+    for (const json& p : a) {
+        if (!p.is_string()) r.fail(key, "expected an array of file-name patterns");
+        out.push_back(p.get<std::string>());
+    }
+    return out;
+}
+
+bool matchesAny(const std::vector<std::string>& globs, const std::string& name) {
+    return std::any_of(globs.begin(), globs.end(), [&](const std::string& g) {
+        return fnmatch(g.c_str(), name.c_str(), 0) == 0;
+    });
+}
+
+// The record's path as the study file writes it: under a folder, the folder as written joined with
+// the file's name; an absolute path stays absolute, a relative one relative to the study file.
+std::string labelFor(const fs::path& file, const fs::path& folder, const std::string& given) {
+    const fs::path written(given);
+    if (file == folder) return written.lexically_normal().generic_string();
+    return (written / file.lexically_relative(folder)).lexically_normal().generic_string();
+}
+
+// A folder's files whose names match include and none of exclude, sorted by name so that
+// every machine expands the same folder to the same list.
+std::vector<fs::path> folderFiles(const fs::path& dir, const JsonReader& r) {
+    const auto include = patterns(r, "include", "*");
+    const auto exclude = patterns(r, "exclude", "");
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+        const std::string name = entry.path().filename().string();
+        if (!entry.is_regular_file() || !matchesAny(include, name) || matchesAny(exclude, name))
+            continue;
+        files.push_back(entry.path());
+        if (files.size() > kMaxStudyRecords) break;
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+void addRecords(const JsonReader& r, const std::string& baseDir, StudySpec& s) {
+    const std::string given = r.text("path", "");
+    if (given.empty()) r.fail("path", "missing: a record file or a folder of records");
+    fs::path path(given);
+    if (path.is_relative() && !baseDir.empty()) path = fs::path(baseDir) / path;
+    path = fs::absolute(path).lexically_normal();
+    std::error_code ec;
+    std::vector<fs::path> files;
+    if (fs::is_directory(path, ec))
+        files = folderFiles(path, r);
+    else if (fs::is_regular_file(path, ec))
+        files.push_back(path);
+    else
+        badValue(r, "path", quotedToken(given), "no such file or folder");
+    if (files.empty()) badValue(r, "path", quotedToken(given), "no record file matches");
+    for (const fs::path& f : files) {
+        s.records.push_back({f.string(), labelFor(f, path, given)});
+        if (s.records.size() > kMaxStudyRecords)
+            r.fail("path", "more than the limit of " + std::to_string(kMaxStudyRecords) +
+                               " records in one study");
+    }
+}
+
+void readRecords(const JsonReader& top, const std::string& baseDir, StudySpec& s) {
+    const json& list = top.raw("records");
+    if (!list.is_array() || list.empty())
+        top.fail("records", "expected a non-empty array of {\"path\": FILE or FOLDER}");
+    for (std::size_t i = 0; i < list.size(); ++i)
+        addRecords(JsonReader(list[i], top.field("records") + "[" + std::to_string(i) + "]"),
+                   baseDir, s);
+}
+
+IntensityMeasure readIntensity(const JsonReader& top) {
+    IntensityMeasure im;
+    const auto r = top.optionalObject("intensity");
+    if (!r) return im;
+    const std::string m = r->text("measure", "pga");
+    if (m != "pga" && m != "sa") badValue(*r, "measure", quotedToken(m), "must be pga or sa");
+    if (m == "pga") return im;
+    im.kind = IntensityMeasure::Kind::Sa;
+    im.period = r->requiredNumber("period_s");
+    im.damping = r->number("damping", im.damping);
+    if (!(im.period >= 0.01 && im.period <= 20.0))
+        badValue(*r, "period_s", formatDouble(im.period), "must be between 0.01 and 20 s");
+    if (!(im.damping > 0.0 && im.damping < 1.0))
+        badValue(*r, "damping", formatDouble(im.damping), "must be > 0 and < 1");
+    return im;
+}
+
+// A list of positive numbers in (0, max]; fallback when the key is absent.
+std::vector<double> positiveList(const JsonReader& r, const std::string& key, double max,
+                                 std::vector<double> fallback) {
+    if (!r.has(key)) return fallback;
+    const std::vector<double> v = r.numbers(key);
+    if (v.empty()) r.fail(key, "the list is empty");
+    if (v.size() > kMaxStudyListValues)
+        r.fail(key, std::to_string(v.size()) + " values, more than the limit of " +
+                        std::to_string(kMaxStudyListValues));
+    for (std::size_t i = 0; i < v.size(); ++i)
+        if (!(v[i] > 0.0 && v[i] <= max))
+            badValue(r, key + "[" + std::to_string(i) + "]", formatDouble(v[i]),
+                     "must be > 0 and at most " + formatDouble(max));
+    return v;
+}
+
+void readFloors(const JsonReader& p, StudySpec& s) {
+    s.floors = {std::nullopt};
+    const auto f = p.optionalObject("floor_filter");
+    if (!f) return;
+    const auto periods = positiveList(*f, "periods_s", 20.0, {});
+    const auto dampings = positiveList(*f, "dampings", 0.99, {0.02});
+    if (periods.empty()) f->fail("periods_s", "missing: the floor periods to cross");
+    s.floors.clear();
+    if (f->boolean("include_ground", false)) s.floors.push_back(std::nullopt);
+    for (double t : periods)
+        for (double z : dampings) {
+            FloorFilterParams check{t, z, std::nullopt};
+            if (const std::string e = validateFloorFilter(check); !e.empty())
+                f->fail("periods_s", e);
+            s.floors.push_back(FloorFilterChoice{t, z});
+        }
+}
+
+void readParameters(const JsonReader& top, StudySpec& s) {
+    const auto p = top.optionalObject("parameters");
+    static const json empty = json::object();
+    const JsonReader none(empty, top.field("parameters"));
+    const JsonReader& r = p ? *p : none;
+    s.mu = positiveList(r, "mu", 10.0, {0.6});
+    if (r.has("tstar") && r.has("wall_width_in"))
+        r.fail("tstar", "tstar and wall_width_in exclude each other");
+    s.tstar = positiveList(r, "tstar", 10.0, {0.099});
+    if (r.has("wall_width_in")) {
+        s.tstar.clear();
+        for (double d : positiveList(r, "wall_width_in", 1000.0, {}))
+            s.tstar.push_back(tstarFromWallWidthInches(d));
+    }
+    s.limit = r.number("limit", s.limit);
+    if (!(s.limit > 0.0 && s.limit <= 1e3))
+        badValue(r, "limit", formatDouble(s.limit), "must be > 0 and at most 1000");
+    readFloors(r, s);
+}
+
+void readSearch(const JsonReader& top, StudySpec& s) {
+    const auto r = top.optionalObject("search");
+    if (r) {
+        s.search.to = r->number("max_g", s.search.to);
+        s.search.scanStep = r->number("scan_step_g", s.search.scanStep);
+        s.search.tolerance = r->number("tolerance_g", s.search.tolerance);
+    }
+    if (const std::string e = validateCriticalSearch(s.search); !e.empty())
+        throw StudyError(top.field("search") + ": " + e);
+}
+
+std::size_t caseCount(const StudySpec& s) {
+    return s.records.size() * s.mu.size() * s.tstar.size() * s.floors.size();
+}
+
+} // namespace
+
+StudySpec studyFromJsonText(const std::string& text, const std::string& baseDir) {
+    try {
+        const json j = parseJsonDocument(text, limits::kMaxProjectFileBytes);
+        const JsonReader top(j, "");
+        const std::string format = top.text("format", "");
+        if (format != kStudyFormat)
+            badValue(top, "format", quotedToken(format),
+                     std::string("must be \"") + kStudyFormat + "\"");
+        const int version = top.integer("version", 0);
+        if (version != kStudyVersion)
+            badValue(top, "version", std::to_string(version),
+                     "this kinstab reads version " + std::to_string(kStudyVersion));
+        StudySpec s;
+        s.name = top.text("name", "");
+        if (s.name.size() > limits::kMaxNameChars)
+            top.fail("name", "more than " + std::to_string(limits::kMaxNameChars) + " characters");
+        readRecords(top, baseDir, s);
+        s.intensity = readIntensity(top);
+        readParameters(top, s);
+        readSearch(top, s);
+        // Each list is bounded, so the product cannot overflow before this check.
+        if (caseCount(s) > kMaxStudyCases)
+            throw StudyError("records x parameters: " + std::to_string(caseCount(s)) +
+                             " cases, more than the limit of " + std::to_string(kMaxStudyCases));
+        return s;
+    } catch (const JsonFieldError& e) {
+        throw StudyError(e.what());
+    } catch (const fs::filesystem_error& e) {
+        throw StudyError(std::string("records: ") + e.what());
+    }
+}
+
+StudySpec loadStudy(const std::string& path) {
+    const FileText f = readTextFile(path, limits::kMaxProjectFileBytes);
+    if (!f.error.empty()) throw StudyError(path + ": " + f.error);
+    const std::string dir = fs::absolute(path).parent_path().string();
+    return studyFromJsonText(f.text, dir);
+}
+
+} // namespace kinstab
