@@ -46,7 +46,7 @@ ModelPanel::ModelPanel(QWidget* parent)
     connect(m_normalization, &QComboBox::currentIndexChanged, this, &InputPanel::changed);
     connect(m_path, &QLineEdit::editingFinished, this, &ModelPanel::checkVerticalFile);
     connect(m_browse, &QPushButton::clicked, this, &ModelPanel::browse);
-    load(modelKindName(ModelKind::Slab1D), PlanarSettings{});
+    load(ModelKind::Slab1D, PlanarSettings{});
 }
 
 void ModelPanel::buildPlanarRows() {
@@ -152,8 +152,8 @@ bool ModelPanel::isPlanar() const {
     return m_model->currentIndex() == 1;
 }
 
-std::string ModelPanel::model() const {
-    return modelKindName(isPlanar() ? ModelKind::Planar : ModelKind::Slab1D);
+ModelKind ModelPanel::model() const {
+    return isPlanar() ? ModelKind::Planar : ModelKind::Slab1D;
 }
 
 PlanarSettings ModelPanel::settings() const {
@@ -168,11 +168,11 @@ PlanarSettings ModelPanel::settings() const {
     return s;
 }
 
-void ModelPanel::load(const std::string& model, const PlanarSettings& s) {
+void ModelPanel::load(ModelKind model, const PlanarSettings& s) {
     m_loaded = s;
     {
         const QSignalBlocker block(this); // one changed() at the end
-        m_model->setCurrentIndex(modelKindFromName(model) == ModelKind::Planar ? 1 : 0);
+        m_model->setCurrentIndex(model == ModelKind::Planar ? 1 : 0);
         m_fy->setValue(s.fyHz);
         m_ratio->setValue(s.ayRatio);
         m_theta->setValue(s.theta);

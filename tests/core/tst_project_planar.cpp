@@ -49,7 +49,7 @@ private slots:
     void roundTrip() {
         QFETCH(int, vertical);
         Project p = paperExampleProject();
-        p.model = "planar";
+        p.model = ModelKind::Planar;
         p.planar.fyHz = 2.5;
         p.planar.ayRatio = 0.45;
         p.planar.theta = 12.0;
@@ -68,7 +68,7 @@ private slots:
         QTemporaryDir tmp;
         const std::string dir = tmp.path().toStdString();
         Project p = paperExampleProject();
-        p.model = "planar";
+        p.model = ModelKind::Planar;
         p.planar.vertical = VerticalSource::File;
         p.planar.verticalPath = dir + "/records/UP.AT2";
         const std::string path = dir + "/projects/p.json";
