@@ -130,7 +130,7 @@ private slots:
         QVERIFY(b.slab.scale == TauScale::TauRise);
         QCOMPARE(b.grid.amplitudes, a.grid.amplitudes);
         QCOMPARE(b.grid.frequencies, a.grid.frequencies);
-        QCOMPARE(b.model, std::string("planar"));
+        QVERIFY(b.model == ModelKind::Planar);
         QCOMPARE(b.critical.from, 0.5);
         QCOMPARE(b.critical.to, 3.0);
         QCOMPARE(b.critical.scanStep, 0.02);
