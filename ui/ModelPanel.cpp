@@ -2,6 +2,7 @@
 #include "ui/ModelPanel.h"
 
 #include "core/excitation/FrequencyRange.h"
+#include "core/slab/SlabLimits.h"
 #include "report/PlanarVertical.h"
 #include "ui/NumberField.h"
 #include "ui/RecordPreview.h"
@@ -57,11 +58,11 @@ void ModelPanel::buildPlanarRows() {
     m_ratio = addField("ayRatio", tr("A_y / A_x:"), QString(),
                        tr("Amplitude along the walls over the amplitude across them. The paper "
                           "takes 0.9, Pacoima Dam's ratio of horizontal peaks."));
-    m_ratio->setCheck(rangeCheck(0, 100));
+    m_ratio->setCheck(rangeCheck(kAyRatioRange));
     m_theta = addField("theta", tr("Θ (along):"), QString(),
                        tr("Along-wall limit: the slab falls when its slip along the walls exceeds "
                           "Θ = 2 wall length / wall width (half-widths). Default 20."));
-    m_theta->setCheck(rangeCheck(0, 1e6, false));
+    m_theta->setCheck(rangeCheck(kSlipLimitRange));
     m_normalization->addItem(tr("product (e × sine)"));
     m_normalization->addItem(tr("envelope (ch. VI)"));
     m_normalization->setToolTip(
