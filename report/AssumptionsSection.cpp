@@ -56,7 +56,7 @@ QStringList excitationAssumptions(const Project& p, const ReportAnalysis& a) {
 
 QStringList modelAssumptions(const Project& p) {
     QStringList out;
-    if (p.model != "planar") {
+    if (p.model != ModelKind::Planar) {
         out << QStringLiteral("The 1-DOF model moves the slab across the walls only: no motion "
                               "along the walls and no vertical motion (the normal force is the "
                               "slab's weight throughout).");

@@ -113,8 +113,9 @@ void addInputSections(ReportDocument& doc, const Project& p, const ReportAnalysi
              {3, 1, 2, 1},
              {Align::Left, Align::Left, Align::Right, Align::Left},
              {}};
-    sl.rows.push_back(
-        {"model", "", p.model == "planar" ? "planar 2-DOF slab" : "1-DOF slab (ch. IV)", ""});
+    sl.rows.push_back({"model", "",
+                       p.model == ModelKind::Planar ? "planar 2-DOF slab" : "1-DOF slab (ch. IV)",
+                       ""});
     sl.rows.push_back({"friction coefficient", "μ", num(s.slab.mu, 3), ""});
     // The wall beside the time it sets: t* = √(d/2g), so d = 2g·t*² when only t* was entered.
     const double dIn = p.wallWidthIn ? *p.wallWidthIn : 2.0 * 9.80665 * s.tstar * s.tstar / 0.0254;

@@ -7,13 +7,13 @@
 namespace kinstab::ui::report {
 
 QString modelName(const Project& p) {
-    return p.model == "planar"
+    return p.model == ModelKind::Planar
                ? QStringLiteral("planar 2-DOF slab with vertical motion (Furgerson 1980, ch. VI)")
                : QStringLiteral("1-DOF friction-held slab on walls (Furgerson 1980, ch. IV–V)");
 }
 
 void addPlanarInputs(ReportDocument& doc, const Project& p) {
-    if (p.model != "planar") return;
+    if (p.model != ModelKind::Planar) return;
     const PlanarSettings& s = p.planar;
     doc.addHeading(QStringLiteral("Planar model"), 2);
     doc.addParagraph(QStringLiteral(

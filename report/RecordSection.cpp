@@ -153,7 +153,7 @@ void addRecordSection(ReportDocument& doc, const Project& p, const ReportAnalysi
     // Every clause from what ran: the record analysis runs the 1-DOF slab with the exact solver
     // (core/sweep/RecordAnalysis refuses any other), whatever the project's model.
     const QString model =
-        p.model == "planar"
+        p.model == ModelKind::Planar
             ? QStringLiteral("the 1-DOF slab (the record analysis runs the 1-DOF model; the "
                              "project's planar model gives the enveloped-sine sections)")
             : QStringLiteral("the 1-DOF slab");

@@ -142,7 +142,7 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
     const auto t0 = std::chrono::steady_clock::now();
     ReportAnalysis a;
     const Slab1DCase& c = project.slab;
-    const bool planar = project.model == "planar";
+    const bool planar = project.model == ModelKind::Planar;
     // Every sweep, A_crit search and the check below run the project's model (docs/user-guide.md).
     const std::optional<PlanarCase> planarCase =
         planar ? std::optional(projectPlanarCase(c, project.planar)) : std::nullopt;

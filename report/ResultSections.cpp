@@ -66,9 +66,10 @@ void addSurfaceSections(ReportDocument& doc, const Project& p, const ReportAnaly
             "%6.")
             .arg(num(p.slab.slab.limit, 2), scaleLabel(p.slab.scale), num(p.slab.tauRef(), 2),
                  num(p.slab.slab.mu, 3), num(p.slab.tstar, 4), env,
-                 p.model == "planar" ? QStringLiteral("planar slab, f_y = %1 Hz, A_y/A_x = %2")
-                                           .arg(num(p.planar.fyHz, 3), num(p.planar.ayRatio, 3))
-                                     : QStringLiteral("1-DOF slab")));
+                 p.model == ModelKind::Planar
+                     ? QStringLiteral("planar slab, f_y = %1 Hz, A_y/A_x = %2")
+                           .arg(num(p.planar.fyHz, 3), num(p.planar.ayRatio, 3))
+                     : QStringLiteral("1-DOF slab")));
     const SurfaceData net = a.netSurface;
     const DesignOverlay ov = a.overlay;
     doc.addFigure(
@@ -227,7 +228,7 @@ void addReferences(ReportDocument& doc, const Project& p, const ReportAnalysis& 
     for (const CodeInfo& c : codeCatalog())
         if (isSelected(p.codes, c.id)) refs << QString::fromUtf8(c.citation);
     if (p.record && a.record) refs << recordCitation(a.record->ground, qs(p.record->file));
-    if (p.model == "planar" && p.planar.vertical != VerticalSource::None) {
+    if (p.model == ModelKind::Planar && p.planar.vertical != VerticalSource::None) {
         if (const std::optional<Accelerogram> v = readVerticalRecord(p.planar))
             refs << recordCitation(*v, p.planar.vertical == VerticalSource::Rsn68Up
                                            ? defaultVerticalRecordPath()

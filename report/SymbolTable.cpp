@@ -32,7 +32,7 @@ void addSymbolTable(ReportDocument& doc, const Project& p, const ReportAnalysis&
     t.rows.push_back(
         {"γc", gammaLabel(p.slab) + ": collapse factor, 0 where the slab stays on", "—"});
     t.rows.push_back({"α, β", "decay and rise rates of the envelope e(t)", "1/s"});
-    if (p.model == "planar")
+    if (p.model == ModelKind::Planar)
         t.rows.push_back({"f_y, A_y, Θ",
                           "frequency and amplitude along the walls; along-wall "
                           "limit (2 × length / width)",

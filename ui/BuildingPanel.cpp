@@ -54,25 +54,28 @@ BuildingPanel::BuildingPanel(QWidget* parent)
                  tr("Number of stories above the base, N. The top floor's force ratio is what "
                     "the slab on the top floor feels."));
     m_stories->setCheck([](double v) {
-        return v >= 1 && v <= 300 && v == std::floor(v)
+        return v >= 1 && v <= kMaxStories && v == std::floor(v)
                    ? QString()
-                   : tr("a whole number from 1 to 300 (got %1)").arg(v);
+                   : tr("a whole number from 1 to %1 (got %2)").arg(kMaxStories).arg(v);
     });
     m_height = addField("height", tr("&Height h_n:"), QString(),
                         tr("Height of the roof above the base, h_n. Enters the period formulas "
                            "(T = 0.05 h_n/√D) and the vertical force distribution."));
-    m_height->setCheck(rangeCheck(0, 3000, false));
+    // The limits are in the stored unit, which a loaded file may change.
+    m_height->setCheck(
+        [this](double v) { return rangeCheck(0, maxBuildingHeight(m_unit), false)(v); });
     m_dimension = addField("planDimension", tr("&Plan dimension D:"), QString(),
                            tr("Plan dimension of the building parallel to the earthquake force, D "
                               "(UBC) or L (ATC 3-06). Enters T = 0.05 h_n/√D."));
-    m_dimension->setCheck(rangeCheck(0, 10000, false));
+    m_dimension->setCheck(
+        [this](double v) { return rangeCheck(0, maxPlanDimension(m_unit), false)(v); });
     m_estimate->setToolTip(tr("Leave the period to each code's own formula instead of entering a "
                               "computed or measured fundamental period."));
     form()->addRow(QString(), m_estimate);
     m_period = addField("period", tr("&Period T:"), tr("s"),
                         tr("Fundamental period of the building. The floor motion's frequency is "
                            "taken as f = 1/T; the paper's building has T = 1.0 s."));
-    m_period->setCheck(rangeCheck(0, 20, false));
+    m_period->setCheck(rangeCheck(0, kMaxPeriodS, false));
     m_estimates->setWordWrap(true);
     form()->addRow(QString(), m_estimates);
     for (const auto& entry : systems)

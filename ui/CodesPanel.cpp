@@ -75,19 +75,19 @@ void CodesPanel::buildUbc1976() {
         field(f, "ubc76K", tr("K:"), QString(),
               tr("Horizontal force factor (Table 23-I): 0.67 ductile frame, 0.80 dual system "
                  "(the paper), 1.00 other, 1.33 box system."));
-    m_ubc76K->setCheck(rangeCheck(0.5, 3.0));
+    m_ubc76K->setCheck(rangeCheck(kUbc1976K));
     m_ubc76I =
         field(f, "ubc76I", tr("I:"), QString(),
               tr("Occupancy importance factor (Table 23-K): 1.5 essential, 1.25 assembly, 1.0 "
                  "otherwise. Leave empty to take it from the occupancy."));
     m_ubc76I->setOptional(fromOccupancy());
-    m_ubc76I->setCheck(rangeCheck(1.0, 1.5));
+    m_ubc76I->setCheck(rangeCheck(kUbc1976Importance));
     m_ubc76Ts =
         field(f, "ubc76Ts", tr("Site period T_s:"), tr("s"),
               tr("Characteristic site period for the resonance coefficient S. Leave empty when "
                  "not established: S = 1.5."));
     m_ubc76Ts->setOptional(tr("not established (S = 1.5)"));
-    m_ubc76Ts->setCheck(rangeCheck(0.5, 2.5));
+    m_ubc76Ts->setCheck(rangeCheck(kUbc1976SitePeriod));
 }
 
 void CodesPanel::buildAtc306() {
@@ -101,7 +101,7 @@ void CodesPanel::buildAtc306() {
     m_atcAv = field(f, "atcAv", tr("A_v:"), tr("g"),
                     tr("Effective peak velocity-related acceleration coefficient."));
     for (NumberField* n : {m_atcAa, m_atcAv})
-        n->setCheck(rangeCheck(0, 1));
+        n->setCheck(rangeCheck(kAtc306Acceleration));
     m_atcSoil =
         combo(f, tr("Soil:"),
               {tr("S1 rock / stiff < 200 ft"), tr("S2 deep stiff"), tr("S3 soft clay ≥ 30 ft")},
@@ -109,7 +109,7 @@ void CodesPanel::buildAtc306() {
     m_atcR =
         field(f, "atcR", tr("R:"), QString(),
               tr("Response modification factor (Table 3-B); 5.5 for the paper's dual system."));
-    m_atcR->setCheck(rangeCheck(1, 10));
+    m_atcR->setCheck(rangeCheck(kAtc306R));
     connect(m_atcArea, &QComboBox::currentIndexChanged, this, [this](int i) {
         m_atcAa->setEnabled(i == 0);
         m_atcAv->setEnabled(i == 0);
@@ -128,14 +128,14 @@ void CodesPanel::buildUbc1997() {
         field(f, "ubc97Na", tr("N_a:"), QString(), tr("Near-source factor on C_a (zone 4)."));
     m_ubc97Nv =
         field(f, "ubc97Nv", tr("N_v:"), QString(), tr("Near-source factor on C_v (zone 4)."));
-    for (NumberField* n : {m_ubc97Na, m_ubc97Nv})
-        n->setCheck(rangeCheck(1, 2));
+    m_ubc97Na->setCheck(rangeCheck(kUbc1997Na));
+    m_ubc97Nv->setCheck(rangeCheck(kUbc1997Nv));
     m_ubc97I = field(f, "ubc97I", tr("I:"), QString(), tr("Importance factor (Table 16-K)."));
     m_ubc97I->setOptional(fromOccupancy());
-    m_ubc97I->setCheck(rangeCheck(1, 1.5));
+    m_ubc97I->setCheck(rangeCheck(kUbc1997Importance));
     m_ubc97R =
         field(f, "ubc97R", tr("R:"), QString(), tr("Response modification factor (Table 16-N)."));
-    m_ubc97R->setCheck(rangeCheck(1, 10));
+    m_ubc97R->setCheck(rangeCheck(kUbc1997R));
 }
 
 void CodesPanel::buildAsce7() {
@@ -147,14 +147,14 @@ void CodesPanel::buildAsce7() {
     m_asceSd1 =
         field(f, "asceSd1", tr("S_D1:"), tr("g"), tr("Design spectral acceleration at 1 s."));
     for (NumberField* n : {m_asceSds, m_asceSd1})
-        n->setCheck(rangeCheck(0, 5, false));
+        n->setCheck(rangeCheck(kAsce7Sd));
     m_asceS1 = field(f, "asceS1", tr("S_1:"), tr("g"),
                      tr("MCE_R acceleration at 1 s; only for the 0.5 S_1 floor."));
     m_asceS1->setOptional(tr("not given"));
-    m_asceS1->setCheck(rangeCheck(0, 5));
+    m_asceS1->setCheck(rangeCheck(kAsce7S1));
     m_asceTl = field(f, "asceTl", tr("T_L:"), tr("s"),
                      tr("Long-period transition period (Fig. 22-14 … 22-17)."));
-    m_asceTl->setCheck(rangeCheck(1, 20));
+    m_asceTl->setCheck(rangeCheck(kAsce7Tl));
     m_asceSite =
         combo(f, tr("Site class:"), {"A", "B", "BC", "C", "CD", "D", "DE", "E", "F", "Default"},
               tr("Site class (§20.3); S_DS and S_D1 already include it."));
@@ -163,10 +163,10 @@ void CodesPanel::buildAsce7() {
     m_asceI =
         field(f, "asceI", tr("I_e:"), QString(), tr("Seismic importance factor (Table 1.5-2)."));
     m_asceI->setOptional(tr("from the risk category"));
-    m_asceI->setCheck(rangeCheck(1, 1.5));
+    m_asceI->setCheck(rangeCheck(kAsce7Importance));
     m_asceR = field(f, "asceR", tr("R:"), QString(),
                     tr("Response modification coefficient (Table 12.2-1)."));
-    m_asceR->setCheck(rangeCheck(1, 10));
+    m_asceR->setCheck(rangeCheck(kAsce7R));
 }
 
 void CodesPanel::buildEc8() {
@@ -178,19 +178,19 @@ void CodesPanel::buildEc8() {
                       tr("Elastic spectrum type (§3.2.2.2)."));
     m_ec8Agr = field(f, "ec8Agr", tr("a_gR:"), tr("g"),
                      tr("Reference peak ground acceleration on ground type A."));
-    m_ec8Agr->setCheck(rangeCheck(0, 2, false));
+    m_ec8Agr->setCheck(rangeCheck(kEc8Agr));
     m_ec8Class = combo(f, tr("Importance class:"), QStringList{fromOccupancy()} + romans,
                        tr("Importance class (Table 4.3)."));
     m_ec8GammaI = field(f, "ec8GammaI", tr("γ_I:"), QString(),
                         tr("Importance factor; empty: the class's recommended value."));
     m_ec8GammaI->setOptional(tr("recommended for the class"));
-    m_ec8GammaI->setCheck(rangeCheck(0.5, 2));
+    m_ec8GammaI->setCheck(rangeCheck(kEc8GammaI));
     m_ec8Q = field(f, "ec8Q", tr("q:"), QString(),
                    tr("Behaviour factor (§5.2.2.2); 3.9 for a DCM frame or dual system."));
-    m_ec8Q->setCheck(rangeCheck(1, 10));
+    m_ec8Q->setCheck(rangeCheck(kEc8Q));
     m_ec8Beta = field(f, "ec8Beta", tr("β:"), QString(),
                       tr("Lower-bound factor of the design spectrum (0.2 recommended)."));
-    m_ec8Beta->setCheck(rangeCheck(0, 1));
+    m_ec8Beta->setCheck(rangeCheck(kEc8Beta));
     m_ec8Regular = new QCheckBox(tr("Regular in elevation"), this);
     m_ec8Regular->setToolTip(tr("The lateral force method requires it (§4.3.3.2.1)."));
     f->addRow(QString(), m_ec8Regular);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/GridPanel.h"
 
+#include "core/base/InputLimits.h"
+#include "core/excitation/FrequencyRange.h"
 #include "ui/NumberField.h"
 
 #include <QFormLayout>
@@ -24,19 +26,20 @@ GridPanel::GridPanel(QWidget* parent) : InputPanel(parent), m_count(new QLabel(t
     m_fTo = addField("fTo", tr("f to:"), tr("Hz"), fTip);
     m_fStep = addField("fStep", tr("f step:"), tr("Hz"), tr("Spacing of the frequency grid."));
     form()->addRow(m_count);
-    m_aFrom->setCheck(rangeCheck(0, 100));
+    m_aFrom->setCheck(rangeCheck(0, limits::kMaxAmplitudeG));
     m_aTo->setCheck([this](double v) {
         const auto from = m_aFrom->value();
-        if (v > 100) return tr("must be ≤ 100 g (got %1)").arg(v);
+        if (v > limits::kMaxAmplitudeG)
+            return tr("must be ≤ %1 g (got %2)").arg(limits::kMaxAmplitudeG).arg(v);
         return from && v < *from ? tr("must be ≥ A from (%1)").arg(*from) : QString();
     });
     m_aStep->setCheck([this](double v) {
         return rangeProblem(m_aFrom->value().value_or(0), m_aTo->value().value_or(0), v, tr("A"));
     });
-    m_fFrom->setCheck(rangeCheck(0, 100, false));
+    m_fFrom->setCheck(rangeCheck(kMinFrequencyHz, kMaxFrequencyHz));
     m_fTo->setCheck([this](double v) {
         const auto from = m_fFrom->value();
-        if (v > 100) return tr("must be ≤ 100 Hz (got %1)").arg(v);
+        if (v > kMaxFrequencyHz) return tr("must be ≤ %1 Hz (got %2)").arg(kMaxFrequencyHz).arg(v);
         return from && v < *from ? tr("must be ≥ f from (%1)").arg(*from) : QString();
     });
     m_fStep->setCheck([this](double v) {

@@ -2,6 +2,7 @@
 #include "ui/ModelPanel.h"
 
 #include "core/excitation/FrequencyRange.h"
+#include "core/slab/SlabLimits.h"
 #include "report/PlanarVertical.h"
 #include "ui/NumberField.h"
 #include "ui/RecordPreview.h"
@@ -46,7 +47,7 @@ ModelPanel::ModelPanel(QWidget* parent)
     connect(m_normalization, &QComboBox::currentIndexChanged, this, &InputPanel::changed);
     connect(m_path, &QLineEdit::editingFinished, this, &ModelPanel::checkVerticalFile);
     connect(m_browse, &QPushButton::clicked, this, &ModelPanel::browse);
-    load(modelKindName(ModelKind::Slab1D), PlanarSettings{});
+    load(ModelKind::Slab1D, PlanarSettings{});
 }
 
 void ModelPanel::buildPlanarRows() {
@@ -57,11 +58,11 @@ void ModelPanel::buildPlanarRows() {
     m_ratio = addField("ayRatio", tr("A_y / A_x:"), QString(),
                        tr("Amplitude along the walls over the amplitude across them. The paper "
                           "takes 0.9, Pacoima Dam's ratio of horizontal peaks."));
-    m_ratio->setCheck(rangeCheck(0, 100));
+    m_ratio->setCheck(rangeCheck(kAyRatioRange));
     m_theta = addField("theta", tr("Θ (along):"), QString(),
                        tr("Along-wall limit: the slab falls when its slip along the walls exceeds "
                           "Θ = 2 wall length / wall width (half-widths). Default 20."));
-    m_theta->setCheck(rangeCheck(0, 1e6, false));
+    m_theta->setCheck(rangeCheck(kSlipLimitRange));
     m_normalization->addItem(tr("product (e × sine)"));
     m_normalization->addItem(tr("envelope (ch. VI)"));
     m_normalization->setToolTip(
@@ -152,8 +153,8 @@ bool ModelPanel::isPlanar() const {
     return m_model->currentIndex() == 1;
 }
 
-std::string ModelPanel::model() const {
-    return modelKindName(isPlanar() ? ModelKind::Planar : ModelKind::Slab1D);
+ModelKind ModelPanel::model() const {
+    return isPlanar() ? ModelKind::Planar : ModelKind::Slab1D;
 }
 
 PlanarSettings ModelPanel::settings() const {
@@ -168,11 +169,11 @@ PlanarSettings ModelPanel::settings() const {
     return s;
 }
 
-void ModelPanel::load(const std::string& model, const PlanarSettings& s) {
+void ModelPanel::load(ModelKind model, const PlanarSettings& s) {
     m_loaded = s;
     {
         const QSignalBlocker block(this); // one changed() at the end
-        m_model->setCurrentIndex(modelKindFromName(model) == ModelKind::Planar ? 1 : 0);
+        m_model->setCurrentIndex(model == ModelKind::Planar ? 1 : 0);
         m_fy->setValue(s.fyHz);
         m_ratio->setValue(s.ayRatio);
         m_theta->setValue(s.theta);

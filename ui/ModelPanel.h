@@ -26,10 +26,10 @@ public:
     explicit ModelPanel(QWidget* parent = nullptr);
 
     bool isPlanar() const;
-    std::string model() const; // modelKindName (core/base/ModelKind.h)
+    ModelKind model() const;
     // The planar settings shown (valid fields only; the others keep their last loaded value).
     PlanarSettings settings() const;
-    void load(const std::string& model, const PlanarSettings& s);
+    void load(ModelKind model, const PlanarSettings& s);
 
     // For tests: the vertical record's path field and its message.
     QLineEdit* verticalPathEdit() const { return m_path; }

@@ -173,4 +173,8 @@ NumberField::Check rangeCheck(double lo, double hi, bool loInclusive) {
     };
 }
 
+NumberField::Check rangeCheck(Range r) {
+    return rangeCheck(r.lo, r.hi, !r.loOpen);
+}
+
 } // namespace kinstab::ui

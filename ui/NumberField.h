@@ -3,6 +3,7 @@
 // A number input with its check: the reason it is invalid is shown beside the field, so the
 // engineer sees what to fix without pressing Run first.
 
+#include "core/base/Range.h"
 #include "ui/Units.h"
 
 #include <QWidget>
@@ -73,5 +74,6 @@ private:
 // Common checks, with the reason phrased for the engineer.
 NumberField::Check positiveCheck();
 NumberField::Check rangeCheck(double lo, double hi, bool loInclusive = true);
+NumberField::Check rangeCheck(Range r); // a range a validator in core checks
 
 } // namespace kinstab::ui

@@ -68,8 +68,9 @@ Building buildingFromFlags(const Args& args) {
     Building b;
     b.stories = args.integer("stories", 0);
     if (!args.has("stories")) throw UsageError("missing required flag --stories");
-    if (b.stories < 1 || b.stories > 300)
-        throw UsageError("--stories " + args.text("stories") + ": must be between 1 and 300");
+    if (b.stories < 1 || b.stories > kMaxStories)
+        throw UsageError("--stories " + args.text("stories") + ": must be between 1 and " +
+                         std::to_string(kMaxStories));
     if (args.has("height-ft") == args.has("height-m"))
         throw UsageError("give exactly one of --height-ft and --height-m");
     if (args.has("dimension-ft") == args.has("dimension-m"))

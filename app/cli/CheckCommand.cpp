@@ -29,7 +29,7 @@ AnalysisRequest checkRequest(const Project& p, const std::vector<CodeResult>& co
 // The model the sine's check runs: the 1-DOF slab (none), or the planar slab of Furgerson 1980
 // ch. VI with the project's planar settings and its vertical record read. Throws InputError.
 std::optional<PlanarCase> planarModel(const Project& p) {
-    if (modelKindFromName(p.model) != ModelKind::Planar) return std::nullopt;
+    if (p.model != ModelKind::Planar) return std::nullopt;
     return ui::projectPlanarCase(p.slab, p.planar);
 }
 
@@ -77,9 +77,9 @@ int runCheck(const ArgList& argv) {
     const Project p = projectFromFlag(args);
     if (p.codes.empty())
         throw UsageError("--project " + args.text("project") + ": the project selects no code");
-    if (modelKindFromName(p.model) != ModelKind::Slab1D && p.record)
-        throw UsageError("--project " + args.text("project") + ": model '" + p.model +
-                         "': the check against a record uses the " +
+    if (p.model != ModelKind::Slab1D && p.record)
+        throw UsageError("--project " + args.text("project") + ": model '" +
+                         modelKindName(p.model) + "': the check against a record uses the " +
                          modelKindName(ModelKind::Slab1D) + " model");
     const auto start = std::chrono::steady_clock::now();
     nlohmann::json j;

@@ -14,12 +14,12 @@ std::vector<std::string> asceSiteClassNames() {
 
 std::string validateAsce7(const Asce7Inputs& in) {
     try {
-        requireAbove("asce7_22.sds", in.sds, 0.0, 5.0, "g");
-        requireAbove("asce7_22.sd1", in.sd1, 0.0, 5.0, "g");
-        if (in.s1) requireRange("asce7_22.s1", *in.s1, 0.0, 5.0, "g");
-        requireAbove("asce7_22.tl", in.tl, 0.0, 20.0, "s");
-        if (in.importance) requireRange("asce7_22.importance", *in.importance, 1.0, 1.5);
-        requireRange("asce7_22.r", in.r, 1.0, 10.0);
+        requireIn("asce7_22.sds", in.sds, kAsce7Sd, "g");
+        requireIn("asce7_22.sd1", in.sd1, kAsce7Sd, "g");
+        if (in.s1) requireIn("asce7_22.s1", *in.s1, kAsce7S1, "g");
+        requireIn("asce7_22.tl", in.tl, kAsce7Tl, "s");
+        if (in.importance) requireIn("asce7_22.importance", *in.importance, kAsce7Importance);
+        requireIn("asce7_22.r", in.r, kAsce7R);
     } catch (const InputError& e) {
         return e.what();
     }

@@ -24,6 +24,13 @@ struct Asce7Inputs {
     double r = 6.0;                   // response modification coefficient R (Table 12.2-1)
 };
 
+// Ranges the validator checks and the codes panel offers.
+inline constexpr Range kAsce7Sd{0.0, 5.0, true};   // S_DS and S_D1, g
+inline constexpr Range kAsce7S1{0.0, 5.0};         // S_1, g
+inline constexpr Range kAsce7Tl{0.0, 20.0, true};  // T_L, s
+inline constexpr Range kAsce7Importance{1.0, 1.5}; // I_e, Table 1.5-2
+inline constexpr Range kAsce7R{1.0, 10.0};         // R, Table 12.2-1
+
 std::string validateAsce7(const Asce7Inputs& in); // empty when fine
 
 int asceRiskCategory(Occupancy o);

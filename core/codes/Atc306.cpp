@@ -17,10 +17,10 @@ std::string validateAtc306(const Atc306Inputs& in) {
     }
     try {
         if (!in.mapArea) {
-            requireAbove("atc306.aa", in.aa, 0.0, 1.0, "g");
-            requireAbove("atc306.av", in.av, 0.0, 1.0, "g");
+            requireIn("atc306.aa", in.aa, kAtc306Acceleration, "g");
+            requireIn("atc306.av", in.av, kAtc306Acceleration, "g");
         }
-        requireRange("atc306.r", in.r, 1.0, 10.0);
+        requireIn("atc306.r", in.r, kAtc306R);
     } catch (const InputError& e) {
         return e.what();
     }

@@ -21,6 +21,10 @@ struct Atc306Inputs {
     double r = 5.5;             // response modification factor R (Table 3-B)
 };
 
+// Ranges the validator checks and the codes panel offers.
+inline constexpr Range kAtc306Acceleration{0.0, 1.0, true}; // A_a and A_v, g
+inline constexpr Range kAtc306R{1.0, 10.0};                 // R, Table 3-B
+
 std::string validateAtc306(const Atc306Inputs& in); // empty when fine
 
 double atcMapAreaCoefficient(int mapArea); // Table 1-B

@@ -33,16 +33,15 @@ std::string checkVector(const std::string& field, const std::vector<double>& v, 
 
 std::string validateBuilding(const Building& b) {
     std::ostringstream s;
-    if (b.stories < 1 || b.stories > 300) {
-        s << "building.stories = " << b.stories << ": must be between 1 and 300";
+    if (b.stories < 1 || b.stories > kMaxStories) {
+        s << "building.stories = " << b.stories << ": must be between 1 and " << kMaxStories;
         return s.str();
     }
     try {
-        requireAbove("building.height", b.height, 0.0, b.unit == LengthUnit::Feet ? 3000.0 : 1000.0,
+        requireAbove("building.height", b.height, 0.0, maxBuildingHeight(b.unit), unitName(b.unit));
+        requireAbove("building.plan_dimension", b.planDimension, 0.0, maxPlanDimension(b.unit),
                      unitName(b.unit));
-        requireAbove("building.plan_dimension", b.planDimension, 0.0,
-                     b.unit == LengthUnit::Feet ? 10000.0 : 3000.0, unitName(b.unit));
-        if (b.period) requireAbove("building.period_s", *b.period, 0.0, 20.0, "s");
+        if (b.period) requireAbove("building.period_s", *b.period, 0.0, kMaxPeriodS, "s");
     } catch (const InputError& e) {
         return e.what();
     }
@@ -63,6 +62,13 @@ std::string validateBuilding(const Building& b) {
 void requireValidBuilding(const Building& b) {
     const std::string e = validateBuilding(b);
     if (!e.empty()) throw InputError(e);
+}
+
+double maxBuildingHeight(LengthUnit u) {
+    return u == LengthUnit::Feet ? 3000.0 : 1000.0;
+}
+double maxPlanDimension(LengthUnit u) {
+    return u == LengthUnit::Feet ? 10000.0 : 3000.0;
 }
 
 double metresPerUnit(LengthUnit u) {

@@ -48,6 +48,14 @@ struct Building {
     std::vector<double> storyHeights; // bottom first, in `unit`, summing to height; empty: equal
 };
 
+// Limits validateBuilding enforces, read also by the building panel. 300 stories and 3000 ft
+// (1000 m) are well beyond the tallest building; a plan of 10,000 ft (3000 m) is no building;
+// a fundamental period of 20 s is beyond any code's spectrum.
+inline constexpr int kMaxStories = 300;
+inline constexpr double kMaxPeriodS = 20.0;
+double maxBuildingHeight(LengthUnit u); // in u
+double maxPlanDimension(LengthUnit u);  // in u
+
 std::string validateBuilding(const Building& b); // empty when fine
 void requireValidBuilding(const Building& b);    // throws InputError
 

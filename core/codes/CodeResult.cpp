@@ -72,4 +72,11 @@ void requireAbove(const std::string& field, double x, double lo, double hi,
         fail(field, x, "> " + num(lo) + " and at most " + num(hi), unit);
 }
 
+void requireIn(const std::string& field, double x, Range r, const std::string& unit) {
+    if (r.loOpen)
+        requireAbove(field, x, r.lo, r.hi, unit);
+    else
+        requireRange(field, x, r.lo, r.hi, unit);
+}
+
 } // namespace kinstab

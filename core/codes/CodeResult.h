@@ -3,6 +3,7 @@
 // What every code module returns (docs/theory.md §9): base shear coefficient, story forces, the
 // top-floor ratio F_top / w_top and the trail of every coefficient used, with its clause.
 
+#include "core/base/Range.h"
 #include "core/codes/Building.h"
 #include "core/codes/CodeCatalog.h"
 
@@ -61,5 +62,7 @@ void requireRange(const std::string& field, double x, double lo, double hi,
 // Same with an open lower bound: lo < x <= hi.
 void requireAbove(const std::string& field, double x, double lo, double hi,
                   const std::string& unit = {});
+// requireRange or requireAbove, as the range's lower bound is closed or open.
+void requireIn(const std::string& field, double x, Range r, const std::string& unit = {});
 
 } // namespace kinstab

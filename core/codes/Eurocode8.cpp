@@ -23,10 +23,10 @@ std::string validateEurocode8(const Eurocode8Inputs& in) {
         return s.str();
     }
     try {
-        requireAbove("ec8.agr", in.agr, 0.0, 2.0, "g");
-        if (in.gammaI) requireRange("ec8.gamma_i", *in.gammaI, 0.5, 2.0);
-        requireRange("ec8.q", in.q, 1.0, 8.0);
-        requireRange("ec8.beta", in.beta, 0.0, 1.0);
+        requireIn("ec8.agr", in.agr, kEc8Agr, "g");
+        if (in.gammaI) requireIn("ec8.gamma_i", *in.gammaI, kEc8GammaI);
+        requireIn("ec8.q", in.q, kEc8Q);
+        requireIn("ec8.beta", in.beta, kEc8Beta);
     } catch (const InputError& e) {
         return e.what();
     }

@@ -28,6 +28,12 @@ struct Ec8SpectrumParameters {
     double s = 1, tb = 0, tc = 0, td = 0;
 };
 
+// Ranges the validator checks and the codes panel offers.
+inline constexpr Range kEc8Agr{0.0, 2.0, true}; // a_gR, g
+inline constexpr Range kEc8GammaI{0.5, 2.0};    // γ_I
+inline constexpr Range kEc8Q{1.0, 8.0};         // q
+inline constexpr Range kEc8Beta{0.0, 1.0};      // β
+
 std::string validateEurocode8(const Eurocode8Inputs& in); // empty when fine
 
 std::string ec8GroundName(Ec8Ground g); // "A" … "E"

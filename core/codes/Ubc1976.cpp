@@ -15,9 +15,10 @@ std::string validateUbc1976(const Ubc1976Inputs& in) {
         return s.str();
     }
     try {
-        if (in.importance) requireRange("ubc1976.importance", *in.importance, 1.0, 1.5);
-        requireRange("ubc1976.k", in.k, 0.67, 2.5);
-        if (in.sitePeriod) requireAbove("ubc1976.site_period_s", *in.sitePeriod, 0.0, 10.0, "s");
+        if (in.importance) requireIn("ubc1976.importance", *in.importance, kUbc1976Importance);
+        requireIn("ubc1976.k", in.k, kUbc1976K);
+        if (in.sitePeriod)
+            requireIn("ubc1976.site_period_s", *in.sitePeriod, kUbc1976SitePeriod, "s");
     } catch (const InputError& e) {
         return e.what();
     }

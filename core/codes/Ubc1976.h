@@ -18,6 +18,11 @@ struct Ubc1976Inputs {
     std::optional<double> sitePeriod; // T_s, s; nullopt: not established, S = 1.5
 };
 
+// Ranges the validator checks and the codes panel offers.
+inline constexpr Range kUbc1976Importance{1.0, 1.5};        // I, Table 23-K
+inline constexpr Range kUbc1976K{0.67, 2.5};                // K, Table 23-I
+inline constexpr Range kUbc1976SitePeriod{0.0, 10.0, true}; // T_s, s
+
 std::string validateUbc1976(const Ubc1976Inputs& in); // empty when fine
 
 double ubc1976ZoneFactor(int zone);             // Z: 0, 3/16, 3/8, 3/4, 1

@@ -18,10 +18,10 @@ const char* const kSoilNames[] = {"SA", "SB", "SC", "SD", "SE"};
 
 std::string validateUbc1997(const Ubc1997Inputs& in) {
     try {
-        requireRange("ubc1997.na", in.na, 1.0, 1.5);
-        requireRange("ubc1997.nv", in.nv, 1.0, 2.0);
-        if (in.importance) requireRange("ubc1997.importance", *in.importance, 1.0, 1.25);
-        requireRange("ubc1997.r", in.r, 1.0, 10.0);
+        requireIn("ubc1997.na", in.na, kUbc1997Na);
+        requireIn("ubc1997.nv", in.nv, kUbc1997Nv);
+        if (in.importance) requireIn("ubc1997.importance", *in.importance, kUbc1997Importance);
+        requireIn("ubc1997.r", in.r, kUbc1997R);
     } catch (const InputError& e) {
         return e.what();
     }

@@ -23,6 +23,12 @@ struct Ubc1997Inputs {
     double r = 8.5;                   // R (Table 16-N)
 };
 
+// Ranges the validator checks and the codes panel offers.
+inline constexpr Range kUbc1997Na{1.0, 1.5};          // N_a, Table 16-S
+inline constexpr Range kUbc1997Nv{1.0, 2.0};          // N_v, Table 16-T
+inline constexpr Range kUbc1997Importance{1.0, 1.25}; // I, Table 16-K
+inline constexpr Range kUbc1997R{1.0, 10.0};          // R, Table 16-N
+
 std::string validateUbc1997(const Ubc1997Inputs& in); // empty when fine
 
 double ubc97ZoneFactor(Ubc97Zone z);

@@ -154,8 +154,8 @@ std::string validateEnvelope(double alpha, double beta) {
         s << "alpha = " << alpha << " 1/s: must be a finite number >= 0";
     else if (!std::isfinite(beta) || beta <= alpha)
         s << "beta = " << beta << " 1/s: must be finite and greater than alpha = " << alpha;
-    else if (beta > 1e4)
-        s << "beta = " << beta << " 1/s: must be at most 1e4";
+    else if (beta > kMaxEnvelopeRate)
+        s << "beta = " << beta << " 1/s: must be at most " << kMaxEnvelopeRate;
     return s.str();
 }
 

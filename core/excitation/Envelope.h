@@ -41,6 +41,10 @@ std::string presetName(EnvelopePreset p);
 std::optional<TauScale> tauScaleFromName(const std::string& name);
 std::string tauScaleName(TauScale s);
 
+// Largest β (and so α < β) of an envelope, 1/s: a rise time of 0.1 ms is no earthquake's.
+// validateEnvelope and the excitation panel read it.
+inline constexpr double kMaxEnvelopeRate = 1e4;
+
 // Validates alpha/beta; returns an error message naming the bad value, or empty.
 std::string validateEnvelope(double alpha, double beta);
 

@@ -48,8 +48,6 @@ std::string validateProject(const Project& p) {
                " characters, more than the limit of " +
                std::to_string(limits::kMaxDescriptionChars);
     if (std::string e = validateProjectInfo(p.info); !e.empty()) return e;
-    if (!modelKindFromName(p.model))
-        return "model = " + quotedToken(p.model) + ": must be " + modelKindChoices();
     std::string e = validateBuilding(p.building);
     if (e.empty()) e = validateCodes(p.codes);
     if (e.empty() && !(e = validateCase(p.slab)).empty()) e = "slab: " + e;
@@ -172,7 +170,7 @@ json projectToJson(const Project& p, const std::string& baseDir) {
               {"codes", codesToJson(p.codes)},
               {"slab", slabToJson(p)},
               {"grid", {{"amplitudes", p.grid.amplitudes}, {"frequencies", p.grid.frequencies}}},
-              {"model", p.model},
+              {"model", modelKindName(p.model)},
               {"planar", planarSettingsToJson(p.planar, baseDir)},
               {"check", checkToJson(p.critical)},
               {"excitation", excitationToJson(p.record, baseDir)},
@@ -197,7 +195,11 @@ Project projectFromJson(const json& j, const std::string& baseDir) {
             p.grid.amplitudes = g->numbers("amplitudes");
             p.grid.frequencies = g->numbers("frequencies");
         }
-        p.model = r.text("model", modelKindName(ModelKind::Slab1D));
+        const std::string model = r.text("model", modelKindName(ModelKind::Slab1D));
+        const std::optional<ModelKind> kind = modelKindFromName(model);
+        if (!kind)
+            throw ProjectError("model = " + quotedToken(model) + ": must be " + modelKindChoices());
+        p.model = *kind;
         // Projects written before the planar model have no "planar" key: defaults.
         if (auto pl = r.optionalObject("planar")) p.planar = planarSettingsFromJson(*pl, baseDir);
         if (auto c = r.optionalObject("check")) p.critical = checkFrom(*c);

@@ -39,10 +39,10 @@ struct Project {
     ProjectInfo info; // engineer, firm, client, revisions: the report's title and signature blocks
     Building building;
     CodeSelection codes;
-    Slab1DCase slab;                   // envelope, t*, mu, limit, solver, scale
-    std::optional<double> wallWidthIn; // set when t* comes from the wall width d (inches)
-    SweepGrid grid;                    // A (g) and f (Hz) of the γc surface
-    std::string model = modelKindName(ModelKind::Slab1D); // core/base/ModelKind.h
+    Slab1DCase slab;                        // envelope, t*, mu, limit, solver, scale
+    std::optional<double> wallWidthIn;      // set when t* comes from the wall width d (inches)
+    SweepGrid grid;                         // A (g) and f (Hz) of the γc surface
+    ModelKind model = ModelKind::Slab1D;    // written by its name (core/base/ModelKind.h)
     PlanarSettings planar;                  // the planar model's own inputs (core/io/PlanarJson.h)
     CriticalSearch critical;                // A_crit search of the design check
     std::optional<RecordExcitation> record; // a record drives the slab; none: the enveloped sine

@@ -2,6 +2,8 @@
 #include "core/slab/PlanarCase.h"
 
 #include "core/excitation/EnvelopedSine.h"
+#include "core/excitation/FrequencyRange.h"
+#include "core/slab/SlabLimits.h"
 
 #include <cmath>
 #include <sstream>
@@ -23,12 +25,13 @@ std::string validatePlanarCase(const PlanarCase& c) {
     if (e.empty()) e = validatePlanarParams(c.slab);
     if (!e.empty()) return e;
     std::ostringstream s;
-    if (!std::isfinite(c.tstar) || c.tstar <= 0.0 || c.tstar > 100.0)
-        s << "tstar = " << c.tstar << " s: must be > 0 and at most 100";
-    else if (!std::isfinite(c.ayRatio) || c.ayRatio < 0.0 || c.ayRatio > 100.0)
-        s << "ay ratio = " << c.ayRatio << ": A_y / A_x must be between 0 and 100";
-    else if (!std::isfinite(c.fyHz) || c.fyHz <= 0.0 || c.fyHz > 1000.0)
-        s << "fy = " << c.fyHz << " Hz: must be > 0 and at most 1000";
+    if (!kTstarRange.contains(c.tstar))
+        s << "tstar = " << c.tstar << " s: must be > 0 and at most " << kTstarRange.hi;
+    else if (!kAyRatioRange.contains(c.ayRatio))
+        s << "ay ratio = " << c.ayRatio << ": A_y / A_x must be between " << kAyRatioRange.lo
+          << " and " << kAyRatioRange.hi;
+    else if (!std::isfinite(c.fyHz) || c.fyHz <= 0.0 || c.fyHz > kMaxFrequencyHz)
+        s << "fy = " << c.fyHz << " Hz: must be > 0 and at most " << kMaxFrequencyHz;
     else if (!(c.solver.relTol >= 1e-14 && c.solver.relTol <= 1e-2))
         s << "relative tolerance = " << c.solver.relTol << ": must be between 1e-14 and 1e-2";
     else if (!(c.solver.absTol > 0.0 && c.solver.absTol <= 1e-2))

@@ -5,6 +5,7 @@
 #include "core/excitation/EnvelopedSine.h"
 #include "core/slab/ExactSolver.h"
 #include "core/slab/FiniteResult.h"
+#include "core/slab/SlabLimits.h"
 
 #include <cmath>
 #include <numbers>
@@ -29,8 +30,8 @@ std::string validateCase(const Slab1DCase& c) {
     e = validateSlabParams(c.slab);
     if (!e.empty()) return e;
     std::ostringstream s;
-    if (!std::isfinite(c.tstar) || c.tstar <= 0.0 || c.tstar > 100.0)
-        s << "tstar = " << c.tstar << " s: must be > 0 and at most 100";
+    if (!kTstarRange.contains(c.tstar))
+        s << "tstar = " << c.tstar << " s: must be > 0 and at most " << kTstarRange.hi;
     else if (!std::isfinite(c.paperStepsPerPeriod) || c.paperStepsPerPeriod < 4.0 ||
              c.paperStepsPerPeriod > 1e6)
         s << "paper steps per period = " << c.paperStepsPerPeriod << ": must be between 4 and 1e6";

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/SlabModel2D.h"
 
+#include "core/slab/SlabLimits.h"
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -11,7 +12,7 @@ std::string validatePlanarParams(const PlanarParams& p) {
     std::string e = validateSlabParams(p);
     if (!e.empty()) return e;
     std::ostringstream s;
-    if (!std::isfinite(p.theta) || p.theta <= 0.0 || p.theta > 1e6)
+    if (!kSlipLimitRange.contains(p.theta))
         s << "theta = " << p.theta << ": along-wall limit (2 wall length / wall width) must be > 0";
     return s.str();
 }

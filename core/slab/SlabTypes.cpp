@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/SlabTypes.h"
+#include "core/slab/SlabLimits.h"
 
 #include <cmath>
 #include <sstream>
@@ -54,9 +55,10 @@ std::string eventKindName(EventKind k) {
 
 std::string validateSlabParams(const SlabParams& p) {
     std::ostringstream s;
-    if (!std::isfinite(p.mu) || p.mu < 0.0 || p.mu > 10.0)
-        s << "mu = " << p.mu << ": friction coefficient must be between 0 and 10";
-    else if (!std::isfinite(p.limit) || p.limit <= 0.0 || p.limit > 1e6)
+    if (!kMuRange.contains(p.mu))
+        s << "mu = " << p.mu << ": friction coefficient must be between " << kMuRange.lo << " and "
+          << kMuRange.hi;
+    else if (!kSlipLimitRange.contains(p.limit))
         s << "limit = " << p.limit << ": bearing limit (bearing / (d/2)) must be > 0";
     else if (p.duration && (!std::isfinite(*p.duration) || *p.duration <= 0.0))
         s << "duration = " << *p.duration << ": tau_out must be a positive number";

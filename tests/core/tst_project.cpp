@@ -45,7 +45,7 @@ Project everyField() {
     p.slab.scale = TauScale::TauRise;
     p.grid.amplitudes = {0.6, 0.8};
     p.grid.frequencies = {0.25, 3.0, 7.5};
-    p.model = "planar";
+    p.model = ModelKind::Planar;
     p.critical = CriticalSearch{0.5, 3.0, 0.02, 1e-5};
     return p;
 }
@@ -130,7 +130,7 @@ private slots:
         QVERIFY(b.slab.scale == TauScale::TauRise);
         QCOMPARE(b.grid.amplitudes, a.grid.amplitudes);
         QCOMPARE(b.grid.frequencies, a.grid.frequencies);
-        QCOMPARE(b.model, std::string("planar"));
+        QVERIFY(b.model == ModelKind::Planar);
         QCOMPARE(b.critical.from, 0.5);
         QCOMPARE(b.critical.to, 3.0);
         QCOMPARE(b.critical.scanStep, 0.02);

@@ -49,7 +49,7 @@ private slots:
     void roundTrip() {
         QFETCH(int, vertical);
         Project p = paperExampleProject();
-        p.model = "planar";
+        p.model = ModelKind::Planar;
         p.planar.fyHz = 2.5;
         p.planar.ayRatio = 0.45;
         p.planar.theta = 12.0;
@@ -57,7 +57,7 @@ private slots:
         p.planar.vertical = static_cast<VerticalSource>(vertical);
         if (p.planar.vertical == VerticalSource::File) p.planar.verticalPath = "/data/UP \"x\".AT2";
         const Project q = parseProject(projectToJson(p).dump(2));
-        QCOMPARE(q.model, std::string("planar"));
+        QVERIFY(q.model == ModelKind::Planar);
         QVERIFY(q.planar == p.planar);
         QCOMPARE(q.planar.verticalPath, p.planar.verticalPath);
     }
@@ -68,7 +68,7 @@ private slots:
         QTemporaryDir tmp;
         const std::string dir = tmp.path().toStdString();
         Project p = paperExampleProject();
-        p.model = "planar";
+        p.model = ModelKind::Planar;
         p.planar.vertical = VerticalSource::File;
         p.planar.verticalPath = dir + "/records/UP.AT2";
         const std::string path = dir + "/projects/p.json";
@@ -84,7 +84,7 @@ private slots:
     // (f_y 1 Hz, A_y/A_x 0.9, Θ 20 as kinstab-cli's --ay-ratio/--theta defaults, RSN68 UP).
     void oldProjectLoadsWithDefaults() {
         const Project q = projectFromJson(paperJsonWithPlanar(json()));
-        QCOMPARE(q.model, std::string("slab1d"));
+        QVERIFY(q.model == ModelKind::Slab1D);
         QVERIFY(q.planar == PlanarSettings{});
         QCOMPARE(q.planar.fyHz, 1.0);
         QCOMPARE(q.planar.ayRatio, 0.9);

@@ -8,7 +8,6 @@
 
 #include "core/check/RecordAnalysis.h"
 #include "core/io/Project.h"
-#include "core/check/RecordAnalysis.h"
 #include "report/ReportWriter.h"
 
 #include "ReportReading.h"
@@ -84,7 +83,7 @@ private slots:
 
     void planarReportNamesTheNumericalSolver() {
         Project p = loadProject(KINSTAB_SOURCE_DIR "/resources/examples/paper-16-story.json");
-        p.model = "planar";
+        p.model = ModelKind::Planar;
         p.slab.solver = SolverKind::Exact; // what the 1-DOF slab would use; planar ignores it
         p.grid = {{0.9, 1.0}, {0.9, 1.1}};
         p.critical.scanStep = 0.05;

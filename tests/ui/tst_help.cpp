@@ -156,7 +156,7 @@ private slots:
         QVERIFY(path.startsWith(dir.path()));
         QVERIFY(w->openProject(path, true));
         const Project p = w->project();
-        QCOMPARE(QString::fromStdString(p.model), model);
+        QCOMPARE(QString::fromLatin1(modelKindName(p.model)), model);
         QCOMPARE(p.record.has_value(), record);
         QCOMPARE(p.building.stories, 16); // the paper's building in every example
         // Copying again replaces the copy (a user's edits to an example do not block it).

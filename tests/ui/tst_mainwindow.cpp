@@ -155,7 +155,7 @@ private slots:
         QTest::addColumn<QString>("reason");
         QTest::newRow("negative mu") << "mu"
                                      << "-0.2"
-                                     << "must be >";
+                                     << "must be ≥ 0 "; // μ = 0 runs (validateSlabParams)
         QTest::newRow("mu not a number") << "mu"
                                          << "abc"
                                          << "is not a number";
@@ -173,7 +173,7 @@ private slots:
                                            << "must be ≥ A from";
         QTest::newRow("f from zero") << "fFrom"
                                      << "0"
-                                     << "must be >";
+                                     << "must be ≥ 0.001"; // kMinFrequencyHz
         QTest::newRow("negative height") << "height"
                                          << "-3"
                                          << "must be >";

@@ -74,13 +74,13 @@ private slots:
     void cleanup() { w.reset(); }
 
     void switchShowsPlanarFields() {
-        QCOMPARE(w->project().model, std::string("slab1d"));
+        QVERIFY(w->project().model == ModelKind::Slab1D);
         for (const char* f : {"fy", "ayRatio", "theta"})
             QVERIFY2(!field(f)->isVisibleTo(w.get()), f);
         modelCombo()->setCurrentIndex(1);
         for (const char* f : {"fy", "ayRatio", "theta"})
             QVERIFY2(field(f)->isVisibleTo(w.get()), f);
-        QCOMPARE(w->project().model, std::string("planar"));
+        QVERIFY(w->project().model == ModelKind::Planar);
         QVERIFY(w->windowTitle().contains(QStringLiteral("planar")));
         modelCombo()->setCurrentIndex(0);
         QVERIFY(!field("fy")->isVisibleTo(w.get()));
@@ -174,10 +174,10 @@ private slots:
         const QString path = dir.filePath(QStringLiteral("planar.json"));
         QCOMPARE(w->saveProjectAs(path), QString());
         w->newProject();
-        QCOMPARE(w->project().model, std::string("slab1d"));
+        QVERIFY(w->project().model == ModelKind::Slab1D);
         QVERIFY(w->openProject(path, true));
         const Project p = w->project();
-        QCOMPARE(p.model, std::string("planar"));
+        QVERIFY(p.model == ModelKind::Planar);
         QCOMPARE(p.planar.fyHz, 2.5);
         QCOMPARE(p.planar.ayRatio, 0.45);
         QCOMPARE(p.planar.theta, 12.0);

@@ -192,10 +192,10 @@ private slots:
 
         // Switching the model is a sweep input too (the issue: results stayed under it).
         const Project p = w->project();
-        w->modelPanel()->load("planar", p.planar);
+        w->modelPanel()->load(ModelKind::Planar, p.planar);
         QVERIFY(w->results().surfaceStale());
         QVERIFY(w->surfaceView()->isStale());
-        w->modelPanel()->load("slab1d", p.planar);
+        w->modelPanel()->load(ModelKind::Slab1D, p.planar);
         QVERIFY(!w->results().surfaceStale());
 
         setText("mu", "0.5");
