@@ -7,11 +7,11 @@
 
 #include "core/analysis/RunAnalysis.h"
 #include "core/building/FloorAnalysis.h"
-#include "core/codes/CodeResult.h"
 #include "core/check/DesignCheck.h"
+#include "core/check/RecordAnalysis.h"
+#include "core/codes/CodeResult.h"
 #include "core/io/Project.h"
 #include "core/slab/PlanarSolver.h"
-#include "core/check/RecordAnalysis.h"
 #include "core/sweep/Sweep.h"
 #include "report/FigureData.h"
 

@@ -32,7 +32,9 @@ struct JobContext {
     bool isCancelled() const { return control.isCancelled(); }
     virtual void cancel() { control.cancel(); }
     // (done, total) as the GUI shows them.
-    virtual std::pair<std::size_t, std::size_t> counts() const { return {done.load(), total.load()}; }
+    virtual std::pair<std::size_t, std::size_t> counts() const {
+        return {done.load(), total.load()};
+    }
 };
 
 // A job that runs core's analysis entry point (core/analysis/RunAnalysis.h): its

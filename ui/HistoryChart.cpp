@@ -45,7 +45,8 @@ HistoryChart::HistoryChart(QWidget* parent)
         s->attachAxis(m_x);
         s->attachAxis(m_yAccel);
     }
-    installDockedChart(this, c, tr("History of one point (after Run: pick a point on the surface)"));
+    installDockedChart(this, c,
+                       tr("History of one point (after Run: pick a point on the surface)"));
     hideFromLegend(c, {m_envDown, m_muDown}); // the lower envelope and -μ have no name
 }
 

@@ -47,7 +47,8 @@ PlanarHistoryChart::PlanarHistoryChart(QWidget* parent)
     }
     m_dy->attachAxis(m_x);
     m_dy->attachAxis(m_yy);
-    installDockedChart(this, c, tr("Planar history of one point (after Run: pick a point on the surface)"));
+    installDockedChart(this, c,
+                       tr("Planar history of one point (after Run: pick a point on the surface)"));
     hideFromLegend(c, {m_limitDown});
 }
 

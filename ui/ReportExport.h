@@ -49,7 +49,8 @@ private:
     BackgroundJob m_job;
 };
 
-// Asks for the sections and a file name, then starts an export; written(path) follows when it is on disk.
+// Asks for the sections and a file name, then starts an export; written(path) follows when it is on
+// disk.
 void exportReportDialog(QWidget* parent, const Project& project, const QString& projectPath,
                         const std::function<void(const QString&)>& written);
 // The same without the file dialog: starts writing out and returns the export (watch done()).

@@ -10,7 +10,6 @@
 #include "app/cli/HelpText.h"
 #include "core/base/InternalError.h"
 #include "core/io/AtomicFile.h"
-#include "core/base/InternalError.h"
 
 #include <exception>
 #include <functional>

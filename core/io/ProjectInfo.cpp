@@ -2,8 +2,8 @@
 #include "core/io/ProjectInfo.h"
 
 #include "core/base/InputLimits.h"
-#include "core/io/JsonReader.h"
 #include "core/base/TextInput.h"
+#include "core/io/JsonReader.h"
 
 #include <utility>
 
