@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace kinstab {
 
@@ -23,6 +24,15 @@ using Vec3 = OdeVec<3>; // (|u|, dx, dy) in tau, on the slow manifold
 // Sub-intervals of a window scanned for onset and lift-off roots (each holds at most one extremum
 // of |a_h| - mu n: a window is at most a half-period of each component or one record sample).
 constexpr int kOnsetSub = 8;
+
+// Where a velocity component changes sign inside a step of length h from y0 to y1, the
+// extremum of the cubic Hermite interpolant of that displacement (error O(h^4)): its value,
+// and where it lies as a fraction of the step.
+struct Extremum {
+    double value = 0.0;
+    double fraction = 0.0;
+};
+using StepExtrema = std::array<std::optional<Extremum>, 2>; // dx, dy; none: keeps its sign
 
 class PlanarRun {
 public:
@@ -54,8 +64,9 @@ private:
     Step collapse(double tau, const Vec4& y, int comp);
 
     void moveTo(double tau, const Vec4& y);
-    void extremaWithin(double h, const Vec4& y1);
-    double overshootWithin(double h, const Vec4& y1) const;
+    double edge(int c) const;
+    void extremaWithin(const StepExtrema& ex);
+    double overshootWithin(const StepExtrema& ex) const;
     bool event(EventKind kind);
     Step finish(Outcome o);
     Step fail(const std::string& why) {
@@ -133,15 +144,9 @@ void PlanarRun::moveTo(double tau, const Vec4& y) {
     if (o_.recordPath) r_.path.push_back({tau, y[0], y[1], y[2], y[3], slipping_});
 }
 
-namespace {
-
-// Where a velocity component changes sign inside a step of length h from y0 to y1, the
-// extremum of the cubic Hermite interpolant of that displacement (error O(h^4)): its value,
-// and where it lies as a fraction of the step. False when the component keeps its sign.
-bool hermiteExtremum(double h, const Vec4& y0, const Vec4& y1, int c, double& value,
-                     double& fraction) {
+std::optional<Extremum> hermiteExtremum(double h, const Vec4& y0, const Vec4& y1, int c) {
     const double p0 = y0[c], p1 = y1[c], m0 = h * y0[c + 2], m1 = h * y1[c + 2];
-    if (!(m0 * m1 < 0.0)) return false;
+    if (!(m0 * m1 < 0.0)) return std::nullopt;
     // p'(s) = a s^2 + b s + m0 on [0, 1] changes sign once: bisection.
     const double a = 6.0 * (p0 - p1) + 3.0 * (m0 + m1), b = 6.0 * (p1 - p0) - 4.0 * m0 - 2.0 * m1;
     double lo = 0.0, hi = 1.0;
@@ -150,37 +155,35 @@ bool hermiteExtremum(double h, const Vec4& y0, const Vec4& y1, int c, double& va
         ((a * mid + b) * mid + m0)* m0 > 0.0 ? lo = mid : hi = mid;
     }
     const double t = 0.5 * (lo + hi), t2 = t * t, t3 = t2 * t;
-    value = (2 * t3 - 3 * t2 + 1) * p0 + (t3 - 2 * t2 + t) * m0 + (-2 * t3 + 3 * t2) * p1 +
-            (t3 - t2) * m1;
-    fraction = t;
-    return true;
+    return Extremum{(2 * t3 - 3 * t2 + 1) * p0 + (t3 - 2 * t2 + t) * m0 + (-2 * t3 + 3 * t2) * p1 +
+                        (t3 - t2) * m1,
+                    t};
 }
 
-} // namespace
+StepExtrema stepExtrema(double h, const Vec4& y0, const Vec4& y1) {
+    return {hermiteExtremum(h, y0, y1, 0), hermiteExtremum(h, y0, y1, 1)};
+}
 
-// Max |dx| and |dy| inside an accepted step of length h from y_ to y1, not the step ends only.
-void PlanarRun::extremaWithin(double h, const Vec4& y1) {
-    for (int c = 0; c < 2; ++c) {
-        double value = 0.0, fraction = 0.0;
-        if (!hermiteExtremum(h, y_, y1, c, value, fraction)) continue;
-        double& peak = c == 0 ? r_.slab.maxAbsDelta : r_.maxAbsDeltaY;
-        peak = std::max(peak, std::abs(value));
-    }
+// The wall edge of displacement component c: the bearing limit across, Θ along the walls.
+double PlanarRun::edge(int c) const {
+    return c == 0 ? m_.params().limit : m_.params().theta;
+}
+
+// Max |dx| and |dy| inside an accepted step, not the step ends only.
+void PlanarRun::extremaWithin(const StepExtrema& ex) {
+    if (ex[0]) r_.slab.maxAbsDelta = std::max(r_.slab.maxAbsDelta, std::abs(ex[0]->value));
+    if (ex[1]) r_.maxAbsDeltaY = std::max(r_.maxAbsDeltaY, std::abs(ex[1]->value));
 }
 
 // A step whose ends are inside the walls can still pass an edge between them and come back:
 // a grazing collapse that a check of the step's end misses. The fraction of the step at which
 // the interpolant's extremum lies beyond an edge (the step is then retaken to end there, where
 // the end check sees the collapse and locates it), or 0 when it stays inside.
-double PlanarRun::overshootWithin(double h, const Vec4& y1) const {
-    const PlanarParams& p = m_.params();
+double PlanarRun::overshootWithin(const StepExtrema& ex) const {
     double first = 0.0;
-    for (int c = 0; c < 2; ++c) {
-        double value = 0.0, fraction = 0.0;
-        if (!hermiteExtremum(h, y_, y1, c, value, fraction)) continue;
-        if (std::abs(value) > (c == 0 ? p.limit : p.theta) && fraction > 0.0)
-            first = first > 0.0 ? std::min(first, fraction) : fraction;
-    }
+    for (int c = 0; c < 2; ++c)
+        if (ex[c] && std::abs(ex[c]->value) > edge(c) && ex[c]->fraction > 0.0)
+            first = first > 0.0 ? std::min(first, ex[c]->fraction) : ex[c]->fraction;
     return first;
 }
 
@@ -346,7 +349,6 @@ double PlanarRun::nextCut(double tau) {
 
 // Slides from t_ to end, or until the slab sticks (then returns with slipping_ false).
 PlanarRun::Step PlanarRun::slipTo(double end) {
-    const PlanarParams& p = m_.params();
     Vec4 absTol = Vec4::Constant(o_.absTol);
     while (t_ < end) {
         const double rho = std::hypot(y_[2], y_[3]);
@@ -387,14 +389,15 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
         int comp = -1;
         double sign = 0;
         const bool endsOutside = collapseIn(st.y, comp, sign);
-        if (const double s = endsOutside ? 0.0 : overshootWithin(h, st.y);
+        const StepExtrema extrema = stepExtrema(h, y_, st.y);
+        if (const double s = endsOutside ? 0.0 : overshootWithin(extrema);
             s > 0.0 && s * h > 1e-15 * std::max(1.0, t_)) {
             ++r_.slab.work.restarts;
             hNext_ = s * h * (1.0 + 1e-9); // just past the extremum, outside the edge
             continue;
         }
         if (endsOutside) {
-            const double lim = comp == 0 ? p.limit : p.theta;
+            const double lim = edge(comp);
             const Vec4 y0 = y_;
             const double t0 = t_;
             const double tc = locate(
@@ -417,7 +420,7 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
             continue;
         }
         const bool truncated = h < hNext_;
-        extremaWithin(h, st.y);
+        extremaWithin(extrema);
         moveTo(t_ + h, st.y);
         fsalT_ = t_;
         fsalY_ = y_;
@@ -429,13 +432,12 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
 }
 
 bool PlanarRun::collapseIn(const Vec4& y, int& comp, double& sign) const {
-    const PlanarParams& p = m_.params();
-    if (std::abs(y[0]) > p.limit) {
+    if (std::abs(y[0]) > edge(0)) {
         comp = 0;
         sign = y[0] > 0.0 ? 1.0 : -1.0;
         return true;
     }
-    if (std::abs(y[1]) > p.theta) {
+    if (std::abs(y[1]) > edge(1)) {
         comp = 1;
         sign = y[1] > 0.0 ? 1.0 : -1.0;
         return true;
@@ -560,7 +562,6 @@ bool PlanarRun::isSlaved(double tau, const Vec4& y) const {
 
 // Approach of a stop in s = ln|u|, from the current state (|u| > 0, |u| decreasing).
 PlanarRun::Approach PlanarRun::approachStop(double end) {
-    const PlanarParams& p = m_.params();
     const double tEntry = t_;
     double rho = std::hypot(y_[2], y_[3]);
     double s = std::log(rho);
@@ -628,7 +629,7 @@ PlanarRun::Approach PlanarRun::approachStop(double end) {
         int comp = -1;
         double sign = 0;
         if (collapseIn(yNew, comp, sign)) {
-            const double lim = comp == 0 ? p.limit : p.theta;
+            const double lim = edge(comp);
             const int k = comp + 3;
             const double sc = locate(
                 [&](double ss, double& g, double& dg) {
