@@ -6,6 +6,14 @@
 
 namespace kinstab::ui {
 
+double niceTickStep(double range, int count) {
+    if (!(range > 0) || count < 1) return 1.0;
+    const double raw = range / count;
+    const double mag = std::pow(10.0, std::floor(std::log10(raw)));
+    const double n = raw / mag;
+    return (n < 1.5 ? 1.0 : n < 3.5 ? 2.0 : n < 7.5 ? 5.0 : 10.0) * mag;
+}
+
 double niceStep(double lo, double hi, int maxTicks) {
     const double span = std::abs(hi - lo);
     if (!(span > 0) || !std::isfinite(span) || maxTicks < 1) return 1.0;

@@ -13,6 +13,9 @@ struct NiceAxis {
     int decimals() const; // enough to tell the ticks apart
 };
 
+// The 1-2-5 step nearest to range / count: about `count` ticks (the teaching view's scales,
+// where the tick count may overshoot a little).
+double niceTickStep(double range, int count);
 // The smallest 1-2-5 step giving at most maxTicks intervals over [lo, hi].
 double niceStep(double lo, double hi, int maxTicks);
 // [lo, hi] widened outwards to whole steps.

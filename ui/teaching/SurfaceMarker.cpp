@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/teaching/SurfaceMarker.h"
+#include "ui/NiceTicks.h"
 
 #include "ui/teaching/TextScale.h"
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/teaching/TracePainter.h"
+#include "ui/NiceTicks.h"
 
 #include "ui/teaching/TextScale.h"
 
@@ -151,14 +152,6 @@ void paintEventTicks(QPainter& p, const Axis& a, const TeachingRun& run) {
 }
 
 } // namespace
-
-double niceTickStep(double range, int count) {
-    if (!(range > 0) || count < 1) return 1.0;
-    const double raw = range / count;
-    const double mag = std::pow(10.0, std::floor(std::log10(raw)));
-    const double n = raw / mag;
-    return (n < 1.5 ? 1.0 : n < 3.5 ? 2.0 : n < 7.5 ? 5.0 : 10.0) * mag;
-}
 
 double TraceLayout::tauAt(double x) const {
     return std::clamp((x - accelPlot.left()) / accelPlot.width() * tauEnd, 0.0, tauEnd);

@@ -22,7 +22,4 @@ struct TraceLayout {
 TraceLayout traceLayout(const QRectF& area, const TeachingRun& run);
 void paintTraces(QPainter& p, const QRectF& area, const TeachingRun& run, double cursorTau);
 
-// A "nice" tick step (1, 2 or 5 times a power of ten) for about `count` ticks over `range`.
-double niceTickStep(double range, int count);
-
 } // namespace kinstab::ui
