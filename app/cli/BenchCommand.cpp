@@ -11,6 +11,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <string>
 
 namespace kinstab::cli {
 
@@ -22,17 +23,33 @@ nlohmann::json timingJson(const TimingStats& t) {
             {"runs", t.runs}};
 }
 
+// The grid and thread count every bench reports first.
+nlohmann::json gridJson(const SweepGrid& grid, int threads) {
+    return {{"amplitudes", grid.amplitudes.size()},
+            {"frequencies", grid.frequencies.size()},
+            {"points", grid.size()},
+            {"threads", threads}};
+}
+
+// The human summary on stderr: the grid, then one line per timed variant (label padded by the
+// caller, `digits` decimals of seconds).
+void printHeader(const SweepGrid& grid, const char* what, int threads, int runs) {
+    std::fprintf(stderr, "%zux%zu %s, %d threads, %d alternating runs of each after a warm-up:\n",
+                 grid.amplitudes.size(), grid.frequencies.size(), what, threads, runs);
+}
+void printTiming(const std::string& label, const TimingStats& t, int digits) {
+    std::fprintf(stderr, "  %s median %.*f s (min %.*f s, CPU %.*f s)\n", label.c_str(), digits,
+                 t.medianSeconds, digits, t.minSeconds, digits, t.medianCpuSeconds);
+}
+
 // Planar against 1-DOF (exact) on one grid, alternating in one process (issue 22).
 int runBenchPlanar(const Args& args, const SweepGrid& grid, int threads, int repeats) {
     const PlanarCase planar = planarCaseFromFlags(args);
     const Slab1DCase oneDof = commonCaseFromFlags(args);
     const PlanarSurfaceBenchmark b = benchmarkPlanarSurface(oneDof, planar, grid, repeats, threads);
     nlohmann::json j = planarCaseJson(planar);
-    j.update({{"amplitudes", grid.amplitudes.size()},
-              {"frequencies", grid.frequencies.size()},
-              {"points", grid.size()},
-              {"threads", b.threads},
-              {"planar", timingJson(b.planar)},
+    j.update(gridJson(grid, b.threads));
+    j.update({{"planar", timingJson(b.planar)},
               {"one_dof", timingJson(b.oneDof)},
               {"ratio_planar_over_one_dof", b.ratioMedian},
               {"ratio_planar_over_one_dof_cpu", b.ratioCpu},
@@ -42,38 +59,28 @@ int runBenchPlanar(const Args& args, const SweepGrid& grid, int threads, int rep
               {"planar_steps", b.planarSteps},
               {"planar_accel_evaluations", b.planarEvaluations}});
     std::cout << j.dump(2) << "\n";
-    std::fprintf(stderr,
-                 "%zux%zu surface, %d threads, %d alternating runs of each after a warm-up:\n"
-                 "  planar (%s vertical)  median %.4f s (min %.4f s, CPU %.4f s)\n"
-                 "  1-DOF exact           median %.4f s (min %.4f s, CPU %.4f s)\n"
-                 "  planar/1-DOF %.2f (wall), %.2f (CPU), medians of per-run ratios\n",
-                 grid.amplitudes.size(), grid.frequencies.size(), b.threads, b.planar.runs,
-                 planar.vertical ? "with" : "no", b.planar.medianSeconds, b.planar.minSeconds,
-                 b.planar.medianCpuSeconds, b.oneDof.medianSeconds, b.oneDof.minSeconds,
-                 b.oneDof.medianCpuSeconds, b.ratioMedian, b.ratioCpu);
+    printHeader(grid, "surface", b.threads, b.planar.runs);
+    printTiming(std::string("planar (") + (planar.vertical ? "with" : "no") + " vertical) ",
+                b.planar, 4);
+    printTiming("1-DOF exact          ", b.oneDof, 4);
+    std::fprintf(stderr, "  planar/1-DOF %.2f (wall), %.2f (CPU), medians of per-run ratios\n",
+                 b.ratioMedian, b.ratioCpu);
     return 0;
 }
 // The exact surface with and without core/numerics/VectorState.h's clearing, alternating in one
 // process (issue 15: is the workaround still needed now that the CLI loads no Qml?).
 int runBenchVectorState(const Slab1DCase& c, const SweepGrid& grid, int threads, int repeats) {
     const VectorStateBenchmark b = benchmarkVectorState(c, grid, repeats, threads);
-    const nlohmann::json j = {{"amplitudes", grid.amplitudes.size()},
-                              {"frequencies", grid.frequencies.size()},
-                              {"points", grid.size()},
-                              {"threads", b.threads},
-                              {"with_vzeroupper", timingJson(b.cleared)},
-                              {"without_vzeroupper", timingJson(b.uncleared)},
-                              {"ratio_without_over_with", b.ratioMedian},
-                              {"ratio_without_over_with_cpu", b.ratioCpu}};
+    nlohmann::json j = gridJson(grid, b.threads);
+    j.update({{"with_vzeroupper", timingJson(b.cleared)},
+              {"without_vzeroupper", timingJson(b.uncleared)},
+              {"ratio_without_over_with", b.ratioMedian},
+              {"ratio_without_over_with_cpu", b.ratioCpu}});
     std::cout << jsonText(j, 2) << "\n";
-    std::fprintf(stderr,
-                 "%zux%zu exact surface, %d threads, %d alternating runs of each after a warm-up:\n"
-                 "  with vzeroupper     median %.3f s (min %.3f s, CPU %.3f s)\n"
-                 "  without vzeroupper  median %.3f s (min %.3f s, CPU %.3f s)\n"
-                 "  without/with %.3f (wall), %.3f (CPU), medians of per-run ratios\n",
-                 grid.amplitudes.size(), grid.frequencies.size(), b.threads, b.cleared.runs,
-                 b.cleared.medianSeconds, b.cleared.minSeconds, b.cleared.medianCpuSeconds,
-                 b.uncleared.medianSeconds, b.uncleared.minSeconds, b.uncleared.medianCpuSeconds,
+    printHeader(grid, "exact surface", b.threads, b.cleared.runs);
+    printTiming("with vzeroupper    ", b.cleared, 3);
+    printTiming("without vzeroupper ", b.uncleared, 3);
+    std::fprintf(stderr, "  without/with %.3f (wall), %.3f (CPU), medians of per-run ratios\n",
                  b.ratioMedian, b.ratioCpu);
     return 0;
 }
@@ -104,30 +111,26 @@ int runBench(const ArgList& argv) {
     if (args.has("vector-state")) return runBenchVectorState(c, grid, threads, repeats);
 
     const SurfaceBenchmark b = benchmarkSurface(c, grid, repeats, threads);
-    nlohmann::json j = {{"amplitudes", grid.amplitudes.size()},
-                        {"frequencies", grid.frequencies.size()},
-                        {"points", grid.size()},
-                        {"threads", b.threads},
-                        {"envelope", envelopeJson(c)},
-                        {"mu", c.slab.mu},
-                        {"paper_steps_per_period", c.paperStepsPerPeriod},
-                        {"exact", timingJson(b.exact)},
-                        {"paper", timingJson(b.paper)},
-                        {"ratio_exact_over_paper", b.ratioMedian},
-                        {"ratio_exact_over_paper_cpu", b.ratioCpu},
-                        {"exact_collapsed_points", b.exactCollapsed},
-                        {"outcome_disagreements", b.outcomeDisagreements}};
+    nlohmann::json j = gridJson(grid, b.threads);
+    j.update({{"envelope", envelopeJson(c)},
+              {"mu", c.slab.mu},
+              {"paper_steps_per_period", c.paperStepsPerPeriod},
+              {"exact", timingJson(b.exact)},
+              {"paper", timingJson(b.paper)},
+              {"ratio_exact_over_paper", b.ratioMedian},
+              {"ratio_exact_over_paper_cpu", b.ratioCpu},
+              {"exact_collapsed_points", b.exactCollapsed},
+              {"outcome_disagreements", b.outcomeDisagreements}});
     std::cout << jsonText(j, 2) << "\n";
+    printHeader(grid, "surface", b.threads, b.exact.runs);
+    printTiming("exact      ", b.exact, 3);
+    char paper[32];
+    std::snprintf(paper, sizeof paper, "paper T/%g ", c.paperStepsPerPeriod);
+    printTiming(paper, b.paper, 3);
     std::fprintf(stderr,
-                 "%zux%zu surface, %d threads, %d alternating runs of each after a warm-up:\n"
-                 "  exact       median %.3f s (min %.3f s, CPU %.3f s)\n"
-                 "  paper T/%g  median %.3f s (min %.3f s, CPU %.3f s)\n"
                  "  exact/paper %.2f (wall), %.2f (CPU), medians of per-run ratios; outcomes "
                  "differ at %zu points\n",
-                 grid.amplitudes.size(), grid.frequencies.size(), b.threads, b.exact.runs,
-                 b.exact.medianSeconds, b.exact.minSeconds, b.exact.medianCpuSeconds,
-                 c.paperStepsPerPeriod, b.paper.medianSeconds, b.paper.minSeconds,
-                 b.paper.medianCpuSeconds, b.ratioMedian, b.ratioCpu, b.outcomeDisagreements);
+                 b.ratioMedian, b.ratioCpu, b.outcomeDisagreements);
     return 0;
 }
 
