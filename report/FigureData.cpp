@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "report/FigureData.h"
 
-#include "core/codes/CodeCatalog.h"
-
 #include "core/sweep/Sweep.h"
 
 #include <cmath>
@@ -26,11 +24,6 @@ SurfaceData surfaceFromSweep(const SweepResult& r, double tauRef) {
         if (!r.done[k] || r.points[k].outcome == Outcome::Failed)
             s.gamma[k] = std::numeric_limits<double>::quiet_NaN();
     return s;
-}
-
-QColor codeColour(const std::string& key) {
-    const CodeInfo* c = findCode(key);
-    return c ? QColor::fromRgb(static_cast<QRgb>(c->rgb)) : QColor(Qt::gray);
 }
 
 } // namespace kinstab::ui::report

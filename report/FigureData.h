@@ -34,9 +34,6 @@ struct CodeMark {
     QColor colour;        // the code's colour, the GUI's too (core/codes/CodeCatalog.h)
 };
 
-// The colour of the code with JSON key `key` from core's catalogue; grey for an unknown key.
-QColor codeColour(const std::string& key);
-
 struct DesignOverlay {
     std::vector<double> critFrequencies;              // Hz
     std::vector<std::optional<double>> critAmplitude; // A_crit(f), nullopt: none found

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "report/ReportAnalysis.h"
-
-#include "core/codes/CodeCatalog.h"
+#include "report/CodeStyle.h"
 
 #include "core/codes/CodeSet.h"
 #include "core/sweep/ModelPoint.h"
@@ -121,11 +120,6 @@ SolverCrossCheck crossCheck(const Project& p, const SweepResult& exact, double s
 }
 
 } // namespace
-
-QString shortCodeName(const std::string& key) {
-    const CodeInfo* c = findCode(key);
-    return c ? QString::fromUtf8(c->shortName) : QString::fromStdString(key);
-}
 
 std::optional<double> designFrequency(const Project& project, const DesignCheckResult& check) {
     if (project.building.period) return 1.0 / *project.building.period;

@@ -74,9 +74,6 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
 // none otherwise or after a cancel. Throws ProjectError on an unreadable record.
 std::optional<FloorAnalysis> computeReportFloors(const Project& p, SweepControl* control);
 
-// "UBC 1976", "ATC 3-06", ... for figure labels.
-QString shortCodeName(const std::string& key);
-
 // The building frequency 1/T the check used (first code's period; the entered period if any).
 std::optional<double> designFrequency(const Project& project, const DesignCheckResult& check);
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Assembles the report: title block, summary, then the sections whose analyses ran.
+#include "report/CodeStyle.h"
 #include "report/ReportSections.h"
 #include "report/ReportWriter.h"
 #include "report/SectionCatalog.h"

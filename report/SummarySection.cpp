@@ -4,6 +4,7 @@
 // one labelled secondary line; otherwise the enveloped sine's A_crit(1/T) governs. Every
 // sentence is built from what was run (record, scaling, floor filter, outcome, verdicts).
 
+#include "report/CodeStyle.h"
 #include "report/ReportSections.h"
 
 namespace kinstab::ui::report {

@@ -4,6 +4,7 @@
 
 #include "core/base/InputLimits.h"
 #include "core/codes/CodeSet.h"
+#include "report/CodeStyle.h"
 #include "ui/AtomicSave.h"
 #include "ui/BuildingPanel.h"
 #include "ui/CodesPanel.h"
@@ -25,8 +26,6 @@
 #include <QSettings>
 #include <QStatusBar>
 
-#include "core/codes/CodeCatalog.h"
-
 namespace kinstab::ui {
 
 namespace {
@@ -36,14 +35,6 @@ const QString keptInputsKey = QStringLiteral("project/keptInputs");
 const QString savedPathKey = QStringLiteral("project/path"); // the file as last saved
 const QString examplePath = QStringLiteral(":/examples/paper-16-story.json");
 
-QColor codeColour(const std::string& code) {
-    const CodeInfo* c = findCode(code);
-    return c ? QColor::fromRgb(c->rgb) : QColor(Qt::darkGray);
-}
-QString shortName(const std::string& code) {
-    const CodeInfo* c = findCode(code);
-    return QString::fromUtf8(c ? c->shortName : code);
-}
 } // namespace
 
 Project MainWindow::project() const {
@@ -100,7 +91,8 @@ void MainWindow::updateCodes() {
             m_verdict->setError(QString::fromStdString(e.what()));
         }
         for (const CodeResult& r : m_codeResults)
-            m_overlays.codes.push_back({shortName(r.code), r.topRatio, codeColour(r.code)});
+            m_overlays.codes.push_back(
+                {report::shortCodeName(r.code), r.topRatio, report::codeColour(r.code)});
         // The building's frequency: the entered period, else the first code's estimate.
         if (b.period)
             m_overlays.buildingFrequency = 1.0 / *b.period;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/VerdictPanel.h"
 
-#include "core/codes/CodeCatalog.h"
+#include "report/CodeStyle.h"
 
 #include <QHeaderView>
 #include <QLabel>
@@ -12,12 +12,6 @@ namespace kinstab::ui {
 
 namespace {
 enum Column { ColCode, ColRatio, ColACrit, ColMargin, ColVerdict, Columns };
-// The catalogue's short name ("UBC 1976"): the dock is narrow; the full title is the tooltip.
-QString shortName(const std::string& code, const QString& title) {
-    const CodeInfo* info = findCode(code);
-    return info ? QString::fromUtf8(info->shortName.data(), qsizetype(info->shortName.size()))
-                : title;
-}
 } // namespace
 
 VerdictPanel::VerdictPanel(QWidget* parent)
@@ -61,8 +55,9 @@ QString VerdictPanel::verdictText(int row) const {
 void VerdictPanel::setRow(int row, const std::string& code, const QString& title, double period,
                           double ratio, const QString& aCrit, const QString& margin,
                           const QString& verdict, const QColor& colour) {
-    const QString cells[] = {shortName(code, title), QString::number(ratio, 'f', 3), aCrit, margin,
-                             verdict};
+    // The short name ("UBC 1976"): the dock is narrow; the full title is the tooltip.
+    const QString cells[] = {report::shortCodeName(code), QString::number(ratio, 'f', 3), aCrit,
+                             margin, verdict};
     for (int c = 0; c < Columns; ++c) {
         auto* item = new QTableWidgetItem(cells[c]);
         if (c != ColCode && c != ColVerdict)
