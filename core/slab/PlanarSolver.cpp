@@ -5,9 +5,13 @@
 
 #include "core/numerics/Dop853.h"
 #include "core/numerics/LevelCrossings.h"
+#include "core/numerics/RadauIIA.h"
 #include "core/numerics/RootFinding.h"
+#include "core/slab/SlipRadau.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <cstdio>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -53,6 +57,15 @@ private:
     double nextOnset(double from);
     double nextCut(double tau);
     Step slipTo(double end);
+    struct Trial {
+        Vec4 y, f;
+        double err;   // <= 1: accepted
+        double grow;  // next step / h after an accepted step
+        double retry; // step to retry / h after a rejected one
+    };
+    Trial trial(bool implicit, double t0, const Vec4& y0, const Vec4& f0, double h, bool refine);
+    bool isStiff(double tau, double rho) const;
+    double stopLookahead() const { static const double k = std::getenv("KINSTAB_LOOK") ? std::atof(std::getenv("KINSTAB_LOOK")) : 1.0; return k; }
     Step slaved(double end);
     Vec3 rhsSlaved(double tau, const Vec3& z);
     Vec2 slavedDirection(double tau, const Vec2& a, double n, double rho) const;
@@ -85,6 +98,9 @@ private:
     double slipPeak_ = 0;    // largest |u| of the current slip (scale of the stop floor)
     double startLength_ = 0; // first step of a slaved slip
     double slavedSpeed_ = 0; // below this |u| a slip may be slaved
+    double stiffSpeedFactor_ = 0;
+    // The last accepted implicit step's polynomial (h = 0: none) and the last trial's.
+    SlipRadauPolynomial lastPoly_, trialPoly_;
     double fsalT_ = -1.0;    // the last accepted step's end, state and derivative
     Vec4 fsalY_ = Vec4::Zero(), fsalF_ = Vec4::Zero();
     // The current window [winStart_, winEnd_] and its onset roots (scanned when needed); kept
@@ -98,12 +114,12 @@ Vec4 PlanarRun::rhs(double tau, const Vec4& y) {
     ++r_.slab.work.accelEvaluations;
     const Vec2 a = m_.accel(tau);
     const double n = m_.normal(tau);
-    const double rho = std::hypot(y[2], y[3]);
+    const double rho = norm2(y[2], y[3]);
     double ex = 0, ey = 0;
     if (rho > 0.0) {
         ex = y[2] / rho;
         ey = y[3] / rho;
-    } else if (const double am = std::hypot(a.x, a.y); am > 0.0) {
+    } else if (const double am = norm2(a.x, a.y); am > 0.0) {
         ex = -a.x / am; // at rest the slab starts along -a_h
         ey = -a.y / am;
     }
@@ -123,7 +139,7 @@ double PlanarRun::dissipationRate(double tau, double ex, double ey) {
 Vec5 PlanarRun::rhsS(double s, const Vec5& z) {
     ++r_.slab.work.accelEvaluations;
     const double tau = z[2] + t_;
-    const double norm = std::hypot(z[0], z[1]);
+    const double norm = norm2(z[0], z[1]);
     const double ex = z[0] / norm, ey = z[1] / norm;
     const Vec2 a = m_.accel(tau);
     const double d = mu_ * m_.normal(tau) + a.x * ex + a.y * ey;
@@ -140,7 +156,7 @@ void PlanarRun::moveTo(double tau, const Vec4& y) {
     y_ = y;
     r_.slab.maxAbsDelta = std::max(r_.slab.maxAbsDelta, std::abs(y[0]));
     r_.maxAbsDeltaY = std::max(r_.maxAbsDeltaY, std::abs(y[1]));
-    slipPeak_ = std::max(slipPeak_, std::hypot(y[2], y[3]));
+    slipPeak_ = std::max(slipPeak_, norm2(y[2], y[3]));
     if (o_.recordPath) r_.path.push_back({tau, y[0], y[1], y[2], y[3], slipping_});
 }
 
@@ -226,6 +242,7 @@ PlanarResult PlanarRun::run() {
     // (measured on the golden grids: tau_c within 3.3e-10 at 1e-5, 7.7e-10 at 2e-5, 2.6e-9 at
     // 4e-5 and at 1e-4, which saves only a tenth more).
     slavedSpeed_ = std::clamp(1e-5 * std::cbrt(o_.relTol / 1e-10), 1e-7, 1e-4);
+    if (const char* k = std::getenv("KINSTAB_STIFF")) stiffSpeedFactor_ = std::atof(k);
     if (m_.normal(0.0) <= 0.0) {
         r_.tauLiftOff = 0.0;
         r_.slab.tauC = 0.0;
@@ -349,9 +366,9 @@ double PlanarRun::nextCut(double tau) {
 
 // Slides from t_ to end, or until the slab sticks (then returns with slipping_ false).
 PlanarRun::Step PlanarRun::slipTo(double end) {
-    Vec4 absTol = Vec4::Constant(o_.absTol);
+    bool rejected = true, lastImplicit = false;
     while (t_ < end) {
-        const double rho = std::hypot(y_[2], y_[3]);
+        const double rho = norm2(y_[2], y_[3]);
         if (isSlaved(t_, y_)) {
             const Step s = slaved(end);
             if (s == Step::Done || !slipping_) return s;
@@ -361,7 +378,7 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
         const Vec4 f0 = t_ == fsalT_ && y_ == fsalY_ ? fsalF_ : rhs(t_, y_);
         const double d = -(y_[2] * f0[2] + y_[3] * f0[3]) / rho; // -d|u|/dtau
         double h = std::min(hNext_ > 0.0 ? hNext_ : rho / (mu_ + 1.0), end - t_);
-        if (d > 0.0 && rho <= d * h) {
+        if (d > 0.0 && rho <= stopLookahead() * d * h) {
             // A stop is predicted within the step: go on in s = ln|u|.
             switch (approachStop(end)) {
             case Approach::Done:
@@ -377,12 +394,14 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
             }
         }
         if (++r_.slab.work.steps > o_.maxSteps) return fail("step limit reached");
-        const auto st =
-            dop853Step<4>([&](double t, const Vec4& y) { return rhs(t, y); }, t_, y_, f0, h);
-        const double err = dop853ErrorNorm<4>(st, y_, absTol, o_.relTol);
-        if (!(err <= 1.0)) {
+        const bool implicit = isStiff(t_, rho);
+        const Trial st = trial(implicit, t_, y_, f0, h, rejected || implicit != lastImplicit);
+        lastImplicit = implicit;
+        rejected = !(st.err <= 1.0);
+        if (std::getenv("KINSTAB_TRACE")) std::fprintf(stderr, "T %d %.6f %.3e %.3e %.3e\n", int(implicit), t_, h, rho, st.err);
+        if (rejected) {
             ++r_.slab.work.restarts;
-            hNext_ = dop853RetryStep(h, err);
+            hNext_ = h * st.retry;
             if (hNext_ < 1e-15 * std::max(1.0, t_)) return fail("step size underflow in a slip");
             continue;
         }
@@ -402,15 +421,12 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
             const double t0 = t_;
             const double tc = locate(
                 [&](double t, double& f, double& df) {
-                    const auto s = dop853Step<4>(
-                        [&](double tt, const Vec4& yy) { return rhs(tt, yy); }, t0, y0, f0, t - t0);
+                    const Trial s = trial(implicit, t0, y0, f0, t - t0, true);
                     f = sign * s.y[comp] - lim;
                     df = sign * s.y[comp + 2];
                 },
                 t0, t0 + h, sign * y0[comp] - lim, sign * st.y[comp] - lim);
-            const auto sc = dop853Step<4>([&](double tt, const Vec4& yy) { return rhs(tt, yy); },
-                                          t0, y0, f0, tc - t0);
-            return collapse(tc, sc.y, comp);
+            return collapse(tc, trial(implicit, t0, y0, f0, tc - t0, true).y, comp);
         }
         if (st.y[2] * y_[2] + st.y[3] * y_[3] < 0.0) {
             // The velocity turned over within one step: it passed a stop; retake it shorter so
@@ -425,10 +441,38 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
         fsalT_ = t_;
         fsalY_ = y_;
         fsalF_ = st.f;
-        const double grow = h * dop853StepFactor(err);
+        lastPoly_ = implicit ? trialPoly_ : SlipRadauPolynomial{};
+        const double grow = h * st.grow;
         hNext_ = truncated ? std::max(hNext_, grow) : grow;
     }
     return Step::Continue;
+}
+
+// One step of the slip equations from (t0, y0), explicit (DOP853) or implicit (Radau IIA),
+// with its error norm and the factors for the next step or the retry.
+PlanarRun::Trial PlanarRun::trial(bool implicit, double t0, const Vec4& y0, const Vec4& f0, double h,
+                                  bool refine) {
+    const Vec4 absTol = Vec4::Constant(o_.absTol);
+    if (implicit) {
+        const bool continues = lastPoly_.h > 0.0 && t0 == t_ && y0 == y_ && t0 == fsalT_;
+        const SlipRadauStep st = slipRadauStep(m_, t0, y0, f0, h, absTol, o_.relTol, refine,
+                                               continues ? &lastPoly_ : nullptr);
+        trialPoly_ = st.poly;
+        r_.slab.work.accelEvaluations += st.evaluations;
+        r_.slab.work.rootIterations += st.newton;
+        const double factor = radau::stepFactor(st.err, st.newton, kSlipRadauMaxNewton);
+        return {st.y, st.f, st.err, factor, std::isfinite(st.err) ? factor : 0.5};
+    }
+    const auto st = dop853Step<4>([&](double t, const Vec4& y) { return rhs(t, y); }, t0, y0, f0, h);
+    const double err = dop853ErrorNorm<4>(st, y0, absTol, o_.relTol);
+    return {st.y, st.f, err, dop853StepFactor(err), dop853RetryStep(h, err) / h};
+}
+
+// Whether the explicit method's step would be capped by the stiffness mu n / |u| of the
+// direction (its stability bound, about 6 |u| / (mu n)) well below the accuracy step, taken
+// as a fraction of the horizontal time scale.
+bool PlanarRun::isStiff(double tau, double rho) const {
+    return rho < stiffSpeedFactor_ * mu_ * m_.normal(tau) * m_.horizontalTimeScale();
 }
 
 bool PlanarRun::collapseIn(const Vec4& y, int& comp, double& sign) const {
@@ -475,7 +519,7 @@ Vec3 PlanarRun::rhsSlaved(double tau, const Vec3& z) {
 // The unit direction of u on the slow manifold at speed rho (-a_h / |a| turned by phi).
 Vec2 PlanarRun::slavedDirection(double tau, const Vec2& a, double n, double rho) const {
     const Vec2 sl = m_.accelSlope(tau);
-    const double am = std::hypot(a.x, a.y);
+    const double am = norm2(a.x, a.y);
     if (!(am > 0.0)) return {0.0, 0.0};
     const double turn = (a.x * sl.y - a.y * sl.x) / (am * am); // theta_a'
     const double relax = 2.0 * am - mu_ * n;                   // |a| + m
@@ -487,7 +531,7 @@ Vec2 PlanarRun::slavedDirection(double tau, const Vec2& a, double n, double rho)
 PlanarRun::Step PlanarRun::slaved(double end) {
     const double rhoExit = 2.0 * slavedSpeed_;
     Vec3 z;
-    z << std::hypot(y_[2], y_[3]), y_[0], y_[1];
+    z << norm2(y_[2], y_[3]), y_[0], y_[1];
     auto f = [&](double t, const Vec3& zz) { return rhsSlaved(t, zz); };
     // |u| is tiny here and a stop's time is |u| / |m| off per unit of error in |u|: its absolute
     // tolerance is scaled down with the largest slaved speed.
@@ -501,6 +545,7 @@ PlanarRun::Step PlanarRun::slaved(double end) {
                      hh = std::min(h, pieceEnd - t0);
         if (++r_.slab.work.steps > o_.maxSteps) return fail("step limit reached");
         const auto st = dop853Step<3>(f, t0, z, f0, hh);
+        if (std::getenv("KINSTAB_TRACE")) std::fprintf(stderr, "S 0 %.6f %.3e %.3e 0\n", t0, hh, z[0]);
         const double err = dop853ErrorNorm<3>(st, z, absTol, o_.relTol);
         if (!(err <= 1.0)) {
             ++r_.slab.work.restarts;
@@ -538,7 +583,7 @@ PlanarRun::Step PlanarRun::slaved(double end) {
         moveTo(t1, y);
         if (z[0] > rhoExit) {
             // Back to the full equations; their first step must resolve the relaxation.
-            hNext_ = 0.5 * z[0] / std::max(std::hypot(a1.x, a1.y), 1e-300);
+            hNext_ = 0.5 * z[0] / std::max(norm2(a1.x, a1.y), 1e-300);
             break;
         }
     }
@@ -549,11 +594,11 @@ PlanarRun::Step PlanarRun::slaved(double end) {
 // 1e-3 rad: projecting onto it moves the displacement by about |u|^2 1e-3 / |a|), so that the
 // slip is slaved.
 bool PlanarRun::isSlaved(double tau, const Vec4& y) const {
-    const double rho = std::hypot(y[2], y[3]);
+    const double rho = norm2(y[2], y[3]);
     if (rho > slavedSpeed_) return false;
     if (rho == 0.0) return true;
     const Vec2 a = m_.accel(tau);
-    const double am = std::hypot(a.x, a.y);
+    const double am = norm2(a.x, a.y);
     const double n = m_.normal(tau);
     if (!(am > 0.0) || 2.0 * am - mu_ * n < 0.5 * am) return false;
     const Vec2 dir = slavedDirection(tau, a, n, rho);
@@ -563,7 +608,7 @@ bool PlanarRun::isSlaved(double tau, const Vec4& y) const {
 // Approach of a stop in s = ln|u|, from the current state (|u| > 0, |u| decreasing).
 PlanarRun::Approach PlanarRun::approachStop(double end) {
     const double tEntry = t_;
-    double rho = std::hypot(y_[2], y_[3]);
+    double rho = norm2(y_[2], y_[3]);
     double s = std::log(rho);
     const double sFloor = std::log(1e-14 * std::max(slipPeak_, rho));
     Vec5 z;
@@ -575,7 +620,7 @@ PlanarRun::Approach PlanarRun::approachStop(double end) {
     double ds = -1.0;
     auto toTau = [&](const Vec5& zz, double ss) {
         Vec4 y;
-        const double r = std::exp(ss), nrm = std::hypot(zz[0], zz[1]);
+        const double r = std::exp(ss), nrm = norm2(zz[0], zz[1]);
         y << zz[3], zz[4], r * zz[0] / nrm, r * zz[1] / nrm;
         return y;
     };
@@ -595,10 +640,11 @@ PlanarRun::Approach PlanarRun::approachStop(double end) {
             return Approach::Done;
         }
         const auto st = dop853Step<5>(f, s, z, fz, h);
+        if (std::getenv("KINSTAB_TRACE")) std::fprintf(stderr, "A 0 %.6f %.3e %.3e 0\n", tEntry + z[2], h, std::exp(s));
         const double err = dop853ErrorNorm<5>(st, z, absTol, o_.relTol);
         const double tauNew = tEntry + st.y[2];
-        const double dNew = dissipationRate(tauNew, st.y[0] / std::hypot(st.y[0], st.y[1]),
-                                            st.y[1] / std::hypot(st.y[0], st.y[1]));
+        const double dNew = dissipationRate(tauNew, st.y[0] / norm2(st.y[0], st.y[1]),
+                                            st.y[1] / norm2(st.y[0], st.y[1]));
         if (!(err <= 1.0) || !(dNew > 0.0) || !(st.y[2] >= z[2])) {
             ++r_.slab.work.restarts;
             ds = h * 0.25;
@@ -644,7 +690,7 @@ PlanarRun::Approach PlanarRun::approachStop(double end) {
         }
         s += h;
         z = st.y;
-        const double nrm = std::hypot(z[0], z[1]);
+        const double nrm = norm2(z[0], z[1]);
         z[0] /= nrm;
         z[1] /= nrm;
         fz = f(s, z);
@@ -655,9 +701,9 @@ PlanarRun::Approach PlanarRun::approachStop(double end) {
         }
         // The speed is about to turn (D -> 0): leave s before dtau/ds blows up.
         const Vec2 a = m_.accel(tauNew);
-        if (dNew < 1e-3 * (mu_ * m_.normal(tauNew) + std::hypot(a.x, a.y))) {
+        if (dNew < 1e-3 * (mu_ * m_.normal(tauNew) + norm2(a.x, a.y))) {
             moveTo(tauNew, toTau(z, s));
-            hNext_ = 0.1 * std::exp(s) / (mu_ * m_.normal(t_) + std::hypot(a.x, a.y) + 1e-300);
+            hNext_ = 0.1 * std::exp(s) / (mu_ * m_.normal(t_) + norm2(a.x, a.y) + 1e-300);
             return Approach::Exited;
         }
     }

@@ -62,13 +62,13 @@ double SlabModel2D::normalSlope(double tau) const {
 
 double SlabModel2D::onsetMargin(double tau) const {
     const Vec2 a = accel(tau);
-    return std::hypot(a.x, a.y) - params_.mu * normal(tau);
+    return norm2(a.x, a.y) - params_.mu * normal(tau);
 }
 
 double SlabModel2D::onsetMarginSlope(double tau) const {
     const Vec2 a = accel(tau), s = accelSlope(tau);
-    const double m = std::hypot(a.x, a.y);
-    const double dm = m > 0.0 ? (a.x * s.x + a.y * s.y) / m : std::hypot(s.x, s.y);
+    const double m = norm2(a.x, a.y);
+    const double dm = m > 0.0 ? (a.x * s.x + a.y * s.y) / m : norm2(s.x, s.y);
     return dm - params_.mu * normalSlope(tau);
 }
 
