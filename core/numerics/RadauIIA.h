@@ -13,11 +13,13 @@ namespace kinstab::radau {
 
 inline const double kSqrt6 = std::sqrt(6.0);
 inline const double kC[3] = {(4.0 - kSqrt6) / 10.0, (4.0 + kSqrt6) / 10.0, 1.0};
-inline const double kA[3][3] = {
-    {(88.0 - 7.0 * kSqrt6) / 360.0, (296.0 - 169.0 * kSqrt6) / 1800.0, (-2.0 + 3.0 * kSqrt6) / 225.0},
-    {(296.0 + 169.0 * kSqrt6) / 1800.0, (88.0 + 7.0 * kSqrt6) / 360.0, (-2.0 - 3.0 * kSqrt6) / 225.0},
-    {(16.0 - kSqrt6) / 36.0, (16.0 + kSqrt6) / 36.0, 1.0 / 9.0}};
-inline const double kD[3] = {-(13.0 + 7.0 * kSqrt6) / 3.0, (-13.0 + 7.0 * kSqrt6) / 3.0, -1.0 / 3.0};
+inline const double kA[3][3] = {{(88.0 - 7.0 * kSqrt6) / 360.0, (296.0 - 169.0 * kSqrt6) / 1800.0,
+                                 (-2.0 + 3.0 * kSqrt6) / 225.0},
+                                {(296.0 + 169.0 * kSqrt6) / 1800.0, (88.0 + 7.0 * kSqrt6) / 360.0,
+                                 (-2.0 - 3.0 * kSqrt6) / 225.0},
+                                {(16.0 - kSqrt6) / 36.0, (16.0 + kSqrt6) / 36.0, 1.0 / 9.0}};
+inline const double kD[3] = {-(13.0 + 7.0 * kSqrt6) / 3.0, (-13.0 + 7.0 * kSqrt6) / 3.0,
+                             -1.0 / 3.0};
 // The real eigenvalue of A^-1.
 inline const double kU1 = 30.0 / (6.0 + std::cbrt(81.0) - std::cbrt(9.0));
 
@@ -32,7 +34,7 @@ inline double estimateRelTol(double relTol) {
 inline double stepFactor(double err, int newton, int maxNewton) {
     const double safety = 0.9 * (1.0 + 2.0 * maxNewton) / (newton + 2.0 * maxNewton);
     if (!(err > 0.0)) return 8.0;
-    return std::clamp(safety * std::pow(err, -0.25), 0.2, 8.0);
+    return std::clamp(safety / std::sqrt(std::sqrt(err)), 0.2, 8.0);
 }
 
 } // namespace kinstab::radau

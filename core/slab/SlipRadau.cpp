@@ -28,10 +28,10 @@ Slip slipAt(const Vec2d& u, const Vec2d& a, double mun) {
 
 double rmsNorm(const Eigen::Matrix<double, 6, 1>& v, const Vec2d& scale) {
     double s = 0.0;
-    for (int i = 0; i < 6; ++i) s += (v[i] / scale[i % 2]) * (v[i] / scale[i % 2]);
+    for (int i = 0; i < 6; ++i)
+        s += (v[i] / scale[i % 2]) * (v[i] / scale[i % 2]);
     return std::sqrt(s / 6.0);
 }
-
 
 // RADAU5's estimate with the Jacobian at the step's start, J = [[0, I], [0, Ju]]:
 // (u1/h I - J) x = c solves as x_u = (u1/h I - Ju)^-1 c_u, x_d = (c_d + x_u) h / u1. With
@@ -58,8 +58,8 @@ double errorNorm(const SlabModel2D& m, double t0, const OdeVec<4>& y0, const Ode
         double sum = 0.0;
         for (int i = 0; i < 4; ++i) {
             const double x = i < 2 ? xd[i] : xu[i - 2];
-            const double sc = rtol * absTol[i] / relTol +
-                              rtol * std::max(std::abs(y0[i]), std::abs(y1[i]));
+            const double sc =
+                rtol * absTol[i] / relTol + rtol * std::max(std::abs(y0[i]), std::abs(y1[i]));
             sum += (x / sc) * (x / sc);
         }
         return std::sqrt(sum / 4.0);
@@ -115,7 +115,8 @@ SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0
     } else {
         // Start: each stage slides along u0's direction under its own a_h and n.
         const Vec2d e0 = u0 / u0.norm();
-        for (int i = 0; i < 3; ++i) z.segment<2>(2 * i) = kC[i] * h * (-a[i] - mun[i] * e0);
+        for (int i = 0; i < 3; ++i)
+            z.segment<2>(2 * i) = kC[i] * h * (-a[i] - mun[i] * e0);
     }
     // Newton's corrections are measured against the error estimate's tolerances and stopped, as
     // in RADAU5, when the contraction rate says the rest is below fnewt of them.
@@ -156,13 +157,15 @@ SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0
     }
     if (!converged) return r;
     std::array<Vec2d, 3> u;
-    for (int j = 0; j < 3; ++j) u[j] = u0 + z.segment<2>(2 * j);
+    for (int j = 0; j < 3; ++j)
+        u[j] = u0 + z.segment<2>(2 * j);
     if (!(u[2].dot(u0) > 0.0)) return r;
     // Stiffly accurate: the end is the last stage; the displacement is the quadrature of u.
     std::array<Vec2d, 3> zd; // displacement stage increments
     for (int i = 0; i < 3; ++i) {
         zd[i] = Vec2d::Zero();
-        for (int j = 0; j < 3; ++j) zd[i] += h * kA[i][j] * u[j];
+        for (int j = 0; j < 3; ++j)
+            zd[i] += h * kA[i][j] * u[j];
     }
     const Vec2d dd = zd[2];
     const Slip end = slipAt(u[2], a[2], mun[2]);
