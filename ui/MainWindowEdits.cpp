@@ -20,7 +20,12 @@ namespace kinstab::ui {
 void MainWindow::buildEditMenu() {
     m_undo = new InputHistory(
         [this] { return inputsValid() ? projectToJson(project()).dump() : std::string(); },
-        [this](const std::string& s) { showInputs(parseProject(s)); }, this);
+        [this](const std::string& s) {
+            const Project p = parseProject(s);
+            if (p.study != m_project.study) showStudy(p.study); // undo of "Use in project"
+            showInputs(p);
+        },
+        this);
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     QAction* undo = m_undo->stack()->createUndoAction(this, tr("&Undo"));
     undo->setShortcuts(QKeySequence::Undo);

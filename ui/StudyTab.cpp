@@ -6,8 +6,11 @@
 #include "core/io/StudySpecJson.h"
 #include "core/study/CpuAffinity.h"
 #include "core/study/FragilityText.h"
+#include "core/study/StudyResults.h"
+#include "core/study/StudyRowsMatch.h"
 #include "core/study/StudyRunner.h"
 #include "ui/FragilityChart.h"
+#include "ui/StaleFrame.h"
 
 #include <nlohmann/json.hpp>
 
@@ -33,6 +36,8 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
+#include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
 
@@ -43,6 +48,10 @@ struct StudyTab::Outcome {
     bool cancelled = false;
     std::vector<StudyRow> parsed;
     std::vector<Fragility> fragility;
+    unsigned generation = 0;
+    std::string spec; // studyJson() of the fields the results are for
+    QString file;     // the results file read ("": a run)
+    QString notice;   // why a results file is not shown
 };
 
 namespace {
@@ -81,19 +90,23 @@ QString floorPeriods(const StudySpec& s) {
 
 // The worker: read the study from its text, run every case, fit the fragility.
 std::shared_ptr<StudyTab::Outcome> runWorker(const std::string& json, SweepControl* control);
+// The worker: read a results file, check it is the study file's, fit the fragility.
+std::shared_ptr<StudyTab::Outcome> loadWorker(const QString& specPath, const QString& rowsPath);
 
 } // namespace
 
 StudyTab::StudyTab(QWidget* parent)
-    : QWidget(parent), m_folder(new QLineEdit(this)), m_include(new QLineEdit("*.AT2", this)),
-      m_exclude(new QLineEdit("*UP*, *DWN*", this)), m_measure(new QComboBox(this)),
-      m_saPeriod(spin(0.01, 20, 1.0, 2, " s")), m_mu(new QLineEdit("0.4,0.6", this)),
-      m_tstar(new QLineEdit("0.099", this)), m_floors(new QLineEdit(this)),
+    : QWidget(parent), m_folder(new QLineEdit(this)), m_include(new QLineEdit(this)),
+      m_exclude(new QLineEdit(this)), m_measure(new QComboBox(this)),
+      m_saPeriod(spin(0.01, 20, 1.0, 2, " s")), m_mu(new QLineEdit(this)),
+      m_tstar(new QLineEdit(this)), m_floors(new QLineEdit(this)),
       m_maxG(spin(0.01, 100, 3.0, 2, " g")), m_step(spin(0.001, 1, 0.02, 3, " g")),
       m_run(new QPushButton(tr("Run study"), this)), m_cancel(new QPushButton(tr("Cancel"), this)),
       m_export(new QPushButton(tr("Export…"), this)), m_progress(new QProgressBar(this)),
-      m_status(new QLabel(this)), m_chart(new QChartView(new QChart, this)),
-      m_table(new QTableWidget(0, 6, this)) {
+      m_status(new QLabel(this)),
+      m_stale(
+          new QLabel(tr("The results below are for the previous parameters — run again."), this)),
+      m_chart(new QChartView(new QChart, this)), m_table(new QTableWidget(0, 6, this)) {
     m_measure->addItems({"pga", "sa"});
     m_floors->setPlaceholderText(tr("none: the ground record drives the slab"));
     m_folder->setPlaceholderText(tr("a folder of accelerograms (AT2, COSMOS, CSMIP V2, ...)"));
@@ -129,6 +142,10 @@ StudyTab::StudyTab(QWidget* parent)
     m_cancel->setEnabled(false);
     m_export->setEnabled(false);
     m_status->setWordWrap(true);
+    m_stale->setObjectName(QStringLiteral("studyStale")); // tests find it by name
+    m_stale->setStyleSheet(StaleFrame::staleStyle());
+    m_stale->setContentsMargins(8, 3, 8, 3);
+    m_stale->hide();
     m_chart->setRenderHint(QPainter::Antialiasing);
     m_chart->setMinimumHeight(280);
     m_table->setHorizontalHeaderLabels(
@@ -143,6 +160,7 @@ StudyTab::StudyTab(QWidget* parent)
     layout->addLayout(form);
     layout->addLayout(bar);
     layout->addWidget(m_status);
+    layout->addWidget(m_stale);
     layout->addWidget(split, 1);
 
     connect(browse, &QPushButton::clicked, this, [this] {
@@ -180,6 +198,12 @@ StudyTab::StudyTab(QWidget* parent)
         },
         Qt::QueuedConnection);
     connect(&m_watcher, &QFutureWatcherBase::finished, this, &StudyTab::onFinished);
+    for (QLineEdit* e : {m_folder, m_include, m_exclude, m_mu, m_tstar, m_floors})
+        connect(e, &QLineEdit::textChanged, this, &StudyTab::updateStaleness);
+    for (QDoubleSpinBox* b : {m_saPeriod, m_maxG, m_step})
+        connect(b, &QDoubleSpinBox::valueChanged, this, &StudyTab::updateStaleness);
+    connect(m_measure, &QComboBox::currentTextChanged, this, &StudyTab::updateStaleness);
+    clear();
 }
 
 StudyTab::~StudyTab() {
@@ -304,10 +328,86 @@ bool StudyTab::useInProject(const QString& savePath) {
         m_studyFile = savePath;
         m_openedText = text;
     }
-    emit studyChosen(QFileInfo(m_studyFile).absoluteFilePath());
-    m_status->setText(
-        tr("The project's study is now %1; save the project to keep it.").arg(m_studyFile));
+    const QString results = currentResultsFile();
+    emit studyChosen(QFileInfo(m_studyFile).absoluteFilePath(), results);
+    QString note = tr("The project's study is now %1").arg(m_studyFile);
+    if (!results.isEmpty())
+        note += tr(", with its results %1").arg(results);
+    else if (!m_parsed.empty())
+        note += tr(", without the results shown (they are for other parameters)");
+    m_status->setText(note + tr("; save the project to keep it."));
     return true;
+}
+
+QString StudyTab::currentResultsFile() {
+    if (m_parsed.empty() || resultsStale()) return {};
+    if (!m_resultsFile.isEmpty()) return QFileInfo(m_resultsFile).absoluteFilePath();
+    const QFileInfo spec(m_studyFile);
+    const QString path = spec.absoluteDir().filePath(spec.completeBaseName() + ".jsonl");
+    if (!save(path, m_rows)) return {};
+    m_resultsFile = path;
+    return path;
+}
+
+void StudyTab::clear() {
+    ++m_generation; // a job still running belongs to what is cleared
+    cancel();
+    m_watcher.waitForFinished(); // within one case per thread
+    m_base = nlohmann::json::object();
+    m_studyFile.clear();
+    m_openedText.clear();
+    m_openedRecords = nlohmann::json();
+    m_openedRecordFields.clear();
+    setRecordsFolder(QString(), "*.AT2", "*UP*, *DWN*");
+    m_measure->setCurrentText("pga");
+    m_saPeriod->setValue(1.0);
+    setLists("0.4,0.6", "0.099", QString());
+    setSearch(3.0, 0.02);
+    m_rows.clear();
+    m_parsed.clear();
+    m_fragility.clear();
+    m_resultsSpec.clear();
+    m_resultsFile.clear();
+    fillFragilityChart(m_chart->chart(), m_fragility);
+    fillTable();
+    m_export->setEnabled(false);
+    m_progress->setValue(0);
+    m_status->clear();
+    updateStaleness();
+}
+
+void StudyTab::showProjectStudy(const std::optional<ProjectStudy>& study,
+                                const QString& projectDir) {
+    clear();
+    if (!study) return;
+    const QString spec = QString::fromStdString(study->spec);
+    if (!openStudy(spec)) return; // the message says why
+    QString results = QString::fromStdString(study->results);
+    if (results.isEmpty()) { // kinstab-cli study -o NAME.jsonl beside the project or the study
+        const QString name = QFileInfo(spec).completeBaseName() + ".jsonl";
+        for (const QString& dir : {projectDir, QFileInfo(spec).absolutePath()})
+            if (!dir.isEmpty() && QFileInfo::exists(QDir(dir).filePath(name))) {
+                results = QDir(dir).filePath(name);
+                break;
+            }
+    }
+    if (results.isEmpty()) return;
+    const std::string fields = studyJson();
+    startJob(
+        [spec, results, fields] {
+            auto o = loadWorker(spec, results);
+            o->spec = fields;
+            return o;
+        },
+        tr("Reading the study's results %1…").arg(results));
+}
+
+bool StudyTab::resultsStale() const {
+    return !m_parsed.empty() && studyJson() != m_resultsSpec;
+}
+
+void StudyTab::updateStaleness() {
+    m_stale->setVisible(resultsStale());
 }
 
 bool StudyTab::isRunning() const {
@@ -326,9 +426,23 @@ void StudyTab::run() {
         emit progressed(static_cast<int>(done), static_cast<int>(total)); // queued to the GUI
     };
     const std::string json = studyJson();
-    m_watcher.setFuture(
-        QtConcurrent::run([json, control] { return runWorker(json, control.get()); }));
-    m_status->setText(tr("Running the study…"));
+    startJob(
+        [json, control] {
+            auto o = runWorker(json, control.get());
+            o->spec = json;
+            return o;
+        },
+        tr("Running the study…"));
+}
+
+void StudyTab::startJob(std::function<std::shared_ptr<Outcome>()> job, const QString& status) {
+    const unsigned generation = m_generation;
+    m_watcher.setFuture(QtConcurrent::run([job, generation] {
+        auto o = job();
+        o->generation = generation;
+        return o;
+    }));
+    m_status->setText(status);
     m_progress->setValue(0);
     m_run->setEnabled(false);
     m_cancel->setEnabled(true);
@@ -342,21 +456,32 @@ void StudyTab::onFinished() {
     m_run->setEnabled(true);
     m_cancel->setEnabled(false);
     const std::shared_ptr<Outcome> o = m_watcher.result();
+    if (o->generation != m_generation) return; // of a study cleared since
     if (!o->error.empty()) {
         m_status->setText(tr("Cannot run the study: %1").arg(QString::fromStdString(o->error)));
+    } else if (!o->notice.isEmpty()) {
+        m_status->setText(o->notice);
     } else if (o->cancelled) {
         m_status->setText(tr("Cancelled: nothing is shown of a partial study."));
     } else {
-        m_rows = o->rows;
-        m_parsed = o->parsed;
-        m_fragility = o->fragility;
-        fillFragilityChart(m_chart->chart(), m_fragility);
-        fillTable();
-        m_export->setEnabled(true);
-        m_status->setText(
-            tr("%1 cases, %2 parameter sets.").arg(m_parsed.size()).arg(m_fragility.size()));
+        showResults(*o);
     }
     emit finished();
+}
+
+void StudyTab::showResults(const Outcome& o) {
+    m_rows = o.rows;
+    m_parsed = o.parsed;
+    m_fragility = o.fragility;
+    m_resultsSpec = o.spec;
+    m_resultsFile = o.file;
+    fillFragilityChart(m_chart->chart(), m_fragility);
+    fillTable();
+    m_export->setEnabled(true);
+    QString text = tr("%1 cases, %2 parameter sets.").arg(m_parsed.size()).arg(m_fragility.size());
+    if (!o.file.isEmpty()) text += tr(" Read from %1.").arg(o.file);
+    m_status->setText(text);
+    updateStaleness();
 }
 
 void StudyTab::fillTable() {
@@ -414,6 +539,30 @@ std::shared_ptr<StudyTab::Outcome> runWorker(const std::string& json, SweepContr
         o->fragility = studyFragility(o->parsed, {});
     } catch (const StudyError& e) {
         o->error = e.what();
+    }
+    return o;
+}
+
+std::shared_ptr<StudyTab::Outcome> loadWorker(const QString& specPath, const QString& rowsPath) {
+    auto o = std::make_shared<StudyTab::Outcome>();
+    o->file = rowsPath;
+    try {
+        const StudySpec spec = loadStudy(specPath.toStdString());
+        std::vector<StudyRow> rows = readStudyRows(rowsPath.toStdString());
+        const std::string dir = QFileInfo(specPath).absolutePath().toStdString();
+        if (const std::string m = studyRowsMismatch(spec, dir, rows); !m.empty()) {
+            o->notice = QObject::tr("The results %1 are not shown: they are not the study's "
+                                    "(%2). Run the study again.")
+                            .arg(rowsPath, QString::fromStdString(m));
+            return o;
+        }
+        std::ifstream in(rowsPath.toStdString(), std::ios::binary);
+        o->rows.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        o->fragility = studyFragility(rows, {});
+        o->parsed = std::move(rows);
+    } catch (const std::exception& e) {
+        o->notice = QObject::tr("The results %1 are not shown: %2")
+                        .arg(rowsPath, QString::fromStdString(e.what()));
     }
     return o;
 }
