@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The legends of the three charts along the bottom of the window (ui/DockedChart.h) at 1280×800,
+// where each dock is about 270 px wide: every named series is listed in full (QLegend elided
+// them to "sli…", "A…"), the lines of the legend fit inside the chart's view, and a series kept
+// out of the legend (the lower envelope, -μ) stays out.
+
+#include "ui/CriticalChart.h"
+#include "ui/HistoryChart.h"
+#include "ui/MainWindow.h"
+#include "ui/SliceChart.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QLabel>
+#include <QLegendMarker>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTextDocument>
+#include <QtTest>
+
+using namespace kinstab::ui;
+
+namespace {
+
+// The label's text as shown (the entries join with no-break spaces).
+QString shownText(const QLabel* l) {
+    QTextDocument d;
+    d.setHtml(l->text());
+    return d.toPlainText().replace(QChar(0x00a0), QLatin1Char(' '));
+}
+
+// The names the chart gives its series, as QLegend would list them (unnamed ones left out).
+QStringList seriesNames(const QChartView* v) {
+    QStringList out;
+    for (const QAbstractSeries* s : v->chart()->series())
+        if (!s->name().isEmpty()) out << s->name();
+    return out;
+}
+
+} // namespace
+
+class TestChartLegend : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear(); // a first start: the default layout
+    }
+
+    void everyEntryInFullAt1280() {
+        MainWindow w;
+        w.resize(1280, 800);
+        w.resetLayout();
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTest::qWait(100); // the views paint, and the legends follow
+        const QList<QChartView*> views{w.sliceChart(), w.historyChart(),
+                                       w.findChild<CriticalChart*>()};
+        for (QChartView* v : views) {
+            QVERIFY(v && v->isVisible());
+            QCOMPARE_LE(v->width(), 330); // narrow: the case QLegend elided
+            auto* legend = v->findChild<QLabel*>(QStringLiteral("chartLegend"));
+            QVERIFY(legend);
+            QVERIFY(legend->isVisible());
+            const QString text = shownText(legend);
+            const QStringList names = seriesNames(v);
+            QVERIFY(!names.isEmpty());
+            for (const QString& n : names)
+                QVERIFY2(text.contains(n), qPrintable(n + " not in: " + text));
+            QVERIFY2(!text.contains(QStringLiteral("…")), qPrintable(text));
+            // All of its lines inside the view, below the plot.
+            QCOMPARE_GE(legend->height(), legend->heightForWidth(legend->width()));
+            QVERIFY(v->rect().contains(legend->geometry()));
+            QCOMPARE_GE(legend->geometry().top(), qRound(v->chart()->plotArea().bottom()));
+        }
+        // The history's lower envelope and -μ have no entry of their own.
+        const QString history =
+            shownText(w.historyChart()->findChild<QLabel*>(QStringLiteral("chartLegend")));
+        QCOMPARE(history.count(QStringLiteral("envelope")), 1);
+    }
+};
+
+QTEST_MAIN(TestChartLegend)
+#include "tst_chart_legend.moc"
