@@ -41,8 +41,8 @@ public:
     }
 
 private:
-    // One entry per named series not kept out of the legend; spaces inside an entry do not
-    // break. (A marker of a hidden legend reports itself invisible: the series carries the mark.)
+    // One entry per named series not kept out of the legend; a line breaks only between
+    // entries. (A marker of a hidden legend reports itself invisible: the series carries the mark.)
     QString html() const {
         QStringList entries;
         for (QLegendMarker* m : m_view->chart()->legend()->markers()) {
@@ -51,9 +51,9 @@ private:
                 continue;
             const QColor c =
                 m->brush().style() != Qt::NoBrush ? m->brush().color() : m->pen().color();
-            entries << QStringLiteral("<span style='color:%1'>&#9632;</span>&nbsp;%2")
-                           .arg(c.name(), m->label().toHtmlEscaped().replace(
-                                              QLatin1Char(' '), QStringLiteral("&nbsp;")));
+            entries << QStringLiteral("<span style='white-space:nowrap'><span "
+                                      "style='color:%1'>&#9632;</span> %2</span>")
+                           .arg(c.name(), m->label().toHtmlEscaped());
         }
         return entries.join(QStringLiteral("&nbsp;&nbsp; "));
     }

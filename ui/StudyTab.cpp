@@ -333,8 +333,10 @@ bool StudyTab::useInProject(const QString& savePath) {
     QString note = tr("The project's study is now %1").arg(m_studyFile);
     if (!results.isEmpty())
         note += tr(", with its results %1").arg(results);
-    else if (!m_parsed.empty())
+    else if (resultsStale())
         note += tr(", without the results shown (they are for other parameters)");
+    else if (!m_parsed.empty())
+        note += tr(", without the results shown (their file could not be written)");
     m_status->setText(note + tr("; save the project to keep it."));
     return true;
 }
@@ -478,6 +480,11 @@ void StudyTab::showResults(const Outcome& o) {
     fillFragilityChart(m_chart->chart(), m_fragility);
     fillTable();
     m_export->setEnabled(true);
+    const int done = static_cast<int>(m_parsed.size());
+    if (done > 0) { // read back, not run: the bar shows the study complete all the same
+        m_progress->setRange(0, done);
+        m_progress->setValue(done);
+    }
     QString text = tr("%1 cases, %2 parameter sets.").arg(m_parsed.size()).arg(m_fragility.size());
     if (!o.file.isEmpty()) text += tr(" Read from %1.").arg(o.file);
     m_status->setText(text);

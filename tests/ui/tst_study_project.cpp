@@ -25,6 +25,7 @@
 #include <QProcess>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -217,6 +218,31 @@ private slots:
         QCOMPARE(tab->resultsFile(), results);
         QCOMPARE(criticalColumn(tab->table()), shown);
         QVERIFY(w.project().study.has_value()); // the report gets its study section
+    }
+
+    // KINSTAB_SCREENSHOT_DIR=DIR saves the window with the Study tab showing the shipped example
+    // study and its results (docs/screenshots/study-tab.png), to look at.
+    void screenshotOfTheExampleStudy() {
+        const QString shots = qEnvironmentVariable("KINSTAB_SCREENSHOT_DIR");
+        if (shots.isEmpty()) QSKIP("KINSTAB_SCREENSHOT_DIR not set");
+        const QString spec = KINSTAB_SOURCE_DIR "/resources/examples/study-example.json";
+        const QString rows = dir_.filePath("example.jsonl");
+        QProcess p;
+        p.start(KINSTAB_CLI, {"study", "--spec", spec, "-o", rows});
+        QVERIFY(p.waitForFinished(300000));
+        QCOMPARE(p.exitCode(), 0);
+        MainWindow w;
+        QVERIFY(
+            open(w, projectWith(dir_.filePath("example.json"), {{"spec", spec}, {"results", rows}}),
+                 true));
+        for (QTabWidget* tabs : w.findChildren<QTabWidget*>())
+            for (int i = 0; i < tabs->count(); ++i)
+                if (tabs->tabText(i) == QStringLiteral("Study")) tabs->setCurrentIndex(i);
+        w.resize(1920, 1080);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTest::qWait(300); // the chart lays its legend out in the event loop
+        QVERIFY(w.grab().save(shots + "/study-tab.png"));
     }
 
     void editingAfterTheRunMarksResultsStale() {
