@@ -144,8 +144,10 @@ SurfaceView::SurfaceView(QWidget* parent)
     body->addWidget(m_stack, 1);
     body->addWidget(m_bar);
     layout->addLayout(body, 1);
-    // No word wrap: a wrapped label's minimum height would stretch the window; two fixed lines.
-    m_legend->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    // Wrapped between entries (never inside one): on one line each, the code ratios ran off
+    // the right edge of a 1280 px window.
+    m_legend->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_legend->setWordWrap(true);
     m_legend->setTextFormat(Qt::RichText);
     layout->addWidget(m_legend);
     showPage();
@@ -469,8 +471,8 @@ void SurfaceView::rebuildOverlays() {
 
 void SurfaceView::updateLegend() {
     auto swatch = [](const QColor& c, const QString& text) {
-        return QStringLiteral(
-                   "<span style='color:%1; font-size:large'>&#9632;</span>&nbsp;%2&nbsp;&nbsp; ")
+        return QStringLiteral("<span style='white-space:nowrap'><span style='color:%1; "
+                              "font-size:large'>&#9632;</span> %2</span>&nbsp;&nbsp; ")
             .arg(c.name(), text);
     };
     // The γc colours are read off the colour bar; the legend names the lines drawn over them.

@@ -2,18 +2,21 @@
 // The legends of the three charts along the bottom of the window (ui/DockedChart.h) at 1280×800,
 // where each dock is about 270 px wide: every named series is listed in full (QLegend elided
 // them to "sli…", "A…"), the lines of the legend fit inside the chart's view, and a series kept
-// out of the legend (the lower envelope, -μ) stays out.
+// out of the legend (the lower envelope, -μ) stays out. The legend under the surface wraps too
+// (its code ratios ran off the window's right edge).
 
 #include "ui/CriticalChart.h"
 #include "ui/HistoryChart.h"
 #include "ui/MainWindow.h"
 #include "ui/SliceChart.h"
+#include "ui/SurfaceView.h"
 
 #include <QChart>
 #include <QChartView>
 #include <QLabel>
 #include <QLegendMarker>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTextDocument>
 #include <QtTest>
@@ -78,6 +81,23 @@ private slots:
         const QString history =
             shownText(w.historyChart()->findChild<QLabel*>(QStringLiteral("chartLegend")));
         QCOMPARE(history.count(QStringLiteral("envelope")), 1);
+
+        // The surface's legend after a run, when it lists the code ratios outside the grid:
+        // every line shown, inside the view's width.
+        QSignalSpy done(&w, &MainWindow::sweepFinished);
+        w.runSweep();
+        QVERIFY(done.wait(60000));
+        QTest::qWait(50);
+        QLabel* surface = nullptr;
+        for (QLabel* l : w.surfaceView()->findChildren<QLabel*>())
+            if (l->text() == w.surfaceView()->legendText()) surface = l;
+        QVERIFY(surface && surface->isVisible());
+        QVERIFY(shownText(surface).contains(QStringLiteral("EC8 0.177 g (outside the grid)")));
+        QCOMPARE_LE(surface->width(), w.surfaceView()->width());
+        if (surface->wordWrap())
+            QCOMPARE_GE(surface->height(), surface->heightForWidth(surface->width()));
+        else // one line per <br>, cut at the label's right edge when longer
+            QCOMPARE_LE(surface->sizeHint().width(), surface->width());
     }
 };
 
