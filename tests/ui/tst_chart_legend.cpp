@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The legends of the three charts along the bottom of the window (ui/DockedChart.h) at 1280×800,
-// where each dock is about 270 px wide: every named series is listed in full (QLegend elided
-// them to "sli…", "A…"), the lines of the legend fit inside the chart's view, and a series kept
-// out of the legend (the lower envelope, -μ) stays out. The legend under the surface wraps too
+// The titles and legends of the three charts along the bottom of the window (ui/DockedChart.h)
+// at 1280×800, where each dock is about 270 px wide: the title is shown whole and every named
+// series is listed in full (QChart elided them to "…(cf…", "sli…", "A…"), all their lines fit
+// inside the chart's view, and a series kept out of the legend (the lower envelope, -μ) stays
+// out. The legend under the surface wraps too
 // (its code ratios ran off the window's right edge).
 
 #include "ui/CriticalChart.h"
@@ -76,6 +77,11 @@ private slots:
             QCOMPARE_GE(legend->height(), legend->heightForWidth(legend->width()));
             QVERIFY(v->rect().contains(legend->geometry()));
             QCOMPARE_GE(legend->geometry().top(), qRound(v->chart()->plotArea().bottom()));
+            auto* title = v->findChild<QLabel*>(QStringLiteral("chartTitle"));
+            QVERIFY(title && title->isVisible());
+            QCOMPARE(shownText(title), v->chart()->title());
+            QCOMPARE_GE(title->height(), title->heightForWidth(title->width()));
+            QCOMPARE_LE(title->geometry().bottom(), qRound(v->chart()->plotArea().top()));
         }
         // The history's lower envelope and -μ have no entry of their own.
         const QString history =
