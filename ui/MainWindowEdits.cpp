@@ -22,7 +22,8 @@ void MainWindow::buildEditMenu() {
         [this] { return inputsValid() ? projectToJson(project()).dump() : std::string(); },
         [this](const std::string& s) {
             const Project p = parseProject(s);
-            if (p.study != m_project.study) showStudy(p.study); // undo of "Use in project"
+            // Undo of "Use in project": the project's study goes; the tab keeps what it shows.
+            m_project.study = p.study;
             showInputs(p);
         },
         this);

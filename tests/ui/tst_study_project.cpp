@@ -28,6 +28,7 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QUndoStack>
 #include <QtTest>
 
 using namespace kinstab;
@@ -201,6 +202,15 @@ private slots:
         QVERIFY2(tab->useInProject(gui), qPrintable(tab->message()));
         QVERIFY(w.inputHistory()->isModified()); // Open or Quit now ask first
         QVERIFY(w.isWindowModified());
+        // Undo takes the study out of the project again; the tab keeps its results. Redo.
+        const std::optional<ProjectStudy> used = w.project().study;
+        QVERIFY(used && used->spec == gui.toStdString());
+        w.inputHistory()->stack()->undo();
+        QVERIFY(!w.project().study);
+        QVERIFY(!w.inputHistory()->isModified());
+        QCOMPARE(criticalColumn(tab->table()), shown);
+        w.inputHistory()->stack()->redo();
+        QVERIFY(w.project().study == used);
         const QString results = dir_.filePath("gui-study.jsonl");
         QCOMPARE(readAll(results).toStdString(), tab->rows());
 
