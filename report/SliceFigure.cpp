@@ -33,7 +33,13 @@ void paintSlice(QPainter& p, const QRectF& area, const SliceData& s,
     for (double g : s.gamma)
         if (std::isfinite(g)) gMax = std::max(gMax, g);
     const std::vector<double> yt = niceTicks(0, std::max(gMax, 1e-3) * 1.08, 5);
-    const PlotFrame fr(area, s.amplitudes.front(), s.amplitudes.back(), 0, yt.back());
+    // The legend goes in a strip under the axes: inside the plot it covered the curve above
+    // A_crit wherever the code lines lie far left.
+    const FigureScale scale{area.width()};
+    const std::size_t entries = (s.aCrit ? 1 : 0) + codes.size();
+    const double strip = entries > 0 ? legendRowsHeight(scale, entries, 3) : 0.0;
+    const QRectF plotArea = area.adjusted(0, 0, 0, -strip);
+    const PlotFrame fr(plotArea, s.amplitudes.front(), s.amplitudes.back(), 0, yt.back());
     p.save();
     p.setRenderHint(QPainter::Antialiasing);
     fr.drawAxes(p, QStringLiteral("peak floor acceleration A (g)"), gammaLabel);
@@ -55,7 +61,6 @@ void paintSlice(QPainter& p, const QRectF& area, const SliceData& s,
     }
     flush();
     std::vector<LegendEntry> legend;
-    double rightmost = fr.plot().left();
     if (s.aCrit) {
         verticalLine(p, fr, *s.aCrit, QColor(200, 30, 30), Qt::SolidLine);
         legend.push_back({QStringLiteral("A_crit = %1 g").arg(accelG(*s.aCrit)),
@@ -64,14 +69,14 @@ void paintSlice(QPainter& p, const QRectF& area, const SliceData& s,
     for (std::size_t k = 0; k < codes.size(); ++k) {
         const QColor colour = codes[k].colour;
         verticalLine(p, fr, codes[k].ratio, colour, Qt::DashLine);
-        rightmost = std::max(rightmost, fr.mapX(codes[k].ratio));
         legend.push_back(
             {QStringLiteral("%1: %2").arg(codes[k].label).arg(codes[k].ratio, 0, 'f', 3), colour,
              Qt::DashLine});
     }
-    // Between the code lines and A_crit, where γc = 0 leaves the plot empty.
-    const double u = fr.scale().unit();
-    drawLegend(p, fr.scale(), QPointF(rightmost + 1.5 * u, fr.plot().top() + 1.5 * u), legend);
+    if (!legend.empty())
+        drawLegendRows(p, fr.scale(),
+                       QRectF(fr.plot().left(), plotArea.bottom(), fr.plot().width(), strip),
+                       legend, 3);
     p.restore();
 }
 

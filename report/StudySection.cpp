@@ -9,6 +9,7 @@
 #include "core/records/RecordReader.h"
 #include "core/study/Fragility.h"
 #include "core/study/StudyResults.h"
+#include "core/study/StudyRowsMatch.h"
 #include "core/study/StudyRunner.h"
 #include "core/study/StudySpec.h"
 #include "report/CurveFigure.h"
@@ -55,13 +56,21 @@ std::vector<StudyRow> rowsOfRun(const StudySpec& spec) {
     return rows;
 }
 
+// Results of another study than the file now says (edited after the run) are refused, not
+// printed as the study's.
 std::vector<StudyRow> studyRows(const ProjectStudy& ps, const StudySpec& spec) {
     if (ps.results.empty()) return rowsOfRun(spec);
+    std::vector<StudyRow> rows;
     try {
-        return readStudyRows(ps.results);
+        rows = readStudyRows(ps.results);
     } catch (const StudyRowError& e) {
         throw ReportError("study.results = '" + ps.results + "': " + e.what());
     }
+    const std::string dir = QFileInfo(qs(ps.spec)).absolutePath().toStdString();
+    if (const std::string m = studyRowsMismatch(spec, dir, rows); !m.empty())
+        throw ReportError("study.results = '" + ps.results + "': not the results of " + ps.spec +
+                          " (" + m + "); run the study again or remove study.results");
+    return rows;
 }
 
 StudySpec studySpec(const ProjectStudy& ps) {

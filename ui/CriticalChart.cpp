@@ -28,8 +28,7 @@ CriticalChart::CriticalChart(QWidget* parent)
     QFont small = c->legend()->font();
     small.setPointSizeF(small.pointSizeF() * 0.85);
     c->legend()->setFont(small);
-    installDockedChart(this, c, tr("Critical amplitude A_crit(f) and the code ratios"),
-                       Qt::AlignBottom);
+    installDockedChart(this, c, tr("Critical amplitude A_crit(f) and the code ratios"));
 }
 
 void CriticalChart::setData(const SurfaceOverlays& o, double fMin, double fMax) {

@@ -109,12 +109,16 @@ MainWindow::MainWindow(QWidget* parent)
     // In scroll areas: their minimum sizes must not grow the window past 1280×800.
     m_centre->addTab(scrollable(m_friction), tr("Friction"));
     m_centre->addTab(scrollable(new FloorsView([this] { return project(); })), tr("Floors"));
-    auto* study = new StudyTab;
-    m_centre->addTab(scrollable(study), tr("Study"));
-    connect(study, &StudyTab::studyChosen, this, [this](const QString& spec) {
-        m_project.study = ProjectStudy{spec.toStdString(), {}}; // the report runs it
-        statusBar()->showMessage(tr("The project's study is %1; save to keep it").arg(spec), 5000);
-    });
+    m_study = new StudyTab;
+    m_centre->addTab(scrollable(m_study), tr("Study"));
+    connect(m_study, &StudyTab::studyChosen, this,
+            [this](const QString& spec, const QString& results) {
+                // No results: the report runs the study. An undoable, unsaved change.
+                m_project.study = ProjectStudy{spec.toStdString(), results.toStdString()};
+                m_undo->recordChange();
+                statusBar()->showMessage(tr("The project's study is %1; save to keep it").arg(spec),
+                                         5000);
+            });
     setCentralWidget(m_centre);
     buildActions();
     installHelpMenu(this);

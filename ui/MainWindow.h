@@ -45,6 +45,7 @@ class RecordsTab;
 class NumericsView;
 class FrictionPanel;
 class StaleFrame;
+class StudyTab;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -88,6 +89,7 @@ public:
     CodesPanel* codesPanel() const { return m_codesPanel; }
     VerdictPanel* verdictPanel() const { return m_verdict; }
     TeachingView* teachingView() const { return m_teaching; }
+    StudyTab* studyTab() const { return m_study; }
     const QString& projectPath() const { return m_path; }
     // Undo/redo of the inputs and the modified mark (ui/InputHistory.h).
     InputHistory* inputHistory() const { return m_undo; }
@@ -130,7 +132,8 @@ private:
     enum class Unsaved { Proceed, Keep, Cancel };
     // Asks Save / Discard / Cancel (and "Keep for next start" when canKeep) if modified.
     Unsaved askToSave(bool canKeep = false);
-    void showInputs(const Project& p); // the panels only: no result is cleared
+    void showInputs(const Project& p);                    // the panels only: no result is cleared
+    void showStudy(const std::optional<ProjectStudy>& s); // the project's, in the Study tab
     void arrangeDocks();
     void updateCodes();
     void updateTitle();
@@ -178,6 +181,7 @@ private:
     TeachingView* m_teaching = nullptr;
     RecordsTab* m_records = nullptr;
     NumericsView* m_numerics = nullptr;
+    StudyTab* m_study = nullptr;
     FrictionPanel* m_friction = nullptr;
     RecentFiles* m_recent = nullptr;
     SweepRunner* m_runner;

@@ -20,7 +20,13 @@ namespace kinstab::ui {
 void MainWindow::buildEditMenu() {
     m_undo = new InputHistory(
         [this] { return inputsValid() ? projectToJson(project()).dump() : std::string(); },
-        [this](const std::string& s) { showInputs(parseProject(s)); }, this);
+        [this](const std::string& s) {
+            const Project p = parseProject(s);
+            // Undo of "Use in project": the project's study goes; the tab keeps what it shows.
+            m_project.study = p.study;
+            showInputs(p);
+        },
+        this);
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     QAction* undo = m_undo->stack()->createUndoAction(this, tr("&Undo"));
     undo->setShortcuts(QKeySequence::Undo);

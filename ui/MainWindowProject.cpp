@@ -15,6 +15,7 @@
 #include "ui/ModelPanel.h"
 #include "ui/RecentFiles.h"
 #include "ui/SlabPanel.h"
+#include "ui/StudyTab.h"
 #include "ui/SurfaceView.h"
 #include "ui/VerdictPanel.h"
 
@@ -54,6 +55,7 @@ Project MainWindow::project() const {
 void MainWindow::showProject(const Project& p) {
     clearResults(); // no result of the previous project may stand under this one's title
     m_project = p;
+    showStudy(p.study); // none: the Study tab is cleared, as the other results are
     showInputs(p);
     m_undo->reset(); // a fresh start: nothing to undo, nothing unsaved
     m_undo->markSaved();
@@ -76,6 +78,11 @@ void MainWindow::showInputs(const Project& p) {
     updateRunState();
     updateTitle();
     inputsChanged();
+}
+
+void MainWindow::showStudy(const std::optional<ProjectStudy>& s) {
+    m_project.study = s;
+    m_study->showProjectStudy(s, m_path.isEmpty() ? QString() : QFileInfo(m_path).absolutePath());
 }
 
 void MainWindow::updateCodes() {
@@ -216,7 +223,9 @@ void MainWindow::restoreSettings() {
     const QString kept = s.value(keptInputsKey).toString();
     if (kept.isEmpty()) return;
     try {
-        showInputs(parseProject(kept.toStdString()));
+        const Project k = parseProject(kept.toStdString());
+        if (k.study != m_project.study) showStudy(k.study);
+        showInputs(k);
         m_undo->recordChange(); // one undoable step: the title shows them as unsaved
         statusBar()->showMessage(tr("Unsaved inputs kept from the last session"), 8000);
     } catch (const std::exception&) {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/StudyTab.h"
+#include "ui/StudyTabOutcome.h"
 
 #include "core/base/TextInput.h"
 #include "core/io/AtomicFile.h"
@@ -8,6 +9,7 @@
 #include "core/study/FragilityText.h"
 #include "core/study/StudyRunner.h"
 #include "ui/FragilityChart.h"
+#include "ui/StaleFrame.h"
 
 #include <nlohmann/json.hpp>
 
@@ -37,13 +39,6 @@
 #include <sstream>
 
 namespace kinstab::ui {
-
-struct StudyTab::Outcome {
-    std::string rows, error;
-    bool cancelled = false;
-    std::vector<StudyRow> parsed;
-    std::vector<Fragility> fragility;
-};
 
 namespace {
 
@@ -85,15 +80,17 @@ std::shared_ptr<StudyTab::Outcome> runWorker(const std::string& json, SweepContr
 } // namespace
 
 StudyTab::StudyTab(QWidget* parent)
-    : QWidget(parent), m_folder(new QLineEdit(this)), m_include(new QLineEdit("*.AT2", this)),
-      m_exclude(new QLineEdit("*UP*, *DWN*", this)), m_measure(new QComboBox(this)),
-      m_saPeriod(spin(0.01, 20, 1.0, 2, " s")), m_mu(new QLineEdit("0.4,0.6", this)),
-      m_tstar(new QLineEdit("0.099", this)), m_floors(new QLineEdit(this)),
+    : QWidget(parent), m_folder(new QLineEdit(this)), m_include(new QLineEdit(this)),
+      m_exclude(new QLineEdit(this)), m_measure(new QComboBox(this)),
+      m_saPeriod(spin(0.01, 20, 1.0, 2, " s")), m_mu(new QLineEdit(this)),
+      m_tstar(new QLineEdit(this)), m_floors(new QLineEdit(this)),
       m_maxG(spin(0.01, 100, 3.0, 2, " g")), m_step(spin(0.001, 1, 0.02, 3, " g")),
       m_run(new QPushButton(tr("Run study"), this)), m_cancel(new QPushButton(tr("Cancel"), this)),
       m_export(new QPushButton(tr("Export…"), this)), m_progress(new QProgressBar(this)),
-      m_status(new QLabel(this)), m_chart(new QChartView(new QChart, this)),
-      m_table(new QTableWidget(0, 6, this)) {
+      m_status(new QLabel(this)),
+      m_stale(
+          new QLabel(tr("The results below are for the previous parameters — run again."), this)),
+      m_chart(new QChartView(new QChart, this)), m_table(new QTableWidget(0, 6, this)) {
     m_measure->addItems({"pga", "sa"});
     m_floors->setPlaceholderText(tr("none: the ground record drives the slab"));
     m_folder->setPlaceholderText(tr("a folder of accelerograms (AT2, COSMOS, CSMIP V2, ...)"));
@@ -129,6 +126,10 @@ StudyTab::StudyTab(QWidget* parent)
     m_cancel->setEnabled(false);
     m_export->setEnabled(false);
     m_status->setWordWrap(true);
+    m_stale->setObjectName(QStringLiteral("studyStale")); // tests find it by name
+    m_stale->setStyleSheet(StaleFrame::staleStyle());
+    m_stale->setContentsMargins(8, 3, 8, 3);
+    m_stale->hide();
     m_chart->setRenderHint(QPainter::Antialiasing);
     m_chart->setMinimumHeight(280);
     m_table->setHorizontalHeaderLabels(
@@ -143,6 +144,7 @@ StudyTab::StudyTab(QWidget* parent)
     layout->addLayout(form);
     layout->addLayout(bar);
     layout->addWidget(m_status);
+    layout->addWidget(m_stale);
     layout->addWidget(split, 1);
 
     connect(browse, &QPushButton::clicked, this, [this] {
@@ -180,6 +182,12 @@ StudyTab::StudyTab(QWidget* parent)
         },
         Qt::QueuedConnection);
     connect(&m_watcher, &QFutureWatcherBase::finished, this, &StudyTab::onFinished);
+    for (QLineEdit* e : {m_folder, m_include, m_exclude, m_mu, m_tstar, m_floors})
+        connect(e, &QLineEdit::textChanged, this, &StudyTab::updateStaleness);
+    for (QDoubleSpinBox* b : {m_saPeriod, m_maxG, m_step})
+        connect(b, &QDoubleSpinBox::valueChanged, this, &StudyTab::updateStaleness);
+    connect(m_measure, &QComboBox::currentTextChanged, this, &StudyTab::updateStaleness);
+    clear();
 }
 
 StudyTab::~StudyTab() {
@@ -287,29 +295,6 @@ bool StudyTab::openStudy(const QString& path) {
     return true;
 }
 
-bool StudyTab::useInProject(const QString& savePath) {
-    const std::string text = studyJson();
-    if (m_studyFile.isEmpty() || text != m_openedText) {
-        if (savePath.isEmpty()) {
-            m_status->setText(tr("Save the study to a file first: the project names a file."));
-            return false;
-        }
-        try {
-            (void)studyFromJsonText(text, "");
-        } catch (const StudyError& e) {
-            m_status->setText(tr("Cannot use the study: %1").arg(e.what()));
-            return false;
-        }
-        if (!save(savePath, text + "\n")) return false;
-        m_studyFile = savePath;
-        m_openedText = text;
-    }
-    emit studyChosen(QFileInfo(m_studyFile).absoluteFilePath());
-    m_status->setText(
-        tr("The project's study is now %1; save the project to keep it.").arg(m_studyFile));
-    return true;
-}
-
 bool StudyTab::isRunning() const {
     return m_watcher.isRunning();
 }
@@ -326,9 +311,23 @@ void StudyTab::run() {
         emit progressed(static_cast<int>(done), static_cast<int>(total)); // queued to the GUI
     };
     const std::string json = studyJson();
-    m_watcher.setFuture(
-        QtConcurrent::run([json, control] { return runWorker(json, control.get()); }));
-    m_status->setText(tr("Running the study…"));
+    startJob(
+        [json, control] {
+            auto o = runWorker(json, control.get());
+            o->spec = json;
+            return o;
+        },
+        tr("Running the study…"));
+}
+
+void StudyTab::startJob(std::function<std::shared_ptr<Outcome>()> job, const QString& status) {
+    const unsigned generation = m_generation;
+    m_watcher.setFuture(QtConcurrent::run([job, generation] {
+        auto o = job();
+        o->generation = generation;
+        return o;
+    }));
+    m_status->setText(status);
     m_progress->setValue(0);
     m_run->setEnabled(false);
     m_cancel->setEnabled(true);
@@ -342,21 +341,37 @@ void StudyTab::onFinished() {
     m_run->setEnabled(true);
     m_cancel->setEnabled(false);
     const std::shared_ptr<Outcome> o = m_watcher.result();
+    if (o->generation != m_generation) return; // of a study cleared since
     if (!o->error.empty()) {
         m_status->setText(tr("Cannot run the study: %1").arg(QString::fromStdString(o->error)));
+    } else if (!o->notice.isEmpty()) {
+        m_status->setText(o->notice);
     } else if (o->cancelled) {
         m_status->setText(tr("Cancelled: nothing is shown of a partial study."));
     } else {
-        m_rows = o->rows;
-        m_parsed = o->parsed;
-        m_fragility = o->fragility;
-        fillFragilityChart(m_chart->chart(), m_fragility);
-        fillTable();
-        m_export->setEnabled(true);
-        m_status->setText(
-            tr("%1 cases, %2 parameter sets.").arg(m_parsed.size()).arg(m_fragility.size()));
+        showResults(*o);
     }
     emit finished();
+}
+
+void StudyTab::showResults(const Outcome& o) {
+    m_rows = o.rows;
+    m_parsed = o.parsed;
+    m_fragility = o.fragility;
+    m_resultsSpec = o.spec;
+    m_resultsFile = o.file;
+    fillFragilityChart(m_chart->chart(), m_fragility);
+    fillTable();
+    m_export->setEnabled(true);
+    const int done = static_cast<int>(m_parsed.size());
+    if (done > 0) { // read back, not run: the bar shows the study complete all the same
+        m_progress->setRange(0, done);
+        m_progress->setValue(done);
+    }
+    QString text = tr("%1 cases, %2 parameter sets.").arg(m_parsed.size()).arg(m_fragility.size());
+    if (!o.file.isEmpty()) text += tr(" Read from %1.").arg(o.file);
+    m_status->setText(text);
+    updateStaleness();
 }
 
 void StudyTab::fillTable() {

@@ -4,7 +4,11 @@
 // periods; every case's critical intensity found off the GUI thread, with progress and cancel;
 // then the fragility curves (fit, bootstrap bounds, empirical points), the per-record table and
 // export of the rows (JSONL, as kinstab-cli study writes them) and of the fragility (JSON).
+// The project's study (core/io/StudyJson.h) is shown here when a project is opened, with its
+// results read back when the project names them or they lie next to it; results are marked stale
+// as soon as the fields no longer describe the study they came from.
 
+#include "core/io/StudyJson.h"
 #include "core/study/Fragility.h"
 #include "core/sweep/SweepControl.h"
 
@@ -14,7 +18,9 @@
 #include <QStringList>
 #include <QWidget>
 
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 class QChartView;
@@ -48,9 +54,21 @@ public:
     // read or its records are not all in one folder (the tab shows one folder).
     bool openStudy(const QString& path);
     // Makes the study the project's (signal studyChosen): the file opened last, unless the
-    // fields were run or edited since, in which case they are written to savePath first.
+    // fields were run or edited since, in which case they are written to savePath first. Results
+    // that are current go with it: their file, or the rows of the run written next to the study
+    // file as NAME.jsonl; stale results do not (the report then runs the study).
     bool useInProject(const QString& savePath);
     QString studyFile() const { return m_studyFile; }
+
+    // The project's study, shown when a project is opened (none: the tab is cleared). Its
+    // results are read off the GUI thread (signal finished) from study.results, else from
+    // NAME.jsonl beside the project or the study file; rows of another study are not shown.
+    void showProjectStudy(const std::optional<ProjectStudy>& study, const QString& projectDir);
+    // Back to a new tab: default fields, no study file, no results; a running study is dropped.
+    void clear();
+    QString resultsFile() const { return m_resultsFile; } // the file the results came from
+    // Results are shown but the fields were edited since they were made.
+    bool resultsStale() const;
 
     void run();
     void cancel();
@@ -65,12 +83,16 @@ public:
 
 signals:
     void finished();
-    void studyChosen(const QString& specPath);
+    void studyChosen(const QString& specPath, const QString& resultsPath);
     void progressed(int done, int total); // from the worker, delivered queued
 
 private:
     void onFinished();
     void fillTable();
+    void showResults(const Outcome& o);
+    void updateStaleness();
+    void startJob(std::function<std::shared_ptr<Outcome>()> job, const QString& status);
+    QString currentResultsFile(); // "" when none is current; writes the run's rows if need be
     bool save(const QString& path, const std::string& text); // false: the reason in message()
 
     QLineEdit* m_folder;
@@ -88,6 +110,7 @@ private:
     QPushButton* m_export;
     QProgressBar* m_progress;
     QLabel* m_status;
+    QLabel* m_stale; // "results are for the previous parameters — run again"
     QChartView* m_chart;
     QTableWidget* m_table;
     QFutureWatcher<std::shared_ptr<Outcome>> m_watcher;
@@ -95,6 +118,9 @@ private:
     std::string m_rows;
     std::vector<StudyRow> m_parsed;
     std::vector<Fragility> m_fragility;
+    std::string m_resultsSpec; // studyJson() of the fields the shown results are for
+    QString m_resultsFile;     // the file they were read from ("" after a run)
+    unsigned m_generation = 0; // bumped by clear(): a job of an older generation is dropped
     nlohmann::json m_base = nlohmann::json::object(); // the study file opened last
     QString m_studyFile;                              // its path; empty: none opened
     std::string m_openedText;                         // studyJson() right after opening

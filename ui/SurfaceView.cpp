@@ -97,6 +97,9 @@ QSurface3DSeries* makeOverlay(const QColor& color) {
 namespace {
 constexpr int kWireframeLimit = 60 * 60; // grid points up to which the wireframe is on
 constexpr float kCameraX = -40.0f, kCameraY = 22.0f, kZoom = 80.0f;
+// From straight above the axis labels stand outside the plot; at 100 % the A axis title fell
+// off the bottom of a wide view (1920 x 1080). Top: the plot at 85 %, its titles inside.
+constexpr float kTopZoom = 85.0f;
 } // namespace
 
 SurfaceView::SurfaceView(QWidget* parent)
@@ -141,8 +144,10 @@ SurfaceView::SurfaceView(QWidget* parent)
     body->addWidget(m_stack, 1);
     body->addWidget(m_bar);
     layout->addLayout(body, 1);
-    // No word wrap: a wrapped label's minimum height would stretch the window; two fixed lines.
-    m_legend->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    // Wrapped between entries (never inside one): on one line each, the code ratios ran off
+    // the right edge of a 1280 px window.
+    m_legend->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_legend->setWordWrap(true);
     m_legend->setTextFormat(Qt::RichText);
     layout->addWidget(m_legend);
     showPage();
@@ -290,7 +295,7 @@ void SurfaceView::resetView() {
         camera->setCameraPreset(Q3DCamera::CameraPresetDirectlyAbove);
     else
         camera->setCameraPosition(kCameraX, kCameraY, kZoom);
-    camera->setZoomLevel(m_mode == SurfaceMode::Top ? 100.0f : kZoom);
+    camera->setZoomLevel(m_mode == SurfaceMode::Top ? kTopZoom : kZoom);
     camera->setTarget(QVector3D(0, 0, 0));
 }
 
@@ -466,8 +471,8 @@ void SurfaceView::rebuildOverlays() {
 
 void SurfaceView::updateLegend() {
     auto swatch = [](const QColor& c, const QString& text) {
-        return QStringLiteral(
-                   "<span style='color:%1; font-size:large'>&#9632;</span>&nbsp;%2&nbsp;&nbsp; ")
+        return QStringLiteral("<span style='white-space:nowrap'><span style='color:%1; "
+                              "font-size:large'>&#9632;</span> %2</span>&nbsp;&nbsp; ")
             .arg(c.name(), text);
     };
     // The γc colours are read off the colour bar; the legend names the lines drawn over them.

@@ -19,6 +19,7 @@ namespace kinstab {
 struct ProjectStudy {
     std::string spec;    // the study file (absolute once loaded)
     std::string results; // the study's JSONL results; empty: the report runs the study
+    bool operator==(const ProjectStudy&) const = default;
 };
 
 // baseDir: the project file's directory ("" keeps paths as they are).

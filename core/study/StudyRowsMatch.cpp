@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/study/StudyRowsMatch.h"
+
+#include "core/base/TextInput.h"
+#include "core/study/StudyCase.h"
+
+#include <cmath>
+#include <filesystem>
+#include <optional>
+
+namespace kinstab {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Rows are written with the shortest text that reads back as the same double, so equal inputs
+// compare equal; the derived search limit carries a few roundings.
+bool same(double a, double b, double rel = 0.0) {
+    return a == b || std::abs(a - b) <= rel * std::max(std::abs(a), std::abs(b));
+}
+
+std::string text(double x) {
+    return formatDouble(x);
+}
+
+std::string text(const std::optional<double>& x) {
+    return x ? formatDouble(*x) : std::string("none");
+}
+
+// The record's file a row names: its label, relative to the study file unless absolute.
+fs::path rowFile(const std::string& label, const std::string& studyDir) {
+    const fs::path p(label);
+    return (p.is_absolute() ? p : fs::path(studyDir) / p).lexically_normal();
+}
+
+std::string caseMismatch(const StudySpec& s, const std::string& dir, const StudyRow& r,
+                         const StudyCase& c) {
+    if (rowFile(r.record, dir) != fs::path(c.record->file).lexically_normal())
+        return "record " + r.record + ", the study file says " + c.record->label;
+    if (!same(r.mu, c.mu)) return "mu = " + text(r.mu) + ", the study file says " + text(c.mu);
+    if (!same(r.tstar, c.tstar))
+        return "tstar = " + text(r.tstar) + ", the study file says " + text(c.tstar);
+    const std::optional<double> period = c.floor ? std::optional(c.floor->period) : std::nullopt;
+    const std::optional<double> damping = c.floor ? std::optional(c.floor->damping) : std::nullopt;
+    if (r.floorPeriod != period || r.floorDamping != damping)
+        return "floor filter T = " + text(r.floorPeriod) + " s, zeta = " + text(r.floorDamping) +
+               ", the study file says T = " + text(period) + " s, zeta = " + text(damping);
+    if (!same(r.limit, s.limit))
+        return "limit = " + text(r.limit) + ", the study file says " + text(s.limit);
+    if (r.measure != intensityName(s.intensity))
+        return "measure " + r.measure + ", the study file says " + intensityName(s.intensity);
+    if (r.criticalIntensity && r.criticalPeak && *r.criticalIntensity > 0) {
+        const double maxG = r.limitIntensity * *r.criticalPeak / *r.criticalIntensity;
+        if (!same(maxG, s.search.to, 1e-9))
+            return "search up to " + text(maxG) + " g, the study file says " + text(s.search.to);
+    }
+    return {};
+}
+
+} // namespace
+
+std::string studyRowsMismatch(const StudySpec& spec, const std::string& studyDir,
+                              const std::vector<StudyRow>& rows) {
+    const std::size_t cases = studyCaseCount(spec);
+    if (rows.size() != cases)
+        return std::to_string(rows.size()) + " rows, the study file has " + std::to_string(cases) +
+               " cases";
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        if (rows[i].index != i)
+            return "row " + std::to_string(i + 1) + " is case " + std::to_string(rows[i].index);
+        const std::string m = caseMismatch(spec, studyDir, rows[i], studyCase(spec, i));
+        if (!m.empty()) return "row " + std::to_string(i + 1) + ": " + m;
+    }
+    return {};
+}
+
+} // namespace kinstab

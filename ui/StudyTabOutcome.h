@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// What a Study tab job (a run, or results read back) hands to the GUI thread (ui/StudyTab.h).
+
+#include "core/study/Fragility.h"
+#include "ui/StudyTab.h"
+
+#include <QString>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace kinstab::ui {
+
+struct StudyTab::Outcome {
+    std::string rows, error;
+    bool cancelled = false;
+    std::vector<StudyRow> parsed;
+    std::vector<Fragility> fragility;
+    unsigned generation = 0;
+    std::string spec; // studyJson() of the fields the results are for
+    QString file;     // the results file read ("": a run)
+    QString notice;   // why a results file is not shown
+};
+
+// The job that reads a results file back, checks it is the study file's and fits the fragility
+// (ui/StudyTabProject.cpp); runs off the GUI thread.
+std::shared_ptr<StudyTab::Outcome> readStudyResults(const QString& specPath,
+                                                    const QString& rowsPath);
+
+} // namespace kinstab::ui
