@@ -62,7 +62,7 @@ QString joined(const std::vector<double>& values) {
     QStringList out;
     for (double v : values)
         out << QString::fromStdString(formatDouble(v));
-    return out.join(',');
+    return out.join(", ");
 }
 
 // The floor periods of the study's floor filters, each once ("" when the ground drives all).
