@@ -85,13 +85,26 @@ constexpr int kCurvePoints = 41;
 
 Fragility fragilityOf(const std::vector<StudyRow>& rows, const BootstrapSettings& b) {
     std::vector<const StudyRow*> ptrs;
-    for (const StudyRow& r : rows)
-        ptrs.push_back(&r);
-    std::sort(ptrs.begin(), ptrs.end(), [](auto* x, auto* y) { return x->index < y->index; });
     Fragility f;
-    if (ptrs.empty()) return f;
+    // A fitted_sine row without a fit is no record surviving the search: it is left out.
+    for (const StudyRow& r : rows)
+        if (r.noFit.empty())
+            ptrs.push_back(&r);
+        else
+            ++f.withoutFit;
+    std::sort(ptrs.begin(), ptrs.end(), [](auto* x, auto* y) { return x->index < y->index; });
+    if (ptrs.empty()) {
+        if (!rows.empty()) f.parameters = rows.front();
+        f.noFit = "no record has an envelope fit";
+        return f;
+    }
     f.parameters = *ptrs.front();
     f.records = ptrs.size();
+    if (f.parameters.scale) {
+        const auto given = std::count_if(ptrs.begin(), ptrs.end(),
+                                         [](const StudyRow* r) { return r->collapsesAsGiven; });
+        f.collapsedAsGiven = static_cast<double>(given) / static_cast<double>(ptrs.size());
+    }
     f.points = empiricalPoints(ptrs);
     f.collapsed = f.points.size();
     f.fit = fitLognormal(sampleOf(ptrs), &f.noFit);

@@ -29,6 +29,8 @@ struct FragilityCurvePoint {
 struct Fragility {
     StudyRow parameters; // the set's first row: mu, t*, floor, measure
     std::size_t records = 0, collapsed = 0;
+    std::size_t withoutFit = 0; // fitted_sine rows whose motion has no envelope fit: left out
+    std::optional<double> collapsedAsGiven; // fraction of the records that collapse as given
     std::optional<LognormalFit> fit;
     std::string noFit; // why there is no fit
     double medianLower = 0, medianUpper = 0, betaLower = 0, betaUpper = 0;
