@@ -2,7 +2,8 @@
 #pragma once
 // Collapse fragility per parameter set of a study (docs/studies.md): the lognormal fit to the
 // records' critical intensities (censored where a record never collapses), confidence bounds by
-// a seeded bootstrap over the records, and the empirical points.
+// a seeded bootstrap over the records, and the empirical points (Kaplan-Meier, censored records
+// at their limit intensities).
 
 #include "core/study/LognormalFit.h"
 #include "core/study/StudyRow.h"
@@ -17,7 +18,7 @@ namespace kinstab {
 struct FragilityPoint {
     std::string record;
     double intensity = 0;   // g, the record's critical intensity
-    double probability = 0; // rank / number of records (censored records count in the total)
+    double probability = 0; // Kaplan-Meier estimate at the intensity (core/study/KaplanMeier.h)
 };
 
 struct FragilityCurvePoint {
