@@ -226,6 +226,22 @@ private slots:
         QCOMPARE(set["records_without_fit"].toInt(), 1);
         QCOMPARE(set["records"].toInt(), 0);
     }
+    void theLevelsExampleRuns() {
+        // resources/examples/study-levels.json: 6 records x levels {1, 8, 16} x 2 motions.
+        const QString spec = KINSTAB_SOURCE_DIR "/resources/examples/study-levels.json";
+        const Run count = cli({"study", "--spec", spec, "--count"});
+        QCOMPARE(count.out, QByteArray("36\n"));
+        const Run r = cli({"study", "--spec", spec});
+        QVERIFY2(r.code == 0, r.err);
+        const auto rows = rowsOf(r.out);
+        QCOMPARE(rows.size(), 36);
+        QCOMPARE(rows[0]["level"].toInt(), 1);
+        QCOMPARE(rows[6]["motion"].toString(), QString("fitted_sine"));
+        QCOMPARE(rows[35]["level"].toInt(), 16);
+        // Below mu nothing slips: a collapse needs a driving peak of at least mu (0.6).
+        for (const QJsonObject& row : rows)
+            QVERIFY(row["critical_peak_g"].isNull() || row["critical_peak_g"].toDouble() >= 0.6);
+    }
     void badMotionNamesTheField() {
         const QByteArray rec = "{\"path\": \"" + kElc + "\"}";
         QByteArray err = refusal(study(rec, "\"parameters\": {\"motion\": [\"sine\"]}"));
