@@ -2,12 +2,9 @@
 #include "core/study/StudyRunner.h"
 
 #include "core/building/FloorMotions.h"
-#include "core/check/RecordAnalysis.h"
 #include "core/excitation/FloorFilter.h"
-#include "core/excitation/FourierSpectrum.h"
 #include "core/excitation/RecordExcitation.h"
-#include "core/sweep/CriticalRecordScale.h"
-#include "core/sweep/Sweep.h"
+#include "core/study/CaseCritical.h"
 
 #include <algorithm>
 #include <atomic>
@@ -49,45 +46,6 @@ std::vector<Accelerogram> levelMotions(const StudySpec& s, const Accelerogram& g
 Accelerogram caseMotion(const StudySpec& s, const StudyCase& c, const Accelerogram& ground) {
     if (c.level > 0) return levelMotions(s, ground)[static_cast<std::size_t>(c.level - 1)];
     return drivingMotion(excitationOf(*c.record, c.floor), ground);
-}
-
-// The critical peak of what drives the slab, and the peak that stands for the unscaled motion:
-// the motion's own, or the fitted envelope's for its enveloped-sine surrogate.
-struct CaseCritical {
-    std::optional<double> peak; // g
-    double unitPeak = 0;        // g
-    long runs = 0;
-    std::string noFit;
-};
-
-CaseCritical recordCritical(const Slab1DCase& slab, const Accelerogram& motion,
-                            const CriticalSearch& search) {
-    const RecordCriticalScale crit = criticalRecordScale(slab, motion, search);
-    return {crit.peak, crit.motionPeak, crit.runs, {}};
-}
-
-// The enveloped sine of docs/theory.md §3 with the envelope fitted to the motion (paper Fig. 27)
-// and the frequency of the largest peak of its Fourier amplitude spectrum (as kinstab-cli
-// record lists them), scaled as a whole like the record it stands for.
-CaseCritical fittedSineCritical(Slab1DCase slab, const Accelerogram& motion,
-                                const CriticalSearch& search) {
-    CaseCritical out;
-    out.unitPeak = maxAbs(motion.samples);
-    const std::optional<EnvelopeFit> fit = fitOrNone(motion, &out.noFit);
-    if (!fit) return out;
-    if (const std::string e = validateEnvelope(fit->alpha, fit->beta); !e.empty()) {
-        out.noFit = "the fitted envelope: " + e;
-        return out;
-    }
-    const auto peaks = spectrumPeaks(amplitudeSpectrum(motion.samples, motion.dt), 1);
-    if (peaks.empty() || !(peaks.front().frequency > 0.0)) {
-        out.noFit = "the motion's spectrum has no peak above 0 Hz";
-        return out;
-    }
-    slab.envelope = Envelope{fit->alpha, fit->beta, std::nullopt};
-    const CriticalResult r =
-        criticalAmplitude(slab1DPoint(slab), peaks.front().frequency, slab.slab.mu, search);
-    return {r.amplitude, fit->peak(), r.runs, {}};
 }
 
 // The record as given in the suite (the file times its scale) against its critical intensity.
@@ -144,9 +102,7 @@ StudyRow runStudyCase(const StudySpec& s, const StudyCase& c) {
     slab.tstar = c.tstar;
     slab.slab.mu = c.mu;
     slab.slab.limit = s.limit;
-    const CaseCritical crit = c.motion == StudyMotion::Record
-                                  ? recordCritical(slab, motion, s.search)
-                                  : fittedSineCritical(slab, motion, s.search);
+    const CaseCritical crit = caseCritical(slab, motion, c.motion, s.search);
     // The record is linear in its scale, and so are the floor filter and the building: the
     // intensity at a scale is the unscaled intensity times (scaled peak / unscaled peak) of the
     // driving motion (of its surrogate's envelope, for the fitted sine).
