@@ -3,6 +3,7 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "app/cli/StreamedOutput.h"
 #include "core/base/TextInput.h"
 #include "core/study/StudyResults.h"
 
@@ -48,14 +49,14 @@ int runMerge(const ArgList& argv) {
     if (shards.empty()) throw UsageError("no shards to merge: name the shard files");
     if (!output) throw UsageError("missing required flag -o (use - for stdout)");
     checkOutputPath("o", *output);
-    std::string merged;
+    // Rows go to a temporary file renamed into place at the end: a refused merge leaves no file.
+    StreamedOutput out(*output);
     try {
-        merged = mergeStudyShards(shards);
+        mergeStudyShards(shards, [&out](std::string_view rows) { out.write(rows); });
     } catch (const StudyRowError& e) {
         throw UsageError(e.what());
     }
-    const Args args({"-o", *output}, {"o"});
-    writeOutput(args, "o", merged);
+    out.commit();
     return 0;
 }
 

@@ -3,10 +3,14 @@
 
 #include "core/base/InputLimits.h"
 #include "core/base/TextInput.h"
+#include "core/building/ShearBuilding.h"
 #include "core/check/DesignCheck.h"
 #include "core/excitation/FloorFilter.h"
+#include "core/io/CodesJson.h"
+#include "core/io/FloorsJson.h"
 #include "core/io/JsonReader.h"
 #include "core/slab/Slab1DCase.h"
+#include "core/study/StudyCase.h"
 
 #include <fnmatch.h>
 
@@ -71,7 +75,23 @@ std::vector<fs::path> folderFiles(const fs::path& dir, const JsonReader& r) {
     return files;
 }
 
+// records[k].scale: a number in (0, kMaxStudyRecordScale], 1 when absent.
+double recordScale(const JsonReader& r) {
+    if (!r.has("scale")) return 1.0;
+    const json& v = r.raw("scale");
+    const double x = v.is_number() ? v.get<double>() : std::nan("");
+    if (!(x > 0.0 && x <= kMaxStudyRecordScale))
+        badValue(r, "scale",
+                 v.is_number()   ? formatDouble(x)
+                 : v.is_string() ? quotedToken(v.get<std::string>())
+                                 : v.dump(),
+                 "must be a number > 0 and at most " + formatDouble(kMaxStudyRecordScale));
+    return x;
+}
+
 void addRecords(const JsonReader& r, const std::string& baseDir, StudySpec& s) {
+    const double scale = recordScale(r);
+    s.asGiven = s.asGiven || r.has("scale");
     const std::string given = r.text("path", "");
     if (given.empty()) r.fail("path", "missing: a record file or a folder of records");
     fs::path path(given);
@@ -87,7 +107,7 @@ void addRecords(const JsonReader& r, const std::string& baseDir, StudySpec& s) {
         badValue(r, "path", quotedToken(given), "no such file or folder");
     if (files.empty()) badValue(r, "path", quotedToken(given), "no record file matches");
     for (const fs::path& f : files) {
-        s.records.push_back({f.string(), labelFor(f, path, given)});
+        s.records.push_back({f.string(), labelFor(f, path, given), scale});
         if (s.records.size() > kMaxStudyRecords)
             r.fail("path", "more than the limit of " + std::to_string(kMaxStudyRecords) +
                                " records in one study");
@@ -154,6 +174,62 @@ void readFloors(const JsonReader& p, StudySpec& s) {
         }
 }
 
+// "building": a project's building object; "floors": a project's floors object (stiffness
+// profile and modal damping; the slab's level is what parameters.levels crosses).
+void readBuilding(const JsonReader& top, StudySpec& s) {
+    const auto b = top.optionalObject("building");
+    if (!b) {
+        if (top.has("floors")) top.fail("floors", "needs a \"building\" to apply to");
+        return;
+    }
+    StudyBuilding sb;
+    sb.building = buildingFromJson(*b);
+    if (const auto f = top.optionalObject("floors")) {
+        sb.settings = floorSettingsFromJson(*f);
+        if (sb.settings.slabLevel) f->fail("slab_level", "a study crosses parameters.levels");
+    }
+    if (const std::string e = validateFloorSettings(sb.settings, sb.building.stories); !e.empty())
+        throw StudyError(e);
+    sb.model = modalModel(shearBuilding(sb.building, sb.settings.stiffness));
+    s.building = std::move(sb);
+}
+
+// parameters.levels: whole numbers 1..stories of the study's building.
+void readLevels(const JsonReader& r, StudySpec& s) {
+    if (!r.has("levels")) return;
+    if (!s.building) r.fail("levels", "needs the study's \"building\"");
+    const int stories = s.building->building.stories;
+    const std::vector<double> v = r.numbers("levels");
+    if (v.empty() || v.size() > kMaxStudyListValues)
+        r.fail("levels", "expected 1 to " + std::to_string(kMaxStudyListValues) + " levels");
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        if (!(v[i] >= 1.0 && v[i] <= stories && v[i] == std::floor(v[i])))
+            badValue(r, "levels[" + std::to_string(i) + "]", formatDouble(v[i]),
+                     "must be a level from 1 to " + std::to_string(stories) + " (the roof)");
+        s.levels.push_back(static_cast<int>(v[i]));
+    }
+}
+
+// parameters.motion: ["record", "fitted_sine"], each at most once.
+void readMotions(const JsonReader& r, StudySpec& s) {
+    if (!r.has("motion")) return;
+    const json& a = r.raw("motion");
+    if (!a.is_array() || a.empty() || a.size() > 2)
+        r.fail("motion", "expected [\"record\"], [\"fitted_sine\"] or both");
+    s.motions.clear();
+    s.motionGiven = true;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const std::string key = "motion[" + std::to_string(i) + "]";
+        const std::string m = a[i].is_string() ? a[i].get<std::string>() : a[i].dump();
+        const StudyMotion kind = m == "record" ? StudyMotion::Record : StudyMotion::FittedSine;
+        if (m != "record" && m != "fitted_sine")
+            badValue(r, key, quotedToken(m), "must be \"record\" or \"fitted_sine\"");
+        if (std::find(s.motions.begin(), s.motions.end(), kind) != s.motions.end())
+            badValue(r, key, quotedToken(m), "appears twice");
+        s.motions.push_back(kind);
+    }
+}
+
 void readParameters(const JsonReader& top, StudySpec& s) {
     const auto p = top.optionalObject("parameters");
     static const json empty = json::object();
@@ -172,6 +248,10 @@ void readParameters(const JsonReader& top, StudySpec& s) {
     if (!(s.limit > 0.0 && s.limit <= 1e3))
         badValue(r, "limit", formatDouble(s.limit), "must be > 0 and at most 1000");
     readFloors(r, s);
+    readLevels(r, s);
+    // Levels without a floor filter: the levels alone drive the slab (not the ground as well).
+    if (!s.levels.empty() && !r.has("floor_filter")) s.floors.clear();
+    readMotions(r, s);
 }
 
 void readSearch(const JsonReader& top, StudySpec& s) {
@@ -183,10 +263,6 @@ void readSearch(const JsonReader& top, StudySpec& s) {
     }
     if (const std::string e = validateCriticalSearch(s.search); !e.empty())
         throw StudyError(top.field("search") + ": " + e);
-}
-
-std::size_t caseCount(const StudySpec& s) {
-    return s.records.size() * s.mu.size() * s.tstar.size() * s.floors.size();
 }
 
 } // namespace
@@ -209,14 +285,17 @@ StudySpec studyFromJsonText(const std::string& text, const std::string& baseDir)
             top.fail("name", "more than " + std::to_string(limits::kMaxNameChars) + " characters");
         readRecords(top, baseDir, s);
         s.intensity = readIntensity(top);
+        readBuilding(top, s);
         readParameters(top, s);
         readSearch(top, s);
         // Each list is bounded, so the product cannot overflow before this check.
-        if (caseCount(s) > kMaxStudyCases)
-            throw StudyError("records x parameters: " + std::to_string(caseCount(s)) +
+        if (studyCaseCount(s) > kMaxStudyCases)
+            throw StudyError("records x parameters: " + std::to_string(studyCaseCount(s)) +
                              " cases, more than the limit of " + std::to_string(kMaxStudyCases));
         return s;
     } catch (const JsonFieldError& e) {
+        throw StudyError(e.what());
+    } catch (const InputError& e) {
         throw StudyError(e.what());
     } catch (const fs::filesystem_error& e) {
         throw StudyError(std::string("records: ") + e.what());

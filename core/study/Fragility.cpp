@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/Fragility.h"
 
+#include "core/study/KaplanMeier.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -68,14 +70,21 @@ void addBounds(Fragility& f, const std::vector<LognormalFit>& fits, double level
     }
 }
 
+// Each collapsing record at its critical intensity with the Kaplan-Meier probability there
+// (records that never collapse are censored at their limit intensities).
 std::vector<FragilityPoint> empiricalPoints(const std::vector<const StudyRow*>& rows) {
     std::vector<FragilityPoint> points;
     for (const StudyRow* r : rows)
         if (r->criticalIntensity) points.push_back({r->record, *r->criticalIntensity, 0.0});
     std::stable_sort(points.begin(), points.end(),
                      [](const auto& a, const auto& b) { return a.intensity < b.intensity; });
-    for (std::size_t i = 0; i < points.size(); ++i)
-        points[i].probability = static_cast<double>(i + 1) / static_cast<double>(rows.size());
+    const std::vector<KaplanMeierStep> steps = kaplanMeier(sampleOf(rows));
+    std::size_t k = 0;
+    for (FragilityPoint& p : points) {
+        while (steps[k].intensity < p.intensity)
+            ++k;
+        p.probability = steps[k].probability;
+    }
     return points;
 }
 
@@ -85,13 +94,26 @@ constexpr int kCurvePoints = 41;
 
 Fragility fragilityOf(const std::vector<StudyRow>& rows, const BootstrapSettings& b) {
     std::vector<const StudyRow*> ptrs;
-    for (const StudyRow& r : rows)
-        ptrs.push_back(&r);
-    std::sort(ptrs.begin(), ptrs.end(), [](auto* x, auto* y) { return x->index < y->index; });
     Fragility f;
-    if (ptrs.empty()) return f;
+    // A fitted_sine row without a fit is no record surviving the search: it is left out.
+    for (const StudyRow& r : rows)
+        if (r.noFit.empty())
+            ptrs.push_back(&r);
+        else
+            ++f.withoutFit;
+    std::sort(ptrs.begin(), ptrs.end(), [](auto* x, auto* y) { return x->index < y->index; });
+    if (ptrs.empty()) {
+        if (!rows.empty()) f.parameters = rows.front();
+        f.noFit = "no record has an envelope fit";
+        return f;
+    }
     f.parameters = *ptrs.front();
     f.records = ptrs.size();
+    if (f.parameters.scale) {
+        const auto given = std::count_if(ptrs.begin(), ptrs.end(),
+                                         [](const StudyRow* r) { return r->collapsesAsGiven; });
+        f.collapsedAsGiven = static_cast<double>(given) / static_cast<double>(ptrs.size());
+    }
     f.points = empiricalPoints(ptrs);
     f.collapsed = f.points.size();
     f.fit = fitLognormal(sampleOf(ptrs), &f.noFit);

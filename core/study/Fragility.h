@@ -2,7 +2,8 @@
 #pragma once
 // Collapse fragility per parameter set of a study (docs/studies.md): the lognormal fit to the
 // records' critical intensities (censored where a record never collapses), confidence bounds by
-// a seeded bootstrap over the records, and the empirical points.
+// a seeded bootstrap over the records, and the empirical points (Kaplan-Meier, censored records
+// at their limit intensities).
 
 #include "core/study/LognormalFit.h"
 #include "core/study/StudyRow.h"
@@ -17,7 +18,7 @@ namespace kinstab {
 struct FragilityPoint {
     std::string record;
     double intensity = 0;   // g, the record's critical intensity
-    double probability = 0; // rank / number of records (censored records count in the total)
+    double probability = 0; // Kaplan-Meier estimate at the intensity (core/study/KaplanMeier.h)
 };
 
 struct FragilityCurvePoint {
@@ -29,6 +30,8 @@ struct FragilityCurvePoint {
 struct Fragility {
     StudyRow parameters; // the set's first row: mu, t*, floor, measure
     std::size_t records = 0, collapsed = 0;
+    std::size_t withoutFit = 0; // fitted_sine rows whose motion has no envelope fit: left out
+    std::optional<double> collapsedAsGiven; // fraction of the records that collapse as given
     std::optional<LognormalFit> fit;
     std::string noFit; // why there is no fit
     double medianLower = 0, medianUpper = 0, betaLower = 0, betaUpper = 0;

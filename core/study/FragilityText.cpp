@@ -20,9 +20,13 @@ ojson setJson(const Fragility& f) {
                {"tstar", p.tstar},
                {"limit", p.limit},
                {"floor_period_s", orNull(p.floorPeriod)},
-               {"floor_damping", orNull(p.floorDamping)},
-               {"records", f.records},
-               {"collapsed", f.collapsed}};
+               {"floor_damping", orNull(p.floorDamping)}};
+    if (p.level) j["level"] = *p.level;
+    if (p.motion) j["motion"] = *p.motion;
+    j["records"] = f.records;
+    j["collapsed"] = f.collapsed;
+    if (f.withoutFit > 0) j["records_without_fit"] = f.withoutFit;
+    if (f.collapsedAsGiven) j["collapsed_as_given_fraction"] = *f.collapsedAsGiven;
     if (f.fit) {
         j["median_g"] = f.fit->median;
         j["beta"] = f.fit->beta;
@@ -64,9 +68,45 @@ ojson fragilityJson(const std::vector<Fragility>& sets, const BootstrapSettings&
             {"sets", all}};
 }
 
+namespace {
+
+// The columns a study adds when it uses levels, motions or record scales (older studies keep
+// their bytes): which of them the sets carry.
+struct ExtraColumns {
+    bool level = false, motion = false, asGiven = false;
+};
+
+ExtraColumns extraColumns(const std::vector<Fragility>& sets) {
+    ExtraColumns x;
+    for (const Fragility& f : sets) {
+        x.level = x.level || f.parameters.level.has_value();
+        x.motion = x.motion || f.parameters.motion.has_value();
+        x.asGiven = x.asGiven || f.collapsedAsGiven.has_value();
+    }
+    return x;
+}
+
+std::string extraHeader(const ExtraColumns& x) {
+    return std::string(x.level ? ",level" : "") + (x.motion ? ",motion" : "") +
+           (x.asGiven ? ",collapsed_as_given_fraction" : "");
+}
+
+std::string extraCells(const ExtraColumns& x, const Fragility& f) {
+    const StudyRow& p = f.parameters;
+    std::string out;
+    if (x.level) out += "," + (p.level ? std::to_string(*p.level) : std::string());
+    if (x.motion) out += "," + p.motion.value_or("");
+    if (x.asGiven) out += "," + cell(f.collapsedAsGiven);
+    return out;
+}
+
+} // namespace
+
 std::string fragilityCsv(const std::vector<Fragility>& sets) {
+    const ExtraColumns x = extraColumns(sets);
     std::string out = "set,mu,tstar,limit,floor_period_s,floor_damping,measure,records,collapsed,"
-                      "median_g,beta,median_lower_g,median_upper_g,beta_lower,beta_upper\n";
+                      "median_g,beta,median_lower_g,median_upper_g,beta_lower,beta_upper" +
+                      extraHeader(x) + "\n";
     for (const Fragility& f : sets) {
         const StudyRow& p = f.parameters;
         const bool bounds = f.fit && f.fitted > 0;
@@ -78,7 +118,8 @@ std::string fragilityCsv(const std::vector<Fragility>& sets) {
                cell(opt(f.fit.has_value(), f.fit ? f.fit->median : 0)) + "," +
                cell(opt(f.fit.has_value(), f.fit ? f.fit->beta : 0)) + "," +
                cell(opt(bounds, f.medianLower)) + "," + cell(opt(bounds, f.medianUpper)) + "," +
-               cell(opt(bounds, f.betaLower)) + "," + cell(opt(bounds, f.betaUpper)) + "\n";
+               cell(opt(bounds, f.betaLower)) + "," + cell(opt(bounds, f.betaUpper)) +
+               extraCells(x, f) + "\n";
     }
     return out;
 }

@@ -6,7 +6,7 @@
 namespace kinstab {
 
 std::size_t studyParameterSets(const StudySpec& s) {
-    return s.mu.size() * s.tstar.size() * s.floors.size();
+    return s.mu.size() * s.tstar.size() * (s.floors.size() + s.levels.size()) * s.motions.size();
 }
 
 std::size_t studyCaseCount(const StudySpec& s) {
@@ -19,8 +19,15 @@ StudyCase studyCase(const StudySpec& s, std::size_t index) {
     c.record = &s.records[index % s.records.size()];
     c.set = index / s.records.size();
     std::size_t rest = c.set;
-    c.floor = s.floors[rest % s.floors.size()];
-    rest /= s.floors.size();
+    c.motion = s.motions[rest % s.motions.size()];
+    rest /= s.motions.size();
+    const std::size_t drivers = s.floors.size() + s.levels.size();
+    const std::size_t driver = rest % drivers;
+    if (driver < s.floors.size())
+        c.floor = s.floors[driver];
+    else
+        c.level = s.levels[driver - s.floors.size()];
+    rest /= drivers;
     c.tstar = s.tstar[rest % s.tstar.size()];
     rest /= s.tstar.size();
     c.mu = s.mu[rest];

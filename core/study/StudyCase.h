@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The cases of a study in their fixed order (docs/studies.md): parameter sets (mu, then t*, then
-// the floor filter, the last varying fastest) on the outside, records inside, so that the records
-// of one parameter set - one fragility curve - are neighbours. A case is found from its index
+// the driver - the floor filters, then the building's levels - then the motion, the last varying
+// fastest) on the outside, records inside, so that the records of one parameter set - one
+// fragility curve - are neighbours. A case is found from its index
 // alone: no list of cases is ever built, so a study of millions of cases takes no memory for it.
 
 #include "core/study/StudySpec.h"
@@ -19,6 +20,8 @@ struct StudyCase {
     const StudyRecord* record = nullptr;
     double mu = 0, tstar = 0;
     std::optional<FloorFilterChoice> floor;
+    int level = 0; // > 0: this level of the study's building drives the slab (floor is none)
+    StudyMotion motion = StudyMotion::Record;
 };
 
 std::size_t studyCaseCount(const StudySpec& s);

@@ -4,7 +4,10 @@
 #include "core/base/TextInput.h"
 #include "core/study/StudySpec.h"
 
-#include <map>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <queue>
 #include <set>
 #include <sstream>
 
@@ -56,35 +59,91 @@ std::vector<StudyRow> readStudyRows(const std::string& path) {
     return rows;
 }
 
-std::string mergeStudyShards(const std::vector<std::string>& paths) {
-    std::map<std::size_t, std::string> lines;
-    std::size_t cases = 0;
-    std::string first;
-    for (const std::string& path : paths)
-        forEachRow(path, [&](const Line& l) {
-            if (first.empty()) {
-                cases = l.row.cases;
-                first = l.where;
-            }
-            if (l.row.cases != cases)
-                throw StudyRowError(l.where + ": a study of " + std::to_string(l.row.cases) +
-                                    " cases, but " + first + " is of " + std::to_string(cases));
-            if (!lines.emplace(l.row.index, l.text + "\n").second)
-                throw StudyRowError(l.where + ": case " + std::to_string(l.row.index) +
-                                    " appears twice");
-        });
-    if (lines.empty()) throw StudyRowError("no rows in the shards");
+namespace {
+
+// One shard being merged: its file and the line in hand.
+class ShardReader {
+public:
+    explicit ShardReader(const std::string& path) : path_(path), in_(path, std::ios::binary) {
+        std::error_code ec;
+        const auto size = std::filesystem::file_size(path, ec);
+        if (!in_ || ec) throw StudyRowError(path + ": cannot be read");
+        if (size > kMaxResultsBytes)
+            throw StudyRowError(path + ": larger than the limit of " +
+                                std::to_string(kMaxResultsBytes) + " bytes");
+    }
+    // The next line; false at the end of the file. Throws StudyRowError naming FILE:LINE.
+    bool next() {
+        if (!std::getline(in_, line_.text)) return false;
+        ++number_;
+        line_.where = path_ + ":" + std::to_string(number_);
+        if (number_ == 1) line_.text = std::string(withoutBom(line_.text));
+        const std::size_t before = line_.row.index;
+        try {
+            line_.row = parseStudyRow(line_.text);
+        } catch (const StudyRowError& e) {
+            throw StudyRowError(line_.where + ": " + e.what());
+        }
+        if (number_ > 1 && line_.row.index == before)
+            throw StudyRowError(line_.where + ": case " + std::to_string(before) +
+                                " appears twice");
+        if (number_ > 1 && line_.row.index < before)
+            throw StudyRowError(line_.where + ": case " + std::to_string(line_.row.index) +
+                                " is not after case " + std::to_string(before) +
+                                ": a shard is in case order");
+        return true;
+    }
+    const Line& line() const { return line_; }
+
+private:
+    std::string path_;
+    std::ifstream in_;
+    Line line_;
+    long number_ = 0;
+};
+
+} // namespace
+
+void mergeStudyShards(const std::vector<std::string>& paths,
+                      const std::function<void(std::string_view)>& sink) {
+    std::vector<std::unique_ptr<ShardReader>> shards;
+    // The shards whose line in hand comes next: smallest case first, then the shard named first.
+    using Entry = std::pair<std::size_t, std::size_t>; // case index, shard
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> heap;
+    for (const std::string& path : paths) {
+        shards.push_back(std::make_unique<ShardReader>(path));
+        if (shards.back()->next()) heap.push({shards.back()->line().row.index, shards.size() - 1});
+    }
+    if (heap.empty()) throw StudyRowError("no rows in the shards");
+    const Line& first = shards[heap.top().second]->line();
+    const std::size_t cases = first.row.cases;
+    const std::string firstWhere = first.where;
     std::size_t expected = 0;
-    std::string out;
-    for (const auto& [index, text] : lines) {
-        if (index != expected) break;
-        out += text;
+    std::string block;
+    // Each pass takes one line off the heap: bounded by the lines of the shards.
+    while (!heap.empty()) {
+        const auto [index, k] = heap.top();
+        heap.pop();
+        const Line& l = shards[k]->line();
+        if (l.row.cases != cases)
+            throw StudyRowError(l.where + ": a study of " + std::to_string(l.row.cases) +
+                                " cases, but " + firstWhere + " is of " + std::to_string(cases));
+        if (index < expected)
+            throw StudyRowError(l.where + ": case " + std::to_string(index) + " appears twice");
+        if (index > expected) break; // case `expected` is in none of the shards
+        block += l.text;
+        block += '\n';
         ++expected;
+        if (block.size() >= (1u << 20)) {
+            sink(block);
+            block.clear();
+        }
+        if (shards[k]->next()) heap.push({shards[k]->line().row.index, k});
     }
     if (expected != cases)
         throw StudyRowError("case " + std::to_string(expected) + " of " + std::to_string(cases) +
                             " is in none of the shards");
-    return out;
+    sink(block);
 }
 
 } // namespace kinstab

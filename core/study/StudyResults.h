@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Reading study results (JSONL) back: the rows of one file, and the merge of shards into the
-// file an unsharded run writes - the same rows, in case order, the same bytes.
+// file an unsharded run writes - the same rows, in case order, the same bytes. The merge streams:
+// each shard is in case order (as kinstab-cli study writes it), so a k-way merge holds one line
+// per shard, and its memory does not grow with the number of rows.
 
 #include "core/study/StudyRow.h"
 
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace kinstab {
@@ -15,9 +19,11 @@ namespace kinstab {
 // allowed either: a study file is written whole.
 std::vector<StudyRow> readStudyRows(const std::string& path);
 
-// The lines of the shards in case order. Throws StudyRowError naming the file and line of a row
-// that is broken, repeated or belongs to a study of another size, and the first missing case
-// when the shards do not cover the study.
-std::string mergeStudyShards(const std::vector<std::string>& paths);
+// Hands sink the lines of the shards in case order, a block at a time. Throws StudyRowError
+// naming the file and line of a row that is broken, repeated, out of case order in its shard or
+// of a study of another size, and the first missing case when the shards do not cover the
+// study; what sink has received by then is not the whole study.
+void mergeStudyShards(const std::vector<std::string>& paths,
+                      const std::function<void(std::string_view)>& sink);
 
 } // namespace kinstab

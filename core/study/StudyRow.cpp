@@ -29,6 +29,12 @@ std::size_t count(const nlohmann::json& j, const char* key) {
     return j[key].get<std::size_t>();
 }
 
+std::optional<std::string> optionalText(const nlohmann::json& j, const char* key) {
+    if (!j.contains(key) || j[key].is_null()) return std::nullopt;
+    if (!j[key].is_string()) throw StudyRowError(std::string("\"") + key + "\": expected a string");
+    return j[key].get<std::string>();
+}
+
 std::string text(const nlohmann::json& j, const char* key) {
     if (!j.contains(key) || !j[key].is_string())
         throw StudyRowError(std::string("\"") + key + "\": expected a string");
@@ -47,13 +53,24 @@ std::string studyRowLine(const StudyRow& r) {
                {"tstar", r.tstar},
                {"limit", r.limit},
                {"floor_period_s", orNull(r.floorPeriod)},
-               {"floor_damping", orNull(r.floorDamping)},
-               {"measure", r.measure},
-               {"record_im_g", r.recordIntensity},
-               {"critical_im_g", orNull(r.criticalIntensity)},
-               {"critical_peak_g", orNull(r.criticalPeak)},
-               {"limit_im_g", r.limitIntensity},
-               {"runs", r.runs}};
+               {"floor_damping", orNull(r.floorDamping)}};
+    if (r.level) j["level"] = *r.level;
+    if (r.motion) j["motion"] = *r.motion;
+    j["measure"] = r.measure;
+    j["record_im_g"] = r.recordIntensity;
+    if (r.scale) {
+        j["scale"] = *r.scale;
+        j["im_as_given_g"] = r.imAsGiven;
+    }
+    j["critical_im_g"] = orNull(r.criticalIntensity);
+    j["critical_peak_g"] = orNull(r.criticalPeak);
+    j["limit_im_g"] = r.limitIntensity;
+    if (r.scale) {
+        j["collapses_as_given"] = r.collapsesAsGiven;
+        j["margin"] = orNull(r.margin);
+    }
+    if (!r.noFit.empty()) j["no_fit"] = r.noFit;
+    j["runs"] = r.runs;
     return j.dump();
 }
 
@@ -76,6 +93,21 @@ StudyRow parseStudyRow(const std::string& line) {
     r.criticalPeak = optionalNumber(j, "critical_peak_g");
     r.limitIntensity = number(j, "limit_im_g");
     r.runs = static_cast<long>(count(j, "runs"));
+    if (j.contains("level")) {
+        const std::size_t level = count(j, "level");
+        if (level < 1 || level > 1000) throw StudyRowError("\"level\": expected 1 to 1000");
+        r.level = static_cast<int>(level);
+    }
+    r.motion = optionalText(j, "motion");
+    r.noFit = optionalText(j, "no_fit").value_or("");
+    r.scale = optionalNumber(j, "scale");
+    if (r.scale) {
+        r.imAsGiven = number(j, "im_as_given_g");
+        if (!j.contains("collapses_as_given") || !j["collapses_as_given"].is_boolean())
+            throw StudyRowError("\"collapses_as_given\": expected true or false");
+        r.collapsesAsGiven = j["collapses_as_given"].get<bool>();
+        r.margin = optionalNumber(j, "margin");
+    }
     if (r.index >= r.cases) throw StudyRowError("\"case\": not below \"cases\"");
     return r;
 }

@@ -22,6 +22,14 @@ struct StudyRow {
     std::optional<double> criticalPeak;      // g, peak of the driving motion at collapse
     double limitIntensity = 0;               // g, the intensity at the search limit
     long runs = 0;
+    // Written only when the study uses them, so that older studies keep their bytes:
+    std::optional<int> level;          // the level of the study's building that drives the slab
+    std::optional<std::string> motion; // "record" or "fitted_sine" (its enveloped-sine surrogate)
+    std::string noFit;                 // fitted_sine: why the motion has no envelope fit
+    std::optional<double> scale;       // the record's scale in the suite; then also:
+    double imAsGiven = 0;              // g, scale x recordIntensity
+    bool collapsesAsGiven = false;     // criticalIntensity <= imAsGiven
+    std::optional<double> margin;      // criticalIntensity / imAsGiven
 };
 
 struct StudyRowError : std::runtime_error {

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/StudyRunner.h"
 
+#include "core/building/FloorMotions.h"
 #include "core/excitation/FloorFilter.h"
 #include "core/excitation/RecordExcitation.h"
-#include "core/sweep/CriticalRecordScale.h"
+#include "core/study/CaseCritical.h"
 
 #include <algorithm>
 #include <atomic>
@@ -36,36 +37,27 @@ double recordIntensity(const IntensityMeasure& im, const Accelerogram& ground) {
     return maxAbs(floorAcceleration(ground.samples, ground.dt, im.period, im.damping));
 }
 
-} // namespace
-
-void checkStudyRecords(const StudySpec& s) {
-    for (const StudyRecord& r : s.records) {
-        try {
-            for (const auto& f : s.floors) {
-                const RecordExcitation e = excitationOf(r, f);
-                const Accelerogram ground = readGroundRecord(e);
-                if (!(maxAbs(drivingMotion(e, ground).samples) > 0.0))
-                    throw RecordError(r.file, 0, "the motion is zero throughout");
-            }
-        } catch (const RecordError& e) {
-            throw StudyError("records: " + std::string(e.what()));
-        }
-    }
+// Every level's absolute acceleration in the study's building under the ground record.
+std::vector<Accelerogram> levelMotions(const StudySpec& s, const Accelerogram& ground) {
+    return floorMotions(s.building->model, ground, {s.building->settings.damping, std::nullopt});
 }
 
-StudyRow runStudyCase(const StudySpec& s, const StudyCase& c) {
-    const RecordExcitation e = excitationOf(*c.record, c.floor);
-    const Accelerogram ground = readGroundRecord(e);
-    const Accelerogram motion = drivingMotion(e, ground);
-    Slab1DCase slab;
-    slab.tstar = c.tstar;
-    slab.slab.mu = c.mu;
-    slab.slab.limit = s.limit;
-    const RecordCriticalScale crit = criticalRecordScale(slab, motion, s.search);
-    // The record is linear in its scale, and so is the floor filter: the intensity at a scale
-    // is the unscaled intensity times (scaled peak / unscaled peak) of the driving motion.
-    const double im = recordIntensity(s.intensity, ground);
-    const double perPeak = im / crit.motionPeak;
+// The motion under the slab: the ground record, through the floor filter, or the case's level.
+Accelerogram caseMotion(const StudySpec& s, const StudyCase& c, const Accelerogram& ground) {
+    if (c.level > 0) return levelMotions(s, ground)[static_cast<std::size_t>(c.level - 1)];
+    return drivingMotion(excitationOf(*c.record, c.floor), ground);
+}
+
+// The record as given in the suite (the file times its scale) against its critical intensity.
+void addAsGiven(const StudyRecord& record, StudyRow& row) {
+    row.scale = record.scale;
+    row.imAsGiven = record.scale * row.recordIntensity;
+    if (!row.criticalIntensity) return;
+    row.collapsesAsGiven = *row.criticalIntensity <= row.imAsGiven;
+    row.margin = *row.criticalIntensity / row.imAsGiven;
+}
+
+StudyRow rowInputs(const StudySpec& s, const StudyCase& c) {
     StudyRow row;
     row.index = c.index;
     row.cases = studyCaseCount(s);
@@ -78,14 +70,53 @@ StudyRow runStudyCase(const StudySpec& s, const StudyCase& c) {
         row.floorPeriod = c.floor->period;
         row.floorDamping = c.floor->damping;
     }
+    if (c.level > 0) row.level = c.level;
+    if (s.motionGiven) row.motion = motionName(c.motion);
     row.measure = intensityName(s.intensity);
-    row.recordIntensity = im;
+    return row;
+}
+
+} // namespace
+
+void checkStudyRecords(const StudySpec& s) {
+    for (const StudyRecord& r : s.records) {
+        try {
+            const Accelerogram ground = readGroundRecord(excitationOf(r, std::nullopt));
+            for (const auto& f : s.floors)
+                if (!(maxAbs(drivingMotion(excitationOf(r, f), ground).samples) > 0.0))
+                    throw RecordError(r.file, 0, "the motion is zero throughout");
+            if (!s.levels.empty())
+                for (const Accelerogram& m : levelMotions(s, ground))
+                    if (!(maxAbs(m.samples) > 0.0))
+                        throw RecordError(r.file, 0, "the motion is zero throughout");
+        } catch (const RecordError& e) {
+            throw StudyError("records: " + std::string(e.what()));
+        }
+    }
+}
+
+StudyRow runStudyCase(const StudySpec& s, const StudyCase& c) {
+    const Accelerogram ground = readGroundRecord(excitationOf(*c.record, std::nullopt));
+    const Accelerogram motion = caseMotion(s, c, ground);
+    Slab1DCase slab;
+    slab.tstar = c.tstar;
+    slab.slab.mu = c.mu;
+    slab.slab.limit = s.limit;
+    const CaseCritical crit = caseCritical(slab, motion, c.motion, s.search);
+    // The record is linear in its scale, and so are the floor filter and the building: the
+    // intensity at a scale is the unscaled intensity times (scaled peak / unscaled peak) of the
+    // driving motion (of its surrogate's envelope, for the fitted sine).
+    StudyRow row = rowInputs(s, c);
+    row.recordIntensity = recordIntensity(s.intensity, ground);
+    const double perPeak = row.recordIntensity / crit.unitPeak;
     if (crit.peak) {
         row.criticalPeak = *crit.peak;
         row.criticalIntensity = *crit.peak * perPeak;
     }
     row.limitIntensity = s.search.to * perPeak;
     row.runs = crit.runs;
+    row.noFit = crit.noFit;
+    if (s.asGiven) addAsGiven(*c.record, row);
     return row;
 }
 

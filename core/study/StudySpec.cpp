@@ -10,4 +10,8 @@ std::string intensityName(const IntensityMeasure& im) {
     return "sa(" + formatDouble(im.period) + "s/" + formatDouble(100.0 * im.damping) + "%)";
 }
 
+std::string motionName(StudyMotion m) {
+    return m == StudyMotion::Record ? "record" : "fitted_sine";
+}
+
 } // namespace kinstab

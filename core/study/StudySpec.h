@@ -5,6 +5,9 @@
 // The study file (versioned JSON, read by core/io/StudySpecJson.h) names every bad field in a
 // StudyError ("parameters.mu[2] = -1: must be > 0").
 
+#include "core/building/FloorSettings.h"
+#include "core/building/ModalModel.h"
+#include "core/codes/Building.h"
 #include "core/sweep/CriticalAmplitude.h"
 
 #include <cstddef>
@@ -28,6 +31,9 @@ inline constexpr int kStudyVersion = 1;
 inline constexpr std::size_t kMaxStudyRecords = 10'000;
 inline constexpr std::size_t kMaxStudyListValues = 1'000;
 inline constexpr std::size_t kMaxStudyCases = 10'000'000;
+// A record's scale in the suite: scaling to a target spectrum uses factors of about 0.2 to 5;
+// a factor of 100 turns a 0.01 g record into 1 g, beyond any suite's need.
+inline constexpr double kMaxStudyRecordScale = 100.0;
 
 // The intensity measure a critical scale is expressed in: the peak ground acceleration of the
 // record, or its 5 %-damped spectral acceleration at a period (peak absolute acceleration of a
@@ -44,6 +50,7 @@ intensityName(const IntensityMeasure& im); // "pga", "sa(1s/5%)" (no comma: it i
 struct StudyRecord {
     std::string file;  // absolute path
     std::string label; // the path as the study file writes it (relative to it, or absolute)
+    double scale = 1;  // the record as given in the suite is the file times this
 };
 
 struct FloorFilterChoice {
@@ -51,14 +58,33 @@ struct FloorFilterChoice {
     double damping = 0.02;
 };
 
+// The multi-storey model whose levels may drive the slab: the project's building as a shear
+// building (core/building/ShearBuilding.h) with its floor settings' stiffness profile and modal
+// damping, and its modes computed once when the study is read.
+struct StudyBuilding {
+    Building building;
+    FloorSettings settings;
+    ModalModel model;
+};
+
+// What drives the slab in a case: the motion itself, or the enveloped sine whose envelope is
+// fitted to it (core/excitation/EnvelopeFit.h) at its dominant frequency.
+enum class StudyMotion { Record, FittedSine };
+std::string motionName(StudyMotion m); // "record" | "fitted_sine"
+
 struct StudySpec {
     std::string name;
     std::vector<StudyRecord> records; // in the order of the file, folders sorted by name
+    bool asGiven = false; // a record entry gives "scale": rows compare with the record as given
     IntensityMeasure intensity;
     std::vector<double> mu;
     std::vector<double> tstar;                            // s (from wall_width_in when given)
     std::vector<std::optional<FloorFilterChoice>> floors; // none: the record drives the slab
-    double limit = 1.0;                                   // slab.limit, bearing length / (d/2)
+    std::optional<StudyBuilding> building;
+    std::vector<int> levels; // 1-based levels of the building, crossed beside the floor filters
+    std::vector<StudyMotion> motions = {StudyMotion::Record};
+    bool motionGiven = false; // parameters.motion is in the file: rows name their motion
+    double limit = 1.0;       // slab.limit, bearing length / (d/2)
     CriticalSearch search;
 };
 

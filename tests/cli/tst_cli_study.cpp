@@ -106,6 +106,17 @@ private slots:
         QCOMPARE(twice.code, 2);
         QVERIFY2(twice.err.contains("appears twice"), twice.err);
     }
+    void mergeRefusesAShardOutOfCaseOrder() {
+        // The merge streams, one line per shard in hand: a shard must be in case order, as
+        // kinstab-cli study writes it. A shard that goes back to case 0 is named at that line.
+        const QList<QByteArray> lines = whole_.trimmed().split('\n');
+        const QString reversed = dir_.filePath("reversed.jsonl");
+        writeBytes(reversed, lines[0] + "\n" + lines[1] + "\n" + lines[0] + "\n");
+        const Run r = cli({"merge", reversed, "-o", dir_.filePath("never.jsonl")});
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains("reversed.jsonl:3: case 0 is not after case 1"), r.err);
+        QVERIFY(!QFile::exists(dir_.filePath("never.jsonl"))); // a refused merge leaves no file
+    }
     void gnuParallelRunsTheShards() {
         if (QStandardPaths::findExecutable("parallel").isEmpty())
             QSKIP("GNU parallel is not installed (scripts/install-deps.sh installs it)");

@@ -7,7 +7,9 @@
 //  - a synthetic suite drawn at the quantiles of a known lognormal (median 0.8 g, beta 0.4),
 //    censored at 1.2 g, gives back its median and beta;
 //  - the seeded bootstrap is reproducible and its bounds bracket the fit;
-//  - the empirical points count the censored records in the total.
+//  - the empirical points are the Kaplan-Meier estimate: censored records count in the total
+//    (all censored above the collapses: rank / records), and a record censored below a collapse
+//    leaves the records at risk there (tst_kaplan_meier works the product by hand).
 
 #include "core/study/Fragility.h"
 #include "core/study/LognormalFit.h"
@@ -141,6 +143,21 @@ private slots:
         QCOMPARE(f.points.size(), std::size_t(8));
         QCOMPARE(f.points.front().intensity, 0.42);
         QCOMPARE(f.points.back().probability, 0.8);
+    }
+    void pointsCensoredBelowACollapseAreKaplanMeier() {
+        // Collapses at 0.2, 0.4, 0.5, 0.8 g; censored at 0.3 and 0.6 g: F = 1/6, 3/8, 7/12, 1
+        // (the product written out in tst_kaplan_meier), not hits / total (1/6, 2/6, 3/6, 4/6).
+        const double crit[] = {0.8, 0.2, 0, 0.5, 0.4, 0};
+        const double limit[] = {2, 2, 0.3, 2, 2, 0.6};
+        std::vector<StudyRow> rows;
+        for (std::size_t i = 0; i < 6; ++i)
+            rows.push_back(row(i, crit[i], limit[i]));
+        const Fragility f = fragilityOf(rows, {20, 1, 0.9});
+        QCOMPARE(f.points.size(), std::size_t(4));
+        const double p[] = {1.0 / 6, 3.0 / 8, 7.0 / 12, 1.0};
+        for (std::size_t i = 0; i < 4; ++i)
+            QVERIFY(std::abs(f.points[i].probability - p[i]) < 1e-15);
+        QCOMPARE(f.points[1].record, std::string("r4"));
     }
     void setsAreGroupedInOrder() {
         std::vector<StudyRow> rows;
