@@ -88,11 +88,6 @@ QString measureLabel(const IntensityMeasure& im) {
         .arg(QString::number(im.period, 'g', 4), QString::number(im.damping, 'g', 3));
 }
 
-QString floorText(const StudyRow& r) {
-    if (!r.floorPeriod) return QStringLiteral("none");
-    return QStringLiteral("T = %1 s, ζ = %2").arg(num(*r.floorPeriod, 3), num(*r.floorDamping, 3));
-}
-
 void recordTable(ReportDocument& doc, const std::vector<StudyRow>& rows) {
     Table t{{"record", "intensity of the record as given (g)"},
             {},
@@ -109,7 +104,7 @@ QString bounds(double lo, double hi, int digits) {
 }
 
 void fragilityTable(ReportDocument& doc, const std::vector<Fragility>& sets) {
-    Table t{{"set", "μ", "t* (s)", "floor filter", "collapsed", "median (g)", "median bounds (g)",
+    Table t{{"set", "μ", "t* (s)", "driving motion", "collapsed", "median (g)", "median bounds (g)",
              "β", "β bounds"},
             {},
             {0.4, 0.6, 0.7, 1.7, 0.9, 0.8, 1.4, 0.6, 1.3},
@@ -119,7 +114,8 @@ void fragilityTable(ReportDocument& doc, const std::vector<Fragility>& sets) {
     for (const Fragility& f : sets) {
         const StudyRow& r = f.parameters;
         const bool b = f.fit && f.fitted > 0;
-        t.rows.push_back({QString::number(r.set + 1), num(r.mu, 3), num(r.tstar, 3), floorText(r),
+        t.rows.push_back({QString::number(r.set + 1), num(r.mu, 3), num(r.tstar, 3),
+                          qs(studyDriverText(r)),
                           QStringLiteral("%1 of %2").arg(f.collapsed).arg(f.records),
                           f.fit ? accelG(f.fit->median) : QStringLiteral("—"),
                           b ? bounds(f.medianLower, f.medianUpper, 3) : QStringLiteral("—"),

@@ -17,8 +17,8 @@ namespace {
 
 QString setName(const StudyRow& p) {
     QString s = QString("μ = %1, t* = %2 s").arg(p.mu).arg(p.tstar);
-    if (p.floorPeriod)
-        s += QString(", floor T = %1 s, ζ = %2").arg(*p.floorPeriod).arg(*p.floorDamping);
+    if (p.floorPeriod || p.level || p.motion)
+        s += ", " + QString::fromStdString(studyDriverText(p));
     return s;
 }
 

@@ -62,7 +62,7 @@ QString joined(const std::vector<double>& values) {
     QStringList out;
     for (double v : values)
         out << QString::fromStdString(formatDouble(v));
-    return out.join(", ");
+    return out.join(',');
 }
 
 // The floor periods of the study's floor filters, each once ("" when the ground drives all).
@@ -133,7 +133,7 @@ StudyTab::StudyTab(QWidget* parent)
     m_chart->setRenderHint(QPainter::Antialiasing);
     m_chart->setMinimumHeight(280);
     m_table->setHorizontalHeaderLabels(
-        {tr("Record"), tr("μ"), tr("t* s"), tr("Floor T s"), tr("Critical IM g"), tr("Runs")});
+        {tr("Record"), tr("μ"), tr("t* s"), tr("Driving motion"), tr("Critical IM g"), tr("Runs")});
     m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     auto* split = new QSplitter(Qt::Vertical, this);
@@ -382,7 +382,7 @@ void StudyTab::fillTable() {
         const QStringList cells = {QString::fromStdString(r.record),
                                    number(r.mu),
                                    number(r.tstar),
-                                   r.floorPeriod ? number(*r.floorPeriod) : tr("ground"),
+                                   QString::fromStdString(studyDriverText(r)),
                                    r.criticalIntensity
                                        ? number(*r.criticalIntensity)
                                        : tr("none up to %1 g").arg(number(r.limitIntensity)),

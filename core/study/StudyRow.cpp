@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/StudyRow.h"
 
+#include "core/base/TextInput.h"
+
 #include <nlohmann/json.hpp>
 
 namespace kinstab {
@@ -44,6 +46,17 @@ std::string text(const nlohmann::json& j, const char* key) {
 
 // nlohmann's dump writes the shortest text that reads back as the same double, in the C
 // locale's syntax whatever the process locale: the same bytes on every machine and rerun.
+std::string studyDriverText(const StudyRow& r) {
+    std::string s = "ground";
+    if (r.level)
+        s = "level " + std::to_string(*r.level);
+    else if (r.floorPeriod)
+        s = "floor T = " + formatDouble(*r.floorPeriod) +
+            " s, ζ = " + formatDouble(r.floorDamping.value_or(0.0));
+    if (r.motion && *r.motion == "fitted_sine") s += ", fitted sine";
+    return s;
+}
+
 std::string studyRowLine(const StudyRow& r) {
     ojson j = {{"case", r.index},
                {"cases", r.cases},

@@ -37,6 +37,9 @@ struct StudyRowError : std::runtime_error {
 };
 
 std::string studyRowLine(const StudyRow& r); // one line, no newline
+// What drives the slab in words, for tables and legends: "ground", "floor T = 1 s, ζ = 0.02" or
+// "level 8", with ", fitted sine" when the case runs the motion's enveloped-sine surrogate.
+std::string studyDriverText(const StudyRow& r);
 // Throws StudyRowError saying which key is missing or wrong.
 StudyRow parseStudyRow(const std::string& line);
 

@@ -46,6 +46,16 @@ std::string caseMismatch(const StudySpec& s, const std::string& dir, const Study
     if (r.floorPeriod != period || r.floorDamping != damping)
         return "floor filter T = " + text(r.floorPeriod) + " s, zeta = " + text(r.floorDamping) +
                ", the study file says T = " + text(period) + " s, zeta = " + text(damping);
+    const std::optional<int> level = c.level > 0 ? std::optional(c.level) : std::nullopt;
+    if (r.level != level)
+        return "level " + (r.level ? std::to_string(*r.level) : std::string("none")) +
+               ", the study file says " + (level ? std::to_string(*level) : std::string("none"));
+    if (r.motion.value_or("record") != motionName(c.motion))
+        return "motion " + r.motion.value_or("record") + ", the study file says " +
+               motionName(c.motion);
+    if (!same(r.scale.value_or(1.0), c.record->scale))
+        return "record scale " + text(r.scale.value_or(1.0)) + ", the study file says " +
+               text(c.record->scale);
     if (!same(r.limit, s.limit))
         return "limit = " + text(r.limit) + ", the study file says " + text(s.limit);
     if (r.measure != intensityName(s.intensity))

@@ -2,9 +2,9 @@
 #pragma once
 // Whether a results file (JSONL rows) is the result of a study file as it is now: a study edited
 // after its run must not have the old rows shown or printed as its result. Each row carries its
-// case's inputs (record, mu, t*, floor filter, limit, intensity measure), and, where the record
-// collapsed the slab, the search limit follows from the row too (limit_im / critical_im =
-// max_g / critical_peak). The scan step and tolerance are not in the rows and are not checked.
+// case's inputs (record and its scale, mu, t*, floor filter or level, motion, limit, intensity
+// measure), and, where the record collapsed the slab, the search limit follows from the row too
+// (limit_im / critical_im = max_g / critical_peak). The scan step and tolerance are not in the rows and are not checked.
 
 #include "core/study/StudyRow.h"
 #include "core/study/StudySpec.h"
