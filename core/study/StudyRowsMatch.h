@@ -4,7 +4,8 @@
 // after its run must not have the old rows shown or printed as its result. Each row carries its
 // case's inputs (record and its scale, mu, t*, floor filter or level, motion, limit, intensity
 // measure), and, where the record collapsed the slab, the search limit follows from the row too
-// (limit_im / critical_im = max_g / critical_peak). The scan step and tolerance are not in the rows and are not checked.
+// (limit_im / critical_im = max_g / critical_peak). The scan step and tolerance are not in the rows
+// and are not checked.
 
 #include "core/study/StudyRow.h"
 #include "core/study/StudySpec.h"
