@@ -28,13 +28,14 @@ int runFragility(const ArgList& argv) {
     if (!(b.level > 0.0 && b.level < 1.0))
         throw UsageError("--level " + args.text("level") + ": must be > 0 and < 1");
     if (const auto o = args.optionalText("o")) checkOutputPath("o", *o);
-    std::vector<StudyRow> rows;
+    // One parameter set's rows in memory at a time (the file is in case order).
+    std::vector<Fragility> sets;
     try {
-        rows = readStudyRows(results);
+        forEachStudySet(
+            results, [&](std::vector<StudyRow>&& rows) { sets.push_back(fragilityOf(rows, b)); });
     } catch (const StudyRowError& e) {
         throw UsageError("--results " + std::string(e.what()));
     }
-    const std::vector<Fragility> sets = studyFragility(rows, b);
     std::string text;
     if (format == "csv") {
         text = fragilityCsv(sets);

@@ -10,6 +10,7 @@
 #include <queue>
 #include <set>
 #include <sstream>
+#include <utility>
 
 namespace kinstab {
 
@@ -103,6 +104,29 @@ private:
 };
 
 } // namespace
+
+void forEachStudySet(const std::string& path,
+                     const std::function<void(std::vector<StudyRow>&&)>& onSet) {
+    ShardReader file(path);
+    std::vector<StudyRow> set;
+    std::size_t cases = 0;
+    std::string measure;
+    bool any = false;
+    while (file.next()) {
+        const Line& l = file.line();
+        if (!any) {
+            cases = l.row.cases;
+            measure = l.row.measure;
+            any = true;
+        } else if (l.row.cases != cases || l.row.measure != measure) {
+            throw StudyRowError(l.where + ": a row of another study than line 1's");
+        }
+        if (!set.empty() && set.front().set != l.row.set) onSet(std::exchange(set, {}));
+        set.push_back(l.row);
+    }
+    if (!any) throw StudyRowError(path + ": no rows");
+    onSet(std::move(set));
+}
 
 void mergeStudyShards(const std::vector<std::string>& paths,
                       const std::function<void(std::string_view)>& sink) {

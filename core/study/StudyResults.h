@@ -19,6 +19,13 @@ namespace kinstab {
 // allowed either: a study file is written whole.
 std::vector<StudyRow> readStudyRows(const std::string& path);
 
+// Hands onSet the rows of one results file a parameter set at a time (the rows of a set are
+// neighbours in case order), holding one set's rows: the fragility of a study of millions of
+// cases takes the memory of its largest set. Throws StudyRowError "FILE:LINE: message" as
+// readStudyRows does, and for a row out of case order (a study or merge writes them in order).
+void forEachStudySet(const std::string& path,
+                     const std::function<void(std::vector<StudyRow>&&)>& onSet);
+
 // Hands sink the lines of the shards in case order, a block at a time. Throws StudyRowError
 // naming the file and line of a row that is broken, repeated, out of case order in its shard or
 // of a study of another size, and the first missing case when the shards do not cover the
