@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // kinstab-cli links core and the report library only (issue 15): it writes reports through
 // Qt Gui, so neither the executable nor any library it loads may be Qt Widgets, Charts, Data
-// Visualization, Qml, Quick or OpenGL. Reads the loader's view of the binary with ldd (libc-bin)
+// Visualization, Qml, Quick or OpenGL; nor Qt Concurrent, since core's thread pool runs the
+// report's analyses. Reads the loader's view of the binary with ldd (libc-bin)
 // and its own NEEDED entries with readelf (binutils).
 
 #include <QProcess>
@@ -11,7 +12,7 @@
 namespace {
 
 const QRegularExpression
-    kForbidden(QStringLiteral("Qt6(Widgets|Charts|DataVisualization|Qml|Quick|OpenGL)"));
+    kForbidden(QStringLiteral("Qt6(Widgets|Charts|DataVisualization|Qml|Quick|OpenGL|Concurrent)"));
 
 QString run(const QString& program, const QStringList& args) {
     QProcess p;
