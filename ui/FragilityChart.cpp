@@ -15,11 +15,20 @@ namespace kinstab::ui {
 
 namespace {
 
-QString setName(const StudyRow& p) {
-    QString s = QString("μ = %1, t* = %2 s").arg(p.mu).arg(p.tstar);
-    if (p.floorPeriod || p.level || p.motion)
-        s += ", " + QString::fromStdString(studyDriverText(p));
-    return s;
+// A set's name in the legend: only what tells it from the other sets (μ and t* when they vary,
+// the driving motion when it is not the ground record), so six sets still fit their legend.
+QString setName(const StudyRow& p, const std::vector<Fragility>& sets) {
+    QStringList parts;
+    const StudyRow& first = sets.front().parameters;
+    const auto varies = [&](auto field) {
+        return std::any_of(sets.begin(), sets.end(),
+                           [&](const Fragility& f) { return f.parameters.*field != first.*field; });
+    };
+    if (varies(&StudyRow::mu)) parts << QString("μ = %1").arg(p.mu);
+    if (varies(&StudyRow::tstar)) parts << QString("t* = %1 s").arg(p.tstar);
+    if (p.floorPeriod || p.level || p.motion) parts << QString::fromStdString(studyDriverText(p));
+    if (parts.isEmpty()) parts << QString("μ = %1, t* = %2 s").arg(p.mu).arg(p.tstar);
+    return parts.join(", ");
 }
 
 QLineSeries* line(const std::vector<FragilityCurvePoint>& curve, double FragilityCurvePoint::*p) {
@@ -45,13 +54,16 @@ void fillFragilityChart(QChart* chart, const std::vector<Fragility>& sets) {
     chart->addAxis(x, Qt::AlignBottom);
     chart->addAxis(y, Qt::AlignLeft);
     double top = 0.0;
-    const QList<QColor> colours = {QColor(31, 119, 180), QColor(214, 39, 40), QColor(44, 160, 44),
-                                   QColor(148, 103, 189), QColor(255, 127, 14)};
+    // Ten distinct colours (the "tab10" palette) before any repeats.
+    const QList<QColor> colours = {
+        QColor(31, 119, 180), QColor(214, 39, 40), QColor(44, 160, 44),   QColor(148, 103, 189),
+        QColor(255, 127, 14), QColor(140, 86, 75), QColor(227, 119, 194), QColor(127, 127, 127),
+        QColor(188, 189, 34), QColor(23, 190, 207)};
     for (std::size_t i = 0; i < sets.size(); ++i) {
         const Fragility& f = sets[i];
         const QColor colour = colours[static_cast<int>(i) % colours.size()];
         QList<QXYSeries*> series;
-        QString name = setName(f.parameters);
+        QString name = setName(f.parameters, sets);
         if (f.fit) {
             name += QString(": θ = %1 g, β = %2")
                         .arg(f.fit->median, 0, 'g', 3)

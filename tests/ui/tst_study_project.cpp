@@ -99,6 +99,20 @@ class TestStudyProject : public QObject {
     std::vector<StudyRow> cliRows_;
 
     // Opens `project` and waits until the tab has read its results, if it reads any.
+    // With KINSTAB_SCREENSHOT_DIR set, the window at 1920x1080 with the Study tab in front.
+    void screenshot(MainWindow& w, const QString& name) {
+        const QString shots = qEnvironmentVariable("KINSTAB_SCREENSHOT_DIR");
+        if (shots.isEmpty()) return;
+        for (QTabWidget* tabs : w.findChildren<QTabWidget*>())
+            for (int i = 0; i < tabs->count(); ++i)
+                if (tabs->tabText(i) == QStringLiteral("Study")) tabs->setCurrentIndex(i);
+        w.resize(1920, 1080);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTest::qWait(300); // the chart lays its legend out in the event loop
+        QVERIFY(w.grab().save(shots + "/" + name));
+    }
+
     bool open(MainWindow& w, const QString& project, bool readsResults) {
         QSignalSpy done(w.studyTab(), &StudyTab::finished);
         if (!w.openProject(project, true)) return false;
@@ -230,11 +244,36 @@ private slots:
         QVERIFY(w.project().study.has_value()); // the report gets its study section
     }
 
-    // KINSTAB_SCREENSHOT_DIR=DIR saves the window with the Study tab showing the shipped example
+    // The shipped levels example (a building block, levels and fitted-sine motions, which the
+    // tab has no fields for) opens with its results current, not stale, and the table names
+    // each row's driving motion as the rows do (core's studyDriverText).
+    void levelsStudyOpensWithCurrentResults() {
+        const QString spec = KINSTAB_SOURCE_DIR "/resources/examples/study-levels.json";
+        const QString rows = dir_.filePath("levels.jsonl");
+        QProcess p;
+        p.start(KINSTAB_CLI, {"study", "--spec", spec, "-o", rows});
+        QVERIFY(p.waitForFinished(300000));
+        QCOMPARE(p.exitCode(), 0);
+        const std::vector<StudyRow> cli = readStudyRows(rows.toStdString());
+        MainWindow w;
+        QVERIFY(open(w,
+                     projectWith(dir_.filePath("levels.json"), {{"spec", spec}, {"results", rows}}),
+                     true));
+        auto* tab = w.studyTab();
+        QVERIFY2(!tab->resultsStale(), qPrintable(tab->message()));
+        QCOMPARE(tab->table()->rowCount(), static_cast<int>(cli.size()));
+        for (int i = 0; i < tab->table()->rowCount(); ++i)
+            QCOMPARE(tab->table()->item(i, 3)->text(),
+                     QString::fromStdString(studyDriverText(cli[static_cast<std::size_t>(i)])));
+        QVERIFY(tab->table()->item(0, 3)->text().startsWith("level "));
+        screenshot(w, "study-tab-levels.png");
+    }
+
+    // With KINSTAB_SCREENSHOT_DIR=DIR: the window with the Study tab showing the shipped example
     // study and its results (docs/screenshots/study-tab.png), to look at.
     void screenshotOfTheExampleStudy() {
-        const QString shots = qEnvironmentVariable("KINSTAB_SCREENSHOT_DIR");
-        if (shots.isEmpty()) QSKIP("KINSTAB_SCREENSHOT_DIR not set");
+        if (qEnvironmentVariable("KINSTAB_SCREENSHOT_DIR").isEmpty())
+            QSKIP("KINSTAB_SCREENSHOT_DIR not set");
         const QString spec = KINSTAB_SOURCE_DIR "/resources/examples/study-example.json";
         const QString rows = dir_.filePath("example.jsonl");
         QProcess p;
@@ -245,14 +284,7 @@ private slots:
         QVERIFY(
             open(w, projectWith(dir_.filePath("example.json"), {{"spec", spec}, {"results", rows}}),
                  true));
-        for (QTabWidget* tabs : w.findChildren<QTabWidget*>())
-            for (int i = 0; i < tabs->count(); ++i)
-                if (tabs->tabText(i) == QStringLiteral("Study")) tabs->setCurrentIndex(i);
-        w.resize(1920, 1080);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QTest::qWait(300); // the chart lays its legend out in the event loop
-        QVERIFY(w.grab().save(shots + "/study-tab.png"));
+        screenshot(w, "study-tab.png");
     }
 
     void editingAfterTheRunMarksResultsStale() {
