@@ -60,6 +60,14 @@ QByteArray readAll(const QString& path) {
 }
 
 // The paper's example project with `study` (absent when empty), written to `path`.
+// Runs kinstab-cli study on spec into rows: "" when it succeeds, else what it said.
+QString runStudy(const QString& spec, const QString& rows) {
+    QProcess p;
+    p.start(KINSTAB_CLI, {"study", "--spec", spec, "--threads", "1", "-o", rows});
+    if (!p.waitForFinished(300000)) return QStringLiteral("kinstab-cli study did not finish");
+    return p.exitCode() == 0 ? QString() : QString::fromUtf8(p.readAllStandardError());
+}
+
 QString projectWith(const QString& path, const QJsonObject& study) {
     QJsonObject p = QJsonDocument::fromJson(readAll(kNoStudy)).object();
     if (!study.isEmpty()) p["study"] = study;
@@ -126,10 +134,8 @@ private slots:
         spec_ = dir_.filePath("tiny.json");
         rows_ = dir_.filePath("tiny.jsonl");
         write(spec_, tinyStudy());
-        QProcess p;
-        p.start(KINSTAB_CLI, {"study", "--spec", spec_, "--threads", "1", "-o", rows_});
-        QVERIFY(p.waitForFinished(120000));
-        QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+        const QString failed = runStudy(spec_, rows_);
+        QVERIFY2(failed.isEmpty(), qPrintable(failed));
         cliRows_ = readStudyRows(rows_.toStdString());
         QCOMPARE(cliRows_.size(), std::size_t(12));
     }
@@ -250,10 +256,8 @@ private slots:
     void levelsStudyOpensWithCurrentResults() {
         const QString spec = KINSTAB_SOURCE_DIR "/resources/examples/study-levels.json";
         const QString rows = dir_.filePath("levels.jsonl");
-        QProcess p;
-        p.start(KINSTAB_CLI, {"study", "--spec", spec, "-o", rows});
-        QVERIFY(p.waitForFinished(300000));
-        QCOMPARE(p.exitCode(), 0);
+        const QString failed = runStudy(spec, rows);
+        QVERIFY2(failed.isEmpty(), qPrintable(failed));
         const std::vector<StudyRow> cli = readStudyRows(rows.toStdString());
         MainWindow w;
         QVERIFY(open(w,
@@ -276,10 +280,8 @@ private slots:
             QSKIP("KINSTAB_SCREENSHOT_DIR not set");
         const QString spec = KINSTAB_SOURCE_DIR "/resources/examples/study-example.json";
         const QString rows = dir_.filePath("example.jsonl");
-        QProcess p;
-        p.start(KINSTAB_CLI, {"study", "--spec", spec, "-o", rows});
-        QVERIFY(p.waitForFinished(300000));
-        QCOMPARE(p.exitCode(), 0);
+        const QString failed = runStudy(spec, rows);
+        QVERIFY2(failed.isEmpty(), qPrintable(failed));
         MainWindow w;
         QVERIFY(
             open(w, projectWith(dir_.filePath("example.json"), {{"spec", spec}, {"results", rows}}),
