@@ -62,7 +62,16 @@ QString joined(const std::vector<double>& values) {
     QStringList out;
     for (double v : values)
         out << QString::fromStdString(formatDouble(v));
-    return out.join(',');
+    return out.join(", ");
+}
+
+// A LIST field's text with its items trimmed and joined by ", ": "0.4,0.6" and "0.4, 0.6" are
+// one list, and must not mark results stale.
+std::string listText(const QLineEdit* field) {
+    QStringList items;
+    for (const QString& item : field->text().split(',', Qt::SkipEmptyParts))
+        items << item.trimmed();
+    return items.join(", ").toStdString();
 }
 
 // The floor periods of the study's floor filters, each once ("" when the ground drives all).
@@ -221,10 +230,9 @@ std::string StudyTab::studyJson() const {
     nlohmann::json im = {{"measure", m_measure->currentText().toStdString()}};
     if (m_measure->currentText() == "sa") im["period_s"] = m_saPeriod->value();
     // LIST text ("0.4,0.6" or "0.3:0.8:0.1") is what the study file's lists accept too.
-    nlohmann::json params = {{"mu", m_mu->text().toStdString()},
-                             {"tstar", m_tstar->text().toStdString()}};
+    nlohmann::json params = {{"mu", listText(m_mu)}, {"tstar", listText(m_tstar)}};
     if (!m_floors->text().trimmed().isEmpty())
-        params["floor_filter"] = {{"periods_s", m_floors->text().toStdString()}};
+        params["floor_filter"] = {{"periods_s", listText(m_floors)}};
     study["format"] = "kinstab-study";
     study["version"] = 1;
     const QStringList fields{m_folder->text(), m_include->text(), m_exclude->text()};
