@@ -27,6 +27,11 @@ inline const double kU1 = 30.0 / (6.0 + std::cbrt(81.0) - std::cbrt(9.0));
 inline double estimateRelTol(double relTol) {
     return 0.1 * std::pow(relTol, 2.0 / 3.0);
 }
+// The scale a component of size y is measured against: atol' + rtol' y.
+inline double estimateScale(double absTol, double relTol, double y) {
+    const double rtol = estimateRelTol(relTol);
+    return rtol * absTol / relTol + rtol * y;
+}
 
 // The factor by which to scale h after a step with error norm err and `newton` Newton
 // iterations out of at most `maxNewton` (RADAU5's rule: exponent 1/4, a safety factor that

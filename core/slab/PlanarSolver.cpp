@@ -57,9 +57,10 @@ private:
     Step slipTo(double end);
     struct Trial {
         Vec4 y, f;
-        double err;   // <= 1: accepted
-        double grow;  // next step / h after an accepted step
-        double retry; // step to retry / h after a rejected one
+        double err;               // <= 1: accepted
+        double grow;              // next step / h after an accepted step
+        double retry;             // step to retry / h after a rejected one
+        SlipRadauPolynomial poly; // an implicit step's collocation polynomial (h = 0: explicit)
     };
     Trial trial(bool implicit, double t0, const Vec4& y0, const Vec4& f0, double h, bool refine);
     bool isStiff(double tau, double rho) const;
@@ -92,13 +93,13 @@ private:
     double t_ = 0;
     Vec4 y_ = Vec4::Zero();
     bool slipping_ = false;
-    double hNext_ = 0;       // step proposal in tau
-    double slipPeak_ = 0;    // largest |u| of the current slip (scale of the stop floor)
-    double startLength_ = 0; // first step of a slaved slip
-    double slavedSpeed_ = 0; // below this |u| a slip may be slaved
-    // The last accepted implicit step's polynomial (h = 0: none) and the last trial's.
-    SlipRadauPolynomial lastPoly_, trialPoly_;
-    double fsalT_ = -1.0; // the last accepted step's end, state and derivative
+    double hNext_ = 0;             // step proposal in tau
+    double slipPeak_ = 0;          // largest |u| of the current slip (scale of the stop floor)
+    double startLength_ = 0;       // first step of a slaved slip
+    double slavedSpeed_ = 0;       // below this |u| a slip may be slaved
+    SlipRadauPolynomial lastPoly_; // the last accepted step's (h = 0: it was explicit)
+    double stiffSpeed_ = 0;        // over mu n: below it a slip takes implicit steps
+    double fsalT_ = -1.0;          // the last accepted step's end, state and derivative
     Vec4 fsalY_ = Vec4::Zero(), fsalF_ = Vec4::Zero();
     // The current window [winStart_, winEnd_] and its onset roots (scanned when needed); kept
     // across windows so that no window allocates.
@@ -239,6 +240,7 @@ PlanarResult PlanarRun::run() {
     // (measured on the golden grids: tau_c within 3.3e-10 at 1e-5, 7.7e-10 at 2e-5, 2.6e-9 at
     // 4e-5 and at 1e-4, which saves only a tenth more).
     slavedSpeed_ = std::clamp(1e-5 * std::cbrt(o_.relTol / 1e-10), 1e-7, 1e-4);
+    stiffSpeed_ = 0.01 * mu_ * m_.horizontalTimeScale(); // see isStiff
     if (m_.normal(0.0) <= 0.0) {
         r_.tauLiftOff = 0.0;
         r_.slab.tauC = 0.0;
@@ -375,12 +377,13 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
         const double d = -(y_[2] * f0[2] + y_[3] * f0[3]) / rho; // -d|u|/dtau
         double h = std::min(hNext_ > 0.0 ? hNext_ : rho / (mu_ + 1.0), end - t_);
         const bool implicit = isStiff(t_, rho);
-        if (d > 0.0 && rho <= d * h && implicit && rho > slavedSpeed_ && onManifold(t_, y_, 0.05)) {
-            // A stop ahead on the slow manifold: |u| falls about linearly while its direction
-            // follows -a_h; the implicit steps go down to the slaved speed, which locates it.
+        const bool stopAhead = d > 0.0 && rho <= d * h; // a stop predicted within the step
+        if (stopAhead && implicit && rho > slavedSpeed_ && onManifold(t_, y_, 0.05)) {
+            // On the slow manifold |u| falls about linearly while its direction follows -a_h;
+            // the implicit steps go down to the slaved speed, which locates the stop.
             h = 0.5 * rho / d;
-        } else if (d > 0.0 && rho <= d * h) {
-            // A stop is predicted within the step: go on in s = ln|u|.
+        } else if (stopAhead) {
+            // Off it: go on in s = ln|u|.
             switch (approachStop(end)) {
             case Approach::Done:
                 return Step::Done;
@@ -440,7 +443,7 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
         fsalT_ = t_;
         fsalY_ = y_;
         fsalF_ = st.f;
-        lastPoly_ = implicit ? trialPoly_ : SlipRadauPolynomial{};
+        lastPoly_ = st.poly;
         const double grow = h * st.grow;
         hNext_ = truncated ? std::max(hNext_, grow) : grow;
     }
@@ -453,19 +456,18 @@ PlanarRun::Trial PlanarRun::trial(bool implicit, double t0, const Vec4& y0, cons
                                   double h, bool refine) {
     const Vec4 absTol = Vec4::Constant(o_.absTol);
     if (implicit) {
-        const bool continues = lastPoly_.h > 0.0 && t0 == t_ && y0 == y_ && t0 == fsalT_;
+        // The previous step's polynomial is used only when it ended at t0 (slipRadauStep checks).
         const SlipRadauStep st = slipRadauStep(m_, t0, y0, f0, h, absTol, o_.relTol, refine,
-                                               continues ? &lastPoly_ : nullptr);
-        trialPoly_ = st.poly;
+                                               lastPoly_.h > 0.0 ? &lastPoly_ : nullptr);
         r_.slab.work.accelEvaluations += st.evaluations;
         r_.slab.work.rootIterations += st.newton;
         const double factor = radau::stepFactor(st.err, st.newton, kSlipRadauMaxNewton);
-        return {st.y, st.f, st.err, factor, std::isfinite(st.err) ? factor : 0.5};
+        return {st.y, st.f, st.err, factor, std::isfinite(st.err) ? factor : 0.5, st.poly};
     }
     const auto st =
         dop853Step<4>([&](double t, const Vec4& y) { return rhs(t, y); }, t0, y0, f0, h);
     const double err = dop853ErrorNorm<4>(st, y0, absTol, o_.relTol);
-    return {st.y, st.f, err, dop853StepFactor(err), dop853RetryStep(h, err) / h};
+    return {st.y, st.f, err, dop853StepFactor(err), dop853RetryStep(h, err) / h, {}};
 }
 
 // Whether a slip at speed rho is left to the implicit step: the explicit one's stability bound,
@@ -475,7 +477,7 @@ PlanarRun::Trial PlanarRun::trial(bool implicit, double t0, const Vec4& y0, cons
 // bench grid (CPU ratio to the 1-DOF solver 41, 24, 26, 32 and 49), and keeps the paper-grid
 // goldens at their accuracy (0.03 doubles their worst tau_c difference).
 bool PlanarRun::isStiff(double tau, double rho) const {
-    return rho < 0.01 * mu_ * m_.normal(tau) * m_.horizontalTimeScale();
+    return rho < stiffSpeed_ * m_.normal(tau);
 }
 
 bool PlanarRun::collapseIn(const Vec4& y, int& comp, double& sign) const {

@@ -45,21 +45,20 @@ double errorNorm(const SlabModel2D& m, double t0, const OdeVec<4>& y0, const Ode
     const Vec2d u0(y0[2], y0[3]);
     const Vec2d e0 = u0 / u0.norm();
     const Vec2d a0 = -Vec2d(f0[2], f0[3]) - mun * e0;
-    const Mat2 lu = (kU1 / h) * Mat2::Identity() - slipAt(u0, a0, mun).jac;
+    const Mat2 inverse = ((kU1 / h) * Mat2::Identity() - slipAt(u0, a0, mun).jac).inverse();
     Vec2d hd = Vec2d::Zero(), hu = Vec2d::Zero();
     for (int i = 0; i < 3; ++i) {
         hd += kD[i] / h * zd[i];
         hu += kD[i] / h * z.segment<2>(2 * i);
     }
-    const double rtol = estimateRelTol(relTol);
     auto norm = [&](const Vec2d& cd, const Vec2d& cu, Vec2d& xd, Vec2d& xu) {
-        xu = lu.inverse() * cu;
+        xu = inverse * cu;
         xd = (cd + xu) * h / kU1;
         double sum = 0.0;
         for (int i = 0; i < 4; ++i) {
             const double x = i < 2 ? xd[i] : xu[i - 2];
             const double sc =
-                rtol * absTol[i] / relTol + rtol * std::max(std::abs(y0[i]), std::abs(y1[i]));
+                estimateScale(absTol[i], relTol, std::max(std::abs(y0[i]), std::abs(y1[i])));
             sum += (x / sc) * (x / sc);
         }
         return std::sqrt(sum / 4.0);
@@ -121,8 +120,8 @@ SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0
     // Newton's corrections are measured against the error estimate's tolerances and stopped, as
     // in RADAU5, when the contraction rate says the rest is below fnewt of them.
     const double rtol = estimateRelTol(relTol);
-    const Vec2d scale(rtol * absTol[2] / relTol + rtol * std::abs(u0[0]),
-                      rtol * absTol[3] / relTol + rtol * std::abs(u0[1]));
+    const Vec2d scale(estimateScale(absTol[2], relTol, std::abs(u0[0])),
+                      estimateScale(absTol[3], relTol, std::abs(u0[1])));
     const double fnewt = std::max(10.0 * 2.2e-16 / rtol, std::min(0.03, std::sqrt(rtol)));
     std::array<Slip, 3> s;
     bool converged = false;
