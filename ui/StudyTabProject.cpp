@@ -18,9 +18,6 @@
 #include <QProgressBar>
 #include <QPushButton>
 
-#include <fstream>
-#include <iterator>
-
 namespace kinstab::ui {
 
 bool StudyTab::useInProject(const QString& savePath) {
@@ -130,7 +127,8 @@ std::shared_ptr<StudyTab::Outcome> readStudyResults(const QString& specPath,
     o->file = rowsPath;
     try {
         const StudySpec spec = loadStudy(specPath.toStdString());
-        std::vector<StudyRow> rows = readStudyRows(rowsPath.toStdString());
+        std::string text; // kept for export and "Use in project": the file is read once
+        std::vector<StudyRow> rows = readStudyRows(rowsPath.toStdString(), &text);
         const std::string dir = QFileInfo(specPath).absolutePath().toStdString();
         if (const std::string m = studyRowsMismatch(spec, dir, rows); !m.empty()) {
             o->notice = QObject::tr("The results %1 are not shown: they are not the study's "
@@ -138,8 +136,7 @@ std::shared_ptr<StudyTab::Outcome> readStudyResults(const QString& specPath,
                             .arg(rowsPath, QString::fromStdString(m));
             return o;
         }
-        std::ifstream in(rowsPath.toStdString(), std::ios::binary);
-        o->rows.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        o->rows = std::move(text);
         o->fragility = studyFragility(rows, {});
         o->parsed = std::move(rows);
     } catch (const std::exception& e) {

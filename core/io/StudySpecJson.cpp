@@ -221,12 +221,11 @@ void readMotions(const JsonReader& r, StudySpec& s) {
     for (std::size_t i = 0; i < a.size(); ++i) {
         const std::string key = "motion[" + std::to_string(i) + "]";
         const std::string m = a[i].is_string() ? a[i].get<std::string>() : a[i].dump();
-        const StudyMotion kind = m == "record" ? StudyMotion::Record : StudyMotion::FittedSine;
-        if (m != "record" && m != "fitted_sine")
-            badValue(r, key, quotedToken(m), "must be \"record\" or \"fitted_sine\"");
-        if (std::find(s.motions.begin(), s.motions.end(), kind) != s.motions.end())
+        const std::optional<StudyMotion> kind = motionFromName(m);
+        if (!kind) badValue(r, key, quotedToken(m), "must be \"record\" or \"fitted_sine\"");
+        if (std::find(s.motions.begin(), s.motions.end(), *kind) != s.motions.end())
             badValue(r, key, quotedToken(m), "appears twice");
-        s.motions.push_back(kind);
+        s.motions.push_back(*kind);
     }
 }
 

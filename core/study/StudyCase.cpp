@@ -43,4 +43,23 @@ std::optional<Shard> parseShard(const std::string& text) {
     return Shard{*k, *n};
 }
 
+StudyRow studyRowInputs(const StudySpec& s, const StudyCase& c) {
+    StudyRow row;
+    row.index = c.index;
+    row.cases = studyCaseCount(s);
+    row.set = c.set;
+    row.record = c.record->label;
+    row.mu = c.mu;
+    row.tstar = c.tstar;
+    row.limit = s.limit;
+    if (c.floor) {
+        row.floorPeriod = c.floor->period;
+        row.floorDamping = c.floor->damping;
+    }
+    if (c.level > 0) row.level = c.level;
+    if (s.motionGiven) row.motion = motionName(c.motion);
+    row.measure = intensityName(s.intensity);
+    return row;
+}
+
 } // namespace kinstab

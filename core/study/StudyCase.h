@@ -6,6 +6,7 @@
 // fragility curve - are neighbours. A case is found from its index
 // alone: no list of cases is ever built, so a study of millions of cases takes no memory for it.
 
+#include "core/study/StudyRow.h"
 #include "core/study/StudySpec.h"
 
 #include <cstddef>
@@ -27,6 +28,10 @@ struct StudyCase {
 std::size_t studyCaseCount(const StudySpec& s);
 std::size_t studyParameterSets(const StudySpec& s);
 StudyCase studyCase(const StudySpec& s, std::size_t index); // index < studyCaseCount
+// The inputs a case's row carries (index, set, record, mu, t*, limit, floor filter or level,
+// motion when the study names motions, measure): what a run writes and what a results file
+// is checked against (core/study/StudyRowsMatch.h).
+StudyRow studyRowInputs(const StudySpec& s, const StudyCase& c);
 
 // A shard K of N (1-based) takes every case whose index % N == K - 1: round-robin spreads the
 // slow records and high limits evenly over the shards.

@@ -25,16 +25,15 @@ struct Line {
     std::string where; // FILE:LINE
 };
 
-// Calls f(Line) for every line of the file; throws StudyRowError naming FILE:LINE.
-template <class F> void forEachRow(const std::string& path, F&& f) {
-    const FileText file = readTextFile(path, kMaxResultsBytes);
-    if (!file.error.empty()) throw StudyRowError(path + ": " + file.error);
-    std::istringstream in{std::string(withoutBom(file.text))};
-    std::string text;
-    for (long n = 1; std::getline(in, text); ++n) {
+// Calls f(Line) for every line of the text of file `path`; throws StudyRowError naming
+// FILE:LINE.
+template <class F> void forEachRow(std::string_view text, const std::string& path, F&& f) {
+    std::istringstream in{std::string(withoutBom(text))};
+    std::string line;
+    for (long n = 1; std::getline(in, line); ++n) {
         const std::string where = path + ":" + std::to_string(n);
         try {
-            f(Line{text, parseStudyRow(text), where});
+            f(Line{line, parseStudyRow(line), where});
         } catch (const StudyRowError& e) {
             throw StudyRowError(where + ": " + e.what());
         }
@@ -43,10 +42,12 @@ template <class F> void forEachRow(const std::string& path, F&& f) {
 
 } // namespace
 
-std::vector<StudyRow> readStudyRows(const std::string& path) {
+std::vector<StudyRow> readStudyRows(const std::string& path, std::string* text) {
+    FileText file = readTextFile(path, kMaxResultsBytes);
+    if (!file.error.empty()) throw StudyRowError(path + ": " + file.error);
     std::vector<StudyRow> rows;
     std::set<std::size_t> seen;
-    forEachRow(path, [&](Line l) {
+    forEachRow(file.text, path, [&](Line l) {
         // One study's rows: the same size and intensity measure, each case once.
         if (!rows.empty() &&
             (l.row.cases != rows.front().cases || l.row.measure != rows.front().measure))
@@ -57,6 +58,7 @@ std::vector<StudyRow> readStudyRows(const std::string& path) {
         rows.push_back(std::move(l.row));
     });
     if (rows.empty()) throw StudyRowError(path + ": no rows");
+    if (text) *text = std::move(file.text);
     return rows;
 }
 

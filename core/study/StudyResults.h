@@ -17,7 +17,8 @@ namespace kinstab {
 // Throws StudyRowError "FILE:LINE: message" for a line that is not a study row, a row of another
 // study (size or intensity measure) than the first, or a case given twice. Blank lines are not
 // allowed either: a study file is written whole.
-std::vector<StudyRow> readStudyRows(const std::string& path);
+// text: the file's text as read, when asked (one read for rows kept and shown).
+std::vector<StudyRow> readStudyRows(const std::string& path, std::string* text = nullptr);
 
 // Hands onSet the rows of one results file a parameter set at a time (the rows of a set are
 // neighbours in case order), holding one set's rows: the fragility of a study of millions of

@@ -44,8 +44,6 @@ std::string text(const nlohmann::json& j, const char* key) {
 }
 } // namespace
 
-// nlohmann's dump writes the shortest text that reads back as the same double, in the C
-// locale's syntax whatever the process locale: the same bytes on every machine and rerun.
 std::string studyDriverText(const StudyRow& r) {
     std::string s = "ground";
     if (r.level)
@@ -57,6 +55,8 @@ std::string studyDriverText(const StudyRow& r) {
     return s;
 }
 
+// nlohmann's dump writes the shortest text that reads back as the same double, in the C
+// locale's syntax whatever the process locale: the same bytes on every machine and rerun.
 std::string studyRowLine(const StudyRow& r) {
     ojson j = {{"case", r.index},
                {"cases", r.cases},

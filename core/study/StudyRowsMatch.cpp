@@ -34,32 +34,36 @@ fs::path rowFile(const std::string& label, const std::string& studyDir) {
     return (p.is_absolute() ? p : fs::path(studyDir) / p).lexically_normal();
 }
 
+std::string text(const std::optional<int>& level) {
+    return level ? std::to_string(*level) : std::string("none");
+}
+
 std::string caseMismatch(const StudySpec& s, const std::string& dir, const StudyRow& r,
                          const StudyCase& c) {
+    const StudyRow want = studyRowInputs(s, c); // what a run of the case writes
     if (rowFile(r.record, dir) != fs::path(c.record->file).lexically_normal())
-        return "record " + r.record + ", the study file says " + c.record->label;
-    if (!same(r.mu, c.mu)) return "mu = " + text(r.mu) + ", the study file says " + text(c.mu);
-    if (!same(r.tstar, c.tstar))
-        return "tstar = " + text(r.tstar) + ", the study file says " + text(c.tstar);
-    const std::optional<double> period = c.floor ? std::optional(c.floor->period) : std::nullopt;
-    const std::optional<double> damping = c.floor ? std::optional(c.floor->damping) : std::nullopt;
-    if (r.floorPeriod != period || r.floorDamping != damping)
+        return "record " + r.record + ", the study file says " + want.record;
+    if (!same(r.mu, want.mu))
+        return "mu = " + text(r.mu) + ", the study file says " + text(want.mu);
+    if (!same(r.tstar, want.tstar))
+        return "tstar = " + text(r.tstar) + ", the study file says " + text(want.tstar);
+    if (r.floorPeriod != want.floorPeriod || r.floorDamping != want.floorDamping)
         return "floor filter T = " + text(r.floorPeriod) + " s, zeta = " + text(r.floorDamping) +
-               ", the study file says T = " + text(period) + " s, zeta = " + text(damping);
-    const std::optional<int> level = c.level > 0 ? std::optional(c.level) : std::nullopt;
-    if (r.level != level)
-        return "level " + (r.level ? std::to_string(*r.level) : std::string("none")) +
-               ", the study file says " + (level ? std::to_string(*level) : std::string("none"));
+               ", the study file says T = " + text(want.floorPeriod) +
+               " s, zeta = " + text(want.floorDamping);
+    if (r.level != want.level)
+        return "level " + text(r.level) + ", the study file says " + text(want.level);
+    // Rows name their motion only when the study file lists motions: "record" otherwise.
     if (r.motion.value_or("record") != motionName(c.motion))
         return "motion " + r.motion.value_or("record") + ", the study file says " +
                motionName(c.motion);
     if (!same(r.scale.value_or(1.0), c.record->scale))
         return "record scale " + text(r.scale.value_or(1.0)) + ", the study file says " +
                text(c.record->scale);
-    if (!same(r.limit, s.limit))
-        return "limit = " + text(r.limit) + ", the study file says " + text(s.limit);
-    if (r.measure != intensityName(s.intensity))
-        return "measure " + r.measure + ", the study file says " + intensityName(s.intensity);
+    if (!same(r.limit, want.limit))
+        return "limit = " + text(r.limit) + ", the study file says " + text(want.limit);
+    if (r.measure != want.measure)
+        return "measure " + r.measure + ", the study file says " + want.measure;
     if (r.criticalIntensity && r.criticalPeak && *r.criticalIntensity > 0) {
         const double maxG = r.limitIntensity * *r.criticalPeak / *r.criticalIntensity;
         if (!same(maxG, s.search.to, 1e-9))

@@ -57,25 +57,6 @@ void addAsGiven(const StudyRecord& record, StudyRow& row) {
     row.margin = *row.criticalIntensity / row.imAsGiven;
 }
 
-StudyRow rowInputs(const StudySpec& s, const StudyCase& c) {
-    StudyRow row;
-    row.index = c.index;
-    row.cases = studyCaseCount(s);
-    row.set = c.set;
-    row.record = c.record->label;
-    row.mu = c.mu;
-    row.tstar = c.tstar;
-    row.limit = s.limit;
-    if (c.floor) {
-        row.floorPeriod = c.floor->period;
-        row.floorDamping = c.floor->damping;
-    }
-    if (c.level > 0) row.level = c.level;
-    if (s.motionGiven) row.motion = motionName(c.motion);
-    row.measure = intensityName(s.intensity);
-    return row;
-}
-
 } // namespace
 
 void checkStudyRecords(const StudySpec& s) {
@@ -106,7 +87,7 @@ StudyRow runStudyCase(const StudySpec& s, const StudyCase& c) {
     // The record is linear in its scale, and so are the floor filter and the building: the
     // intensity at a scale is the unscaled intensity times (scaled peak / unscaled peak) of the
     // driving motion (of its surrogate's envelope, for the fitted sine).
-    StudyRow row = rowInputs(s, c);
+    StudyRow row = studyRowInputs(s, c);
     row.recordIntensity = recordIntensity(s.intensity, ground);
     const double perPeak = row.recordIntensity / crit.unitPeak;
     if (crit.peak) {

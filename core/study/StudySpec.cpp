@@ -14,4 +14,10 @@ std::string motionName(StudyMotion m) {
     return m == StudyMotion::Record ? "record" : "fitted_sine";
 }
 
+std::optional<StudyMotion> motionFromName(const std::string& name) {
+    for (StudyMotion m : {StudyMotion::Record, StudyMotion::FittedSine})
+        if (name == motionName(m)) return m;
+    return std::nullopt;
+}
+
 } // namespace kinstab

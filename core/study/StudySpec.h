@@ -70,7 +70,8 @@ struct StudyBuilding {
 // What drives the slab in a case: the motion itself, or the enveloped sine whose envelope is
 // fitted to it (core/excitation/EnvelopeFit.h) at its dominant frequency.
 enum class StudyMotion { Record, FittedSine };
-std::string motionName(StudyMotion m); // "record" | "fitted_sine"
+std::string motionName(StudyMotion m);                              // "record" | "fitted_sine"
+std::optional<StudyMotion> motionFromName(const std::string& name); // none: another name
 
 struct StudySpec {
     std::string name;

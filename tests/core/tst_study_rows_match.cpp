@@ -31,16 +31,7 @@ StudySpec spec() {
 // The row a run of case i writes, as far as the comparison reads it (no collapse).
 StudyRow rowOf(const StudySpec& s, std::size_t i) {
     const StudyCase c = studyCase(s, i);
-    StudyRow r;
-    r.index = i;
-    r.set = c.set;
-    r.record = c.record->label;
-    r.mu = c.mu;
-    r.tstar = c.tstar;
-    r.limit = s.limit;
-    r.measure = intensityName(s.intensity);
-    if (c.level > 0) r.level = c.level;
-    r.motion = motionName(c.motion);
+    StudyRow r = studyRowInputs(s, c);
     r.scale = c.record->scale;
     return r;
 }
