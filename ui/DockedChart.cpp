@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/DockedChart.h"
 
+#include "ui/LegendEntry.h"
+
 #include <QChart>
 #include <QEvent>
 #include <QLabel>
@@ -70,9 +72,7 @@ private:
                 continue;
             const QColor c =
                 m->brush().style() != Qt::NoBrush ? m->brush().color() : m->pen().color();
-            entries << QStringLiteral("<span style='white-space:nowrap'><span "
-                                      "style='color:%1'>&#9632;</span> %2</span>")
-                           .arg(c.name(), m->label().toHtmlEscaped());
+            entries << legendEntryHtml(c, m->label().toHtmlEscaped());
         }
         return entries.join(QStringLiteral("&nbsp;&nbsp; "));
     }

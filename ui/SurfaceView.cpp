@@ -3,6 +3,7 @@
 
 #include "ui/ColourBar.h"
 #include "ui/HeatMapView.h"
+#include "ui/LegendEntry.h"
 #include "ui/NiceTicks.h"
 #include "ui/StaleFrame.h"
 
@@ -471,9 +472,8 @@ void SurfaceView::rebuildOverlays() {
 
 void SurfaceView::updateLegend() {
     auto swatch = [](const QColor& c, const QString& text) {
-        return QStringLiteral("<span style='white-space:nowrap'><span style='color:%1; "
-                              "font-size:large'>&#9632;</span> %2</span>&nbsp;&nbsp; ")
-            .arg(c.name(), text);
+        return legendEntryHtml(c, text, QStringLiteral("; font-size:large")) +
+               QStringLiteral("&nbsp;&nbsp; ");
     };
     // The γc colours are read off the colour bar; the legend names the lines drawn over them.
     QString html = swatch(gammaColor(0.0), tr("stable (γc = 0)"));
