@@ -133,7 +133,8 @@ double dop853ErrorNorm(const Dop853Result<N>& r, const OdeVec<N>& y0, const OdeV
 // safety 0.9, limited to [0.2, 10]).
 inline double dop853StepFactor(double err) {
     if (!(err > 0.0)) return 10.0;
-    return std::clamp(0.9 * std::pow(err, -0.125), 0.2, 10.0);
+    // err^(-1/8) by three square roots: pow took 4% of the planar solver's time.
+    return std::clamp(0.9 / std::sqrt(std::sqrt(std::sqrt(err))), 0.2, 10.0);
 }
 
 // The step to retry with after a step rejected with error norm err (NaN: a fifth of it).

@@ -25,7 +25,7 @@ inline const double kU1 = 30.0 / (6.0 + std::cbrt(81.0) - std::cbrt(9.0));
 
 // RADAU5's tolerances for its order-3 estimate: rtol' = 0.1 rtol^(2/3), atol' = rtol' atol / rtol.
 inline double estimateRelTol(double relTol) {
-    return 0.1 * std::pow(relTol, 2.0 / 3.0);
+    return 0.1 * std::cbrt(relTol * relTol); // cbrt: pow took 5% of the planar solver's time
 }
 // The scale a component of size y is measured against: atol' + rtol' y.
 inline double estimateScale(double absTol, double relTol, double y) {

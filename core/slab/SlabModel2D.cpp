@@ -37,20 +37,21 @@ SlabModel2D::SlabModel2D(std::shared_ptr<const Excitation1D> ax,
     // exponentials then); any other pair keeps the general path.
     for (double tau : {0.1, 1.0, 7.3, 31.0, 200.0})
         if (x->envelopeAt(tau) != y->envelopeAt(tau)) return;
-    sharedX_ = x;
-    sharedY_ = y;
+    series_.emplace(*x, *y);
 }
 
 Vec2 SlabModel2D::accel(double tau) const {
-    if (sharedX_) {
-        // As EnvelopedSine::accel, (A / S_max) e sin(omega tau), with e evaluated once.
-        const double e = sharedX_->envelopeAt(tau);
-        return {sharedX_->amplitude() / sharedX_->sMax() * e * std::sin(sharedX_->omega() * tau),
-                sharedY_->amplitude() / sharedY_->sMax() * e * std::sin(sharedY_->omega() * tau)};
+    if (series_) {
+        const auto a = series_->accel(tau);
+        return {a[0], a[1]};
     }
     return {ax_->accel(tau), ay_ ? ay_->accel(tau) : 0.0};
 }
 Vec2 SlabModel2D::accelSlope(double tau) const {
+    if (series_) {
+        const auto s = series_->slope(tau);
+        return {s[0], s[1]};
+    }
     return {ax_->accelSlope(tau), ay_ ? ay_->accelSlope(tau) : 0.0};
 }
 double SlabModel2D::normal(double tau) const {

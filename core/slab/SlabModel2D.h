@@ -8,6 +8,7 @@
 
 #include "core/excitation/EnvelopedSine.h"
 #include "core/excitation/Excitation1D.h"
+#include "core/slab/SinePairSeries.h"
 #include "core/slab/SlabTypes.h"
 
 #include <cmath>
@@ -68,9 +69,11 @@ public:
 private:
     std::shared_ptr<const Excitation1D> ax_, ay_, az_;
     // Both horizontal components enveloped sines under one envelope (the planar case of
-    // ch. VI): accel() evaluates the envelope once for both, a third of the solver's work.
-    const EnvelopedSine* sharedX_ = nullptr;
-    const EnvelopedSine* sharedY_ = nullptr;
+    // ch. VI): accel() and accelSlope() sum local Taylor series, a few times cheaper than the
+    // closed forms (four transcendental functions) that took half of the solver's time. It
+    // memoizes its last patch: a model is used by one thread at a time (each point builds its
+    // own).
+    mutable std::optional<SinePairSeries> series_;
     PlanarParams params_;
     // Bound on |a_h'| over all time (both components enveloped sines; infinite otherwise).
     double slopeBound_ = std::numeric_limits<double>::infinity();
