@@ -32,21 +32,26 @@ public:
     static constexpr double kMaxTau = 1e7;
 
 private:
+    using Pair = std::array<double, 2>; // (x, y)
     struct Component {
         const EnvelopedSine* sine = nullptr;
-        double gain = 0.0; // K = A / S_max
-        std::array<std::complex<double>, kDegree + 1> zp{},
-            dz{};                            // z_p^k / k!, (z_p^k - z_q^k) / k!
-        std::array<double, kDegree + 1> c{}; // the current patch's Taylor terms
+        double gain = 0.0;                                  // K = A / S_max
+        std::array<std::complex<double>, kDegree + 1> zp{}; // z_p^k / k!
+        std::array<std::complex<double>, kDegree + 1> dz{}; // (z_p^k - z_q^k) / k!
+    };
+    // A patch's Taylor terms of both components. Two are kept (even and odd index): a step or a
+    // root search that straddles a patch boundary would otherwise rebuild them in turn.
+    struct Patch {
+        long index = -1;
+        std::array<Pair, kDegree + 1> c{};
     };
     static void initComponent(Component& c, double p, double q);
-    bool patchFor(double tau, double& delta); // false: outside the grid
-    void build(long k);
-    static void fill(Component& c, double centre, double ep, double mc);
+    const Patch* patchFor(double tau, double& delta); // null: outside the grid
+    void build(Patch& patch, long k) const;
 
     Component x_, y_;
     double p_ = 0.0, q_ = 0.0, length_ = 0.0, inverseLength_ = 0.0;
-    long patch_ = -1;
+    std::array<Patch, 2> patches_;
 };
 
 } // namespace kinstab

@@ -94,7 +94,7 @@ Eigen::Matrix<double, 6, 1> newtonCorrection(const std::array<Slip, 3>& s, doubl
             m(j, k) =
                 (j == k ? 1.0 : 0.0) + h * kA[j][k] * s[k].rate * s[j].normal.dot(s[k].normal);
     }
-    const Eigen::Vector3d y = m.partialPivLu().solve(qb);
+    const Eigen::Vector3d y = m.inverse() * qb; // cofactors: a 3x3 LU cost twice as much
     Eigen::Matrix<double, 6, 1> dz = rhs;
     for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 3; ++k)
