@@ -42,6 +42,11 @@ RecordedMotion::RecordedMotion(const Accelerogram& record, double tstar,
         v_[k + 1] = v_[k] + h_ * (a_[k] + a_[k + 1]) / 2.0;
         d_[k + 1] = d_[k] + v_[k] * h_ + h_ * h_ * (2.0 * a_[k] + a_[k + 1]) / 6.0;
     }
+    slopes_.assign(n, 0.0);
+    for (std::size_t k = 0; k + 1 < n; ++k)
+        slopes_[k] = (a_[k + 1] - a_[k]) / h_;
+    endTau_ = h_ * static_cast<double>(n - 1);
+    inverseH_ = 1.0 / h_;
     suffixMax_.assign(n, 0.0);
     suffixMax_[n - 1] = std::abs(a_[n - 1]);
     for (std::size_t k = n - 1; k-- > 0;)
@@ -49,7 +54,12 @@ RecordedMotion::RecordedMotion(const Accelerogram& record, double tstar,
 }
 
 std::size_t RecordedMotion::interval(double tau) const {
-    const double k = std::floor(tau / h_);
+    // floor(tau / h) by a product (the division was a tenth of a planar run with a vertical
+    // record); near a knot, where the two roundings could differ, by the quotient itself.
+    const double q = tau * inverseH_;
+    const double k = std::abs(q - std::round(q)) > 1e-9 * (1.0 + std::abs(q))
+                         ? std::floor(q)
+                         : std::floor(tau / h_);
     if (!(k > 0.0)) return 0;
     return std::min(static_cast<std::size_t>(std::min(k, 1e18)), a_.size() - 2);
 }

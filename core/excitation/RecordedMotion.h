@@ -30,21 +30,26 @@ public:
     double boundOn(double lo, double hi) const override;
     double peak() const override { return suffixMax_.front(); }
 
-    double sampleStep() const { return h_; }                                  // dt / t*
-    double endTau() const { return h_ * static_cast<double>(a_.size() - 1); } // last sample
-    double scale() const { return scale_; }                                   // applied factor
-    const std::vector<double>& samples() const { return a_; }                 // scaled, g
+    double sampleStep() const { return h_; }                  // dt / t*
+    double endTau() const { return endTau_; }                 // last sample, h (samples - 1)
+    double scale() const { return scale_; }                   // applied factor
+    const std::vector<double>& samples() const { return a_; } // scaled, g
 
 private:
     std::size_t interval(double tau) const; // k with tau in [k h, (k+1) h], clamped to the record
-    double slope(std::size_t k) const { return (a_[k + 1] - a_[k]) / h_; }
-    double firstIntegral(double tau) const;  // int_0^tau a
-    double secondIntegral(double tau) const; // int_0^tau int_0^s a
+    double slope(std::size_t k) const { return slopes_[k]; } // (a_{k+1} - a_k) / h
+    double firstIntegral(double tau) const;                  // int_0^tau a
+    double secondIntegral(double tau) const;                 // int_0^tau int_0^s a
 
     std::vector<double> a_;
     std::vector<double> v_, d_;     // first and second integrals at the samples
     std::vector<double> suffixMax_; // max_{j >= k} |a_j|
+    // The pieces' slopes and the end, formed once: they were a tenth of a planar run with a
+    // vertical record (a division on every evaluation).
+    std::vector<double> slopes_;
     double h_ = 1.0;
+    double inverseH_ = 1.0;
+    double endTau_ = 0.0;
     double scale_ = 1.0;
 };
 
