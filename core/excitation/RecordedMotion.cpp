@@ -54,14 +54,20 @@ RecordedMotion::RecordedMotion(const Accelerogram& record, double tstar,
 }
 
 std::size_t RecordedMotion::interval(double tau) const {
-    // floor(tau / h) by a product (the division was a tenth of a planar run with a vertical
-    // record); near a knot, where the two roundings could differ, by the quotient itself.
+    // floor(tau / h) by a product and a truncation (the division and libm's floor were a tenth
+    // of a planar run with a vertical record); near a knot, where the product's rounding could
+    // land on the other side, by the quotient itself.
+    if (!(tau > 0.0)) return 0;
+    const std::size_t last = a_.size() - 2;
     const double q = tau * inverseH_;
-    const double k = std::abs(q - std::round(q)) > 1e-9 * (1.0 + std::abs(q))
-                         ? std::floor(q)
-                         : std::floor(tau / h_);
-    if (!(k > 0.0)) return 0;
-    return std::min(static_cast<std::size_t>(std::min(k, 1e18)), a_.size() - 2);
+    if (!(q < static_cast<double>(last) + 1.0)) return last; // beyond the last knot but one
+    auto k = static_cast<std::size_t>(q);
+    const double frac = q - static_cast<double>(k), guard = 1e-9 * (1.0 + q);
+    if (frac < guard || frac > 1.0 - guard) {
+        const double exact = std::floor(tau / h_);
+        k = exact > 0.0 ? static_cast<std::size_t>(exact) : 0;
+    }
+    return std::min(k, last);
 }
 
 double RecordedMotion::accel(double tau) const {

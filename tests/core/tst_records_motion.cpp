@@ -10,8 +10,10 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
 using namespace kinstab;
 
@@ -102,6 +104,7 @@ private slots:
     void crossingsAndBounds();
     void scaledToTargetPeak();
     void zeroAfterEnd();
+    void pieceChosenAsByQuotient();
     void invalidInput();
     void exactSolverMatchesSmallSteps_data();
     void exactSolverMatchesSmallSteps();
@@ -191,6 +194,42 @@ void TestRecordedMotion::zeroAfterEnd() {
     QVERIFY(std::abs(m.velocityChange(0.0, 5.0) - 0.4) < 1e-15);
     QVERIFY(std::abs(m.displacementChange(m.endTau(), 5.0)) < 1e-15);
     QVERIFY(m.segmentEnd(0.4) > 0.4);
+}
+
+// accel picks the piece by a product with 1/h (faster than the quotient): at every knot, one ulp
+// either side, and random times, its value is bit-identical to the interpolant on the piece
+// floor(tau / h) with the slope (a_{k+1} - a_k) / h, as before that change.
+void TestRecordedMotion::pieceChosenAsByQuotient() {
+    Accelerogram rec;
+    rec.dt = 0.01;
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> sample(-0.5, 0.5);
+    for (int i = 0; i < 3001; ++i)
+        rec.samples.push_back(sample(rng));
+    const RecordedMotion m(rec, 0.099);
+    const std::vector<double>& a = m.samples();
+    const double h = m.sampleStep();
+    auto reference = [&](double tau) {
+        const double kk = std::floor(tau / h);
+        const std::size_t k =
+            kk > 0.0 ? std::min(static_cast<std::size_t>(kk), a.size() - 2) : std::size_t{0};
+        return a[k] + (a[k + 1] - a[k]) / h * (tau - h * static_cast<double>(k));
+    };
+    std::vector<double> times;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        const double knot = h * static_cast<double>(k);
+        times.insert(times.end(), {knot, std::nextafter(knot, 0.0), std::nextafter(knot, 1e9)});
+    }
+    std::uniform_real_distribution<double> tau(0.0, m.endTau());
+    for (int i = 0; i < 20000; ++i)
+        times.push_back(tau(rng));
+    int checked = 0;
+    for (double t : times) {
+        if (t < 0.0 || t > m.endTau()) continue;
+        QVERIFY2(m.accel(t) == reference(t), qPrintable(QString::number(t, 'g', 17)));
+        ++checked;
+    }
+    QVERIFY(checked > 29000);
 }
 
 void TestRecordedMotion::invalidInput() {
