@@ -65,6 +65,10 @@ void SinePairSeries::build(Patch& patch, long k) const {
                 (ew * c.zp[static_cast<std::size_t>(i)] + ed * c.dz[static_cast<std::size_t>(i)])
                     .imag();
     }
+    for (std::size_t i = 0; i < kDegree; ++i)
+        for (std::size_t lane = 0; lane < 2; ++lane)
+            patch.dc[i][lane] = static_cast<double>(i + 1) * patch.c[i + 1][lane];
+    patch.dc[kDegree] = {0.0, 0.0};
 }
 
 namespace {
@@ -96,12 +100,7 @@ std::array<double, 2> SinePairSeries::slope(double tau) {
     double delta = 0.0;
     const Patch* patch = patchFor(tau, delta);
     if (!patch) return {x_.sine->accelSlope(tau), y_.sine->accelSlope(tau)};
-    Pair s{kDegree * patch->c[kDegree][0], kDegree * patch->c[kDegree][1]};
-    for (int i = kDegree - 1; i >= 1; --i) {
-        const Pair& c = patch->c[static_cast<std::size_t>(i)];
-        s = {s[0] * delta + i * c[0], s[1] * delta + i * c[1]};
-    }
-    return s;
+    return estrin16(patch->dc, delta);
 }
 
 } // namespace kinstab

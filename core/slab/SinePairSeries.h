@@ -44,6 +44,7 @@ private:
     struct Patch {
         long index = -1;
         std::array<Pair, kDegree + 1> c{};
+        std::array<Pair, kDegree + 1> dc{}; // the slope's terms (the last one 0)
     };
     static void initComponent(Component& c, double p, double q);
     const Patch* patchFor(double tau, double& delta); // null: outside the grid
