@@ -38,6 +38,16 @@ SlabModel2D::SlabModel2D(std::shared_ptr<const Excitation1D> ax,
     for (double tau : {0.1, 1.0, 7.3, 31.0, 200.0})
         if (x->envelopeAt(tau) != y->envelopeAt(tau)) return;
     series_.emplace(*x, *y);
+    const double kx = x->amplitude() / x->sMax(), ky = y->amplitude() / y->sMax();
+    if (kx > 0.0) boundRatio_ = std::hypot(1.0, ky / kx);
+}
+
+// sqrt(bx^2 + by^2) of the components' bounds; under one envelope the y bound is a fixed
+// multiple of the x bound, so the envelope is evaluated once (per window it was a twentieth of a
+// run with a vertical record).
+double SlabModel2D::horizontalBound(double bx, auto&& yBound) const {
+    if (boundRatio_ > 0.0) return bx * boundRatio_;
+    return std::hypot(bx, ay_ ? yBound() : 0.0);
 }
 
 Vec2 SlabModel2D::accel(double tau) const {
@@ -74,15 +84,15 @@ double SlabModel2D::onsetMarginSlope(double tau) const {
 }
 
 bool SlabModel2D::quietAfter(double tau) const {
-    const double bx = ax_->boundAfter(tau), by = ay_ ? ay_->boundAfter(tau) : 0.0;
+    const double b = horizontalBound(ax_->boundAfter(tau), [&] { return ay_->boundAfter(tau); });
     const double nMin = 1.0 - (az_ ? az_->boundAfter(tau) : 0.0);
-    return std::hypot(bx, by) < params_.mu * nMin;
+    return b < params_.mu * nMin;
 }
 
 bool SlabModel2D::quietOn(double lo, double hi) const {
-    const double bx = ax_->boundOn(lo, hi), by = ay_ ? ay_->boundOn(lo, hi) : 0.0;
+    const double b = horizontalBound(ax_->boundOn(lo, hi), [&] { return ay_->boundOn(lo, hi); });
     const double nMin = 1.0 - (az_ ? az_->boundOn(lo, hi) : 0.0);
-    if (std::hypot(bx, by) <= params_.mu * nMin) return true;
+    if (b <= params_.mu * nMin) return true;
     // Short windows (a vertical record cuts the time line at every sample): within (hi - lo) / 2
     // of the middle |a_h| moves by at most that times the slope bound. The factor keeps rounding
     // on the safe side.

@@ -74,6 +74,8 @@ private:
     // memoizes its last patch: a model is used by one thread at a time (each point builds its
     // own).
     mutable std::optional<SinePairSeries> series_;
+    double boundRatio_ = 0.0; // with series_: K_y / K_x folded in, sqrt(1 + (K_y/K_x)^2)
+    double horizontalBound(double bx, auto&& yBound) const;
     PlanarParams params_;
     // Bound on |a_h'| over all time (both components enveloped sines; infinite otherwise).
     double slopeBound_ = std::numeric_limits<double>::infinity();
