@@ -98,7 +98,7 @@ bool SlabModel2D::quietOn(double lo, double hi) const {
     // on the safe side.
     if (!std::isfinite(slopeBound_)) return false;
     const Vec2 a = accel(0.5 * (lo + hi));
-    return (std::hypot(a.x, a.y) + 0.5 * (hi - lo) * slopeBound_) * (1.0 + 1e-12) <
+    return (norm2(a.x, a.y) + 0.5 * (hi - lo) * slopeBound_) * (1.0 + 1e-12) <
            params_.mu * nMin;
 }
 
