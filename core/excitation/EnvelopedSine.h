@@ -42,7 +42,8 @@ public:
     double halfPeriod() const { return halfPeriod_; }
     double sMax() const { return sMax_; }
     double amplitude() const { return amplitude_; }
-    double envelopeAt(double tau) const; // e(t* tau), unscaled
+    double scale() const { return scale_; } // A / S_max: a = scale e sin(omega tau)
+    double envelopeAt(double tau) const;    // e(t* tau), unscaled
     // Time of the envelope's maximum (inf when it never decays: alpha = 0).
     double envelopePeakTau() const { return tauEnvelopePeak_; }
     // Where |a| peaks in the half-period [k pi/omega, (k+1) pi/omega].

@@ -9,11 +9,8 @@
 namespace kinstab {
 
 SinePairSeries::SinePairSeries(const EnvelopedSine& x, const EnvelopedSine& y)
-    : p_(x.decayP()), q_(x.decayQ()) {
-    x_.sine = &x;
-    y_.sine = &y;
-    initComponent(x_, p_, q_);
-    initComponent(y_, p_, q_);
+    : lanes_{component(x, x.decayP(), x.decayQ()), component(y, x.decayP(), x.decayQ())},
+      p_(x.decayP()), q_(x.decayQ()) {
     const double zMax = std::max({std::abs(std::complex<double>(-p_, x.omega())),
                                   std::abs(std::complex<double>(-q_, x.omega())),
                                   std::abs(std::complex<double>(-p_, y.omega())),
@@ -22,23 +19,25 @@ SinePairSeries::SinePairSeries(const EnvelopedSine& x, const EnvelopedSine& y)
     inverseLength_ = 1.0 / length_;
 }
 
-void SinePairSeries::initComponent(Component& c, double p, double q) {
-    c.gain = c.sine->amplitude() / c.sine->sMax();
-    const std::complex<double> zp(-p, c.sine->omega()), zq(-q, c.sine->omega());
+SinePairSeries::Component SinePairSeries::component(const EnvelopedSine& sine, double p, double q) {
+    Component c;
+    c.sine = &sine;
+    const std::complex<double> zp(-p, sine.omega()), zq(-q, sine.omega());
     const double d = q - p;
     std::complex<double> powP(1.0, 0.0), powQ(1.0, 0.0),
         diff(0.0, 0.0); // z_p^k, z_q^k, their difference
     double factorial = 1.0;
-    for (int k = 0; k <= kDegree; ++k) {
+    for (std::size_t k = 0; k <= kDegree; ++k) {
         if (k > 0) {
             diff = zp * diff + d * powQ;
             powP *= zp;
             powQ *= zq;
-            factorial *= k;
+            factorial *= static_cast<double>(k);
         }
         c.zp[k] = powP / factorial;
         c.dz[k] = diff / factorial;
     }
+    return c;
 }
 
 const SinePairSeries::Patch* SinePairSeries::patchFor(double tau, double& delta) {
@@ -54,16 +53,14 @@ void SinePairSeries::build(Patch& patch, long k) const {
     patch.index = k;
     const double centre = (static_cast<double>(k) + 0.5) * length_;
     const double ep = std::exp(-p_ * centre), mc = std::expm1(-(q_ - p_) * centre);
-    for (int lane = 0; lane < 2; ++lane) {
-        const Component& c = lane == 0 ? x_ : y_;
+    for (std::size_t lane = 0; lane < 2; ++lane) {
+        const Component& c = lanes_[lane];
         const double phase = c.sine->omega() * centre;
         const std::complex<double> e =
-            c.gain * ep * std::complex<double>(std::cos(phase), std::sin(phase));
+            c.sine->scale() * ep * std::complex<double>(std::cos(phase), std::sin(phase));
         const std::complex<double> ew = -mc * e, ed = (1.0 + mc) * e;
-        for (int i = 0; i <= kDegree; ++i)
-            patch.c[static_cast<std::size_t>(i)][static_cast<std::size_t>(lane)] =
-                (ew * c.zp[static_cast<std::size_t>(i)] + ed * c.dz[static_cast<std::size_t>(i)])
-                    .imag();
+        for (std::size_t i = 0; i <= kDegree; ++i)
+            patch.c[i][lane] = (ew * c.zp[i] + ed * c.dz[i]).imag();
     }
     for (std::size_t i = 0; i < kDegree; ++i)
         for (std::size_t lane = 0; lane < 2; ++lane)
@@ -92,14 +89,14 @@ Pair estrin16(const std::array<Pair, 16>& c, double x) {
 std::array<double, 2> SinePairSeries::accel(double tau) {
     double delta = 0.0;
     const Patch* patch = patchFor(tau, delta);
-    if (!patch) return {x_.sine->accel(tau), y_.sine->accel(tau)};
+    if (!patch) return {lanes_[0].sine->accel(tau), lanes_[1].sine->accel(tau)};
     return estrin16(patch->c, delta);
 }
 
 std::array<double, 2> SinePairSeries::slope(double tau) {
     double delta = 0.0;
     const Patch* patch = patchFor(tau, delta);
-    if (!patch) return {x_.sine->accelSlope(tau), y_.sine->accelSlope(tau)};
+    if (!patch) return {lanes_[0].sine->accelSlope(tau), lanes_[1].sine->accelSlope(tau)};
     return estrin16(patch->dc, delta);
 }
 

@@ -11,10 +11,11 @@
 // z_p^k - z_q^k = z_p (z_p^{k-1} - z_q^{k-1}) + d z_q^{k-1}, so nothing cancels when q ~ p.
 // |z delta| <= 1/2 on a patch: the terms past degree 15 are below 1e-18 of K, and the value is a
 // pure function of tau (the patch grid does not depend on which times were asked before).
-// Not safe to share between threads: it keeps the last patch.
+// Not safe to share between threads: it keeps the last two patches.
 
 #include <array>
 #include <complex>
+#include <cstddef>
 
 namespace kinstab {
 
@@ -28,14 +29,13 @@ public:
     std::array<double, 2> accel(double tau);
     std::array<double, 2> slope(double tau);
 
-    static constexpr int kDegree = 15; // the sum is evaluated by a 16-term Estrin scheme
+    static constexpr std::size_t kDegree = 15; // the sum is evaluated by a 16-term Estrin scheme
     static constexpr double kMaxTau = 1e7;
 
 private:
     using Pair = std::array<double, 2>; // (x, y)
     struct Component {
         const EnvelopedSine* sine = nullptr;
-        double gain = 0.0;                                  // K = A / S_max
         std::array<std::complex<double>, kDegree + 1> zp{}; // z_p^k / k!
         std::array<std::complex<double>, kDegree + 1> dz{}; // (z_p^k - z_q^k) / k!
     };
@@ -46,11 +46,11 @@ private:
         std::array<Pair, kDegree + 1> c{};
         std::array<Pair, kDegree + 1> dc{}; // the slope's terms (the last one 0)
     };
-    static void initComponent(Component& c, double p, double q);
+    static Component component(const EnvelopedSine& sine, double p, double q);
     const Patch* patchFor(double tau, double& delta); // null: outside the grid
     void build(Patch& patch, long k) const;
 
-    Component x_, y_;
+    std::array<Component, 2> lanes_; // x, y
     double p_ = 0.0, q_ = 0.0, length_ = 0.0, inverseLength_ = 0.0;
     std::array<Patch, 2> patches_;
 };

@@ -21,7 +21,7 @@ namespace {
 // |a'| <= (A / S_max) (|e'| + omega e) with e = e^{-p tau} - e^{-q tau} <= 1 and
 // |e'| = |-p e^{-p tau} + q e^{-q tau}| <= max(p, q) (two terms of opposite signs).
 double slopeBound(const EnvelopedSine& c) {
-    return c.amplitude() / c.sMax() * (std::max(c.decayP(), c.decayQ()) + c.omega());
+    return c.scale() * (std::max(c.decayP(), c.decayQ()) + c.omega());
 }
 } // namespace
 
@@ -38,8 +38,7 @@ SlabModel2D::SlabModel2D(std::shared_ptr<const Excitation1D> ax,
     for (double tau : {0.1, 1.0, 7.3, 31.0, 200.0})
         if (x->envelopeAt(tau) != y->envelopeAt(tau)) return;
     series_.emplace(*x, *y);
-    const double kx = x->amplitude() / x->sMax(), ky = y->amplitude() / y->sMax();
-    if (kx > 0.0) boundRatio_ = std::hypot(1.0, ky / kx);
+    if (x->scale() > 0.0) boundRatio_ = std::hypot(1.0, y->scale() / x->scale());
 }
 
 // sqrt(bx^2 + by^2) of the components' bounds; under one envelope the y bound is a fixed
@@ -98,8 +97,7 @@ bool SlabModel2D::quietOn(double lo, double hi) const {
     // on the safe side.
     if (!std::isfinite(slopeBound_)) return false;
     const Vec2 a = accel(0.5 * (lo + hi));
-    return (norm2(a.x, a.y) + 0.5 * (hi - lo) * slopeBound_) * (1.0 + 1e-12) <
-           params_.mu * nMin;
+    return (norm2(a.x, a.y) + 0.5 * (hi - lo) * slopeBound_) * (1.0 + 1e-12) < params_.mu * nMin;
 }
 
 bool SlabModel2D::mayLiftOn(double lo, double hi) const {
