@@ -137,6 +137,13 @@ inline double dop853StepFactor(double err) {
     return std::clamp(0.9 / std::sqrt(std::sqrt(std::sqrt(err))), 0.2, 10.0);
 }
 
+// Gustafsson's predictive control (see radau::predictiveFactor) with DOP853's exponent 1/8 and
+// limits [0.2, 10].
+inline double dop853PredictiveFactor(double h, double err, double hPrev, double errPrev) {
+    const double quot = (hPrev / h) * std::sqrt(std::sqrt(std::sqrt(err * err / errPrev))) / 0.9;
+    return 1.0 / std::clamp(quot, 0.1, 5.0);
+}
+
 // The step to retry with after a step rejected with error norm err (NaN: a fifth of it).
 inline double dop853RetryStep(double h, double err) {
     return h * (std::isfinite(err) ? dop853StepFactor(err) : 0.2);

@@ -98,8 +98,13 @@ private:
     double startLength_ = 0;       // first step of a slaved slip
     double slavedSpeed_ = 0;       // below this |u| a slip may be slaved
     SlipRadauPolynomial lastPoly_; // the last accepted step's (h = 0: it was explicit)
-    double stiffSpeed_ = 0;        // over mu n: below it a slip takes implicit steps
-    double fsalT_ = -1.0;          // the last accepted step's end, state and derivative
+    // The last accepted step of the full equations, for the predictive step control.
+    struct {
+        double end = -1.0, h = 0.0, err = 0.0; // err floored at 1e-2
+        bool implicit = false;
+    } lastStep_;
+    double stiffSpeed_ = 0; // over mu n: below it a slip takes implicit steps
+    double fsalT_ = -1.0;   // the last accepted step's end, state and derivative
     Vec4 fsalY_ = Vec4::Zero(), fsalF_ = Vec4::Zero();
     // The current window [winStart_, winEnd_] and its onset roots (scanned when needed); kept
     // across windows so that no window allocates.
@@ -174,7 +179,23 @@ std::optional<Extremum> hermiteExtremum(double h, const Vec4& y0, const Vec4& y1
                     t};
 }
 
-StepExtrema stepExtrema(double h, const Vec4& y0, const Vec4& y1) {
+// The same from an implicit step's collocation polynomial (error O(h^6)): the cubic's O(h^4)
+// had moved the peaks by up to 5e-7 relative once the implicit steps grew longer.
+std::optional<Extremum> collocationExtremum(const SlipRadauPolynomial& p, const Vec4& y0,
+                                            const Vec4& y1, int c) {
+    const double u0 = y0[c + 2];
+    if (!(u0 * y1[c + 2] < 0.0)) return std::nullopt;
+    double lo = 0.0, hi = 1.0;
+    for (int i = 0; i < 60 && hi - lo > 1e-16; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        p.at(mid)[c]* u0 > 0.0 ? lo = mid : hi = mid;
+    }
+    const double x = 0.5 * (lo + hi);
+    return Extremum{y0[c] + p.displacement(x)[c], x};
+}
+
+StepExtrema stepExtrema(double h, const Vec4& y0, const Vec4& y1, const SlipRadauPolynomial& p) {
+    if (p.h > 0.0) return {collocationExtremum(p, y0, y1, 0), collocationExtremum(p, y0, y1, 1)};
     return {hermiteExtremum(h, y0, y1, 0), hermiteExtremum(h, y0, y1, 1)};
 }
 
@@ -240,7 +261,7 @@ PlanarResult PlanarRun::run() {
     // (measured on the golden grids: tau_c within 3.3e-10 at 1e-5, 7.7e-10 at 2e-5, 2.6e-9 at
     // 4e-5 and at 1e-4, which saves only a tenth more).
     slavedSpeed_ = std::clamp(1e-5 * std::cbrt(o_.relTol / 1e-10), 1e-7, 1e-4);
-    stiffSpeed_ = 0.02 * mu_ * m_.horizontalTimeScale(); // see isStiff
+    stiffSpeed_ = 0.04 * mu_ * m_.horizontalTimeScale(); // see isStiff
     if (m_.normal(0.0) <= 0.0) {
         r_.tauLiftOff = 0.0;
         r_.slab.tauC = 0.0;
@@ -410,7 +431,7 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
         int comp = -1;
         double sign = 0;
         const bool endsOutside = collapseIn(st.y, comp, sign);
-        const StepExtrema extrema = stepExtrema(h, y_, st.y);
+        const StepExtrema extrema = stepExtrema(h, y_, st.y, st.poly);
         if (const double s = endsOutside ? 0.0 : overshootWithin(extrema);
             s > 0.0 && s * h > 1e-15 * std::max(1.0, t_)) {
             ++r_.slab.work.restarts;
@@ -439,12 +460,20 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
         }
         const bool truncated = h < hNext_;
         extremaWithin(extrema);
+        const double t0 = t_;
         moveTo(t_ + h, st.y);
         fsalT_ = t_;
         fsalY_ = y_;
         fsalF_ = st.f;
         lastPoly_ = st.poly;
-        const double grow = h * st.grow;
+        double grow = h * st.grow;
+        if (lastStep_.end == t0 && lastStep_.implicit == implicit) {
+            const double errPrev = lastStep_.err, hPrev = lastStep_.h;
+            grow =
+                std::min(grow, h * (implicit ? radau::predictiveFactor(h, st.err, hPrev, errPrev)
+                                             : dop853PredictiveFactor(h, st.err, hPrev, errPrev)));
+        }
+        lastStep_ = {t_, h, std::max(1e-2, st.err), implicit};
         hNext_ = truncated ? std::max(hNext_, grow) : grow;
     }
     return Step::Continue;
@@ -473,10 +502,9 @@ PlanarRun::Trial PlanarRun::trial(bool implicit, double t0, const Vec4& y0, cons
 // Whether a slip at speed rho is left to the implicit step: the explicit one's stability bound,
 // about 6 |u| / (mu n) (the Jacobian's eigenvalue is -mu n / |u|), then falls below a few
 // hundredths of the horizontal time scale T, about its accuracy step at the default tolerance.
-// The threshold |u| < 0.02 mu n T was the fastest of 0.01, 0.015, 0.02, 0.03, 0.04 and 0.08 on
-// the 33x33 bench grid once the implicit step's Newton solve went to 3x3 (CPU ratio to the
-// 1-DOF solver 14.8, 14.2, 12.7, 13.9, 16.0 and 16.9), and keeps the paper-grid goldens at their
-// accuracy (worst tau_c difference 3.9e-10 at 0.01, 4.0e-10 at 0.02 and 0.03).
+// With the five-stage Radau IIA step the threshold |u| < 0.04 mu n T costs least on the 33x33
+// bench grid (instructions: 0.03 and 0.06 within 1 %, 0.02 3 % and 0.01 9 % more; docs/theory.md
+// §6.5); with three stages 0.02 had been the fastest.
 bool PlanarRun::isStiff(double tau, double rho) const {
     return rho < stiffSpeed_ * m_.normal(tau);
 }

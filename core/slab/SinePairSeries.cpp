@@ -40,15 +40,6 @@ SinePairSeries::Component SinePairSeries::component(const EnvelopedSine& sine, d
     return c;
 }
 
-const SinePairSeries::Patch* SinePairSeries::patchFor(double tau, double& delta) {
-    if (!(tau >= 0.0 && tau <= kMaxTau)) return nullptr;
-    const long k = static_cast<long>(tau * inverseLength_);
-    Patch& patch = patches_[static_cast<std::size_t>(k & 1)];
-    if (patch.index != k) build(patch, k);
-    delta = tau - (static_cast<double>(k) + 0.5) * length_;
-    return &patch;
-}
-
 void SinePairSeries::build(Patch& patch, long k) const {
     patch.index = k;
     const double centre = (static_cast<double>(k) + 0.5) * length_;
@@ -68,36 +59,9 @@ void SinePairSeries::build(Patch& patch, long k) const {
     patch.dc[kDegree] = {0.0, 0.0};
 }
 
-namespace {
-using Pair = std::array<double, 2>;
-Pair axpy(const Pair& a, const Pair& b, double x) { // a + b x, lane by lane
-    return {a[0] + b[0] * x, a[1] + b[1] * x};
-}
-// sum c[i] x^i for 16 terms by Estrin's scheme, both lanes at once: a tree of depth 4 instead
-// of Horner's chain of 15 dependent steps (the sum was a fifth of the planar solver's time).
-Pair estrin16(const std::array<Pair, 16>& c, double x) {
-    const double x2 = x * x, x4 = x2 * x2, x8 = x4 * x4;
-    std::array<Pair, 8> p;
-    for (std::size_t i = 0; i < 8; ++i)
-        p[i] = axpy(c[2 * i], c[2 * i + 1], x);
-    const Pair q0 = axpy(p[0], p[1], x2), q1 = axpy(p[2], p[3], x2), q2 = axpy(p[4], p[5], x2),
-               q3 = axpy(p[6], p[7], x2);
-    return axpy(axpy(q0, q1, x4), axpy(q2, q3, x4), x8);
-}
-} // namespace
-
-std::array<double, 2> SinePairSeries::accel(double tau) {
-    double delta = 0.0;
-    const Patch* patch = patchFor(tau, delta);
-    if (!patch) return {lanes_[0].sine->accel(tau), lanes_[1].sine->accel(tau)};
-    return estrin16(patch->c, delta);
-}
-
-std::array<double, 2> SinePairSeries::slope(double tau) {
-    double delta = 0.0;
-    const Patch* patch = patchFor(tau, delta);
-    if (!patch) return {lanes_[0].sine->accelSlope(tau), lanes_[1].sine->accelSlope(tau)};
-    return estrin16(patch->dc, delta);
+std::array<double, 2> SinePairSeries::closedForm(double tau, bool slope) const {
+    if (slope) return {lanes_[0].sine->accelSlope(tau), lanes_[1].sine->accelSlope(tau)};
+    return {lanes_[0].sine->accel(tau), lanes_[1].sine->accel(tau)};
 }
 
 } // namespace kinstab

@@ -49,22 +49,12 @@ double SlabModel2D::horizontalBound(double bx, auto&& yBound) const {
     return std::hypot(bx, ay_ ? yBound() : 0.0);
 }
 
-Vec2 SlabModel2D::accel(double tau) const {
-    if (series_) {
-        const auto a = series_->accel(tau);
-        return {a[0], a[1]};
-    }
-    return {ax_->accel(tau), ay_ ? ay_->accel(tau) : 0.0};
-}
 Vec2 SlabModel2D::accelSlope(double tau) const {
     if (series_) {
         const auto s = series_->slope(tau);
         return {s[0], s[1]};
     }
     return {ax_->accelSlope(tau), ay_ ? ay_->accelSlope(tau) : 0.0};
-}
-double SlabModel2D::normal(double tau) const {
-    return 1.0 + (az_ ? az_->accel(tau) : 0.0);
 }
 double SlabModel2D::normalSlope(double tau) const {
     return az_ ? az_->accelSlope(tau) : 0.0;

@@ -41,9 +41,16 @@ public:
     SlabModel2D(std::shared_ptr<const Excitation1D> ax, std::shared_ptr<const Excitation1D> ay,
                 std::shared_ptr<const Excitation1D> az, PlanarParams params);
 
-    Vec2 accel(double tau) const;      // a_h
-    Vec2 accelSlope(double tau) const; // a_h'
-    double normal(double tau) const;   // n = 1 + a_z
+    // a_h; inline, as the planar solver's innermost call.
+    Vec2 accel(double tau) const {
+        if (series_) {
+            const auto a = series_->accel(tau);
+            return {a[0], a[1]};
+        }
+        return {ax_->accel(tau), ay_ ? ay_->accel(tau) : 0.0};
+    }
+    Vec2 accelSlope(double tau) const;                                              // a_h'
+    double normal(double tau) const { return 1.0 + (az_ ? az_->accel(tau) : 0.0); } // n = 1 + a_z
     double normalSlope(double tau) const;
     // g_on = |a_h| - mu n: the slab slips where it is positive (a time-only event).
     double onsetMargin(double tau) const;

@@ -2,6 +2,7 @@
 #include "core/slab/SlipRadau.h"
 
 #include "core/numerics/RadauIIA.h"
+#include "core/numerics/SmallLinearSolve.h"
 
 #include <Eigen/LU>
 
@@ -29,11 +30,14 @@ Slip slipAt(const Vec2d& u, const Vec2d& a, double mun) {
     return {-a - mun * e, mun / r, Vec2d(-e[1], e[0])};
 }
 
-double rmsNorm(const Eigen::Matrix<double, 6, 1>& v, const Vec2d& scale) {
+constexpr int kS = radau::kStages;
+using Stages = Eigen::Matrix<double, 2 * kS, 1>; // the stage velocity increments, two per stage
+
+double rmsNorm(const Stages& v, const Vec2d& scale) {
     double s = 0.0;
-    for (int i = 0; i < 6; ++i)
+    for (int i = 0; i < 2 * kS; ++i)
         s += (v[i] / scale[i % 2]) * (v[i] / scale[i % 2]);
-    return std::sqrt(s / 6.0);
+    return std::sqrt(s / (2.0 * kS));
 }
 
 // RADAU5's estimate with the Jacobian at the step's start, J = [[0, I], [0, Ju]]:
@@ -41,8 +45,8 @@ double rmsNorm(const Eigen::Matrix<double, 6, 1>& v, const Vec2d& scale) {
 // `refine` (a first step or one after a rejection) a norm above 1 is re-estimated from
 // f(t0, y0 + x), as RADAU5 does, since the first estimate can overrate stiff components.
 double errorNorm(const SlabModel2D& m, double t0, const OdeVec<4>& y0, const OdeVec<4>& f0,
-                 double h, const std::array<Vec2d, 3>& zd, const Eigen::Matrix<double, 6, 1>& z,
-                 const OdeVec<4>& y1, const OdeVec<4>& absTol, double relTol, bool refine) {
+                 double h, const std::array<Vec2d, kS>& zd, const Stages& z, const OdeVec<4>& y1,
+                 const OdeVec<4>& absTol, const radau::EstimateTolerance& tol, bool refine) {
     using namespace radau;
     const double mun = m.params().mu * m.normal(t0);
     const Vec2d u0(y0[2], y0[3]);
@@ -50,7 +54,7 @@ double errorNorm(const SlabModel2D& m, double t0, const OdeVec<4>& y0, const Ode
     const Vec2d a0 = -Vec2d(f0[2], f0[3]) - mun * e0;
     const Mat2 inverse = ((kU1 / h) * Mat2::Identity() - slipAt(u0, a0, mun).jac()).inverse();
     Vec2d hd = Vec2d::Zero(), hu = Vec2d::Zero();
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < kS; ++i) {
         hd += kD[i] / h * zd[i];
         hu += kD[i] / h * z.segment<2>(2 * i);
     }
@@ -60,8 +64,7 @@ double errorNorm(const SlabModel2D& m, double t0, const OdeVec<4>& y0, const Ode
         double sum = 0.0;
         for (int i = 0; i < 4; ++i) {
             const double x = i < 2 ? xd[i] : xu[i - 2];
-            const double sc =
-                estimateScale(absTol[i], relTol, std::max(std::abs(y0[i]), std::abs(y1[i])));
+            const double sc = tol.scale(absTol[i], std::max(std::abs(y0[i]), std::abs(y1[i])));
             sum += (x / sc) * (x / sc);
         }
         return std::sqrt(sum / 4.0);
@@ -79,43 +82,70 @@ double errorNorm(const SlabModel2D& m, double t0, const OdeVec<4>& y0, const Ode
 
 // Newton's correction: solves (I - h A (x) J) dz = rhs, the stage Jacobians J_j = -c_j p_j p_j^T
 // being of rank one (c_j = mu n_j / |u_j|, p_j the unit normal to u_j: Slip's rate, normal). The
-// 6x6 matrix is then I + sum_j w_j q_j^T (q_j: p_j in block j; w_j: h A_ij c_j p_j in block i), and
-// by the Sherman-Morrison-Woodbury identity dz = rhs - W M^-1 Q^T rhs with the 3x3 M = I + Q^T W,
-// M_jk = h A_jk c_k p_j.p_k: the same solution as a 6x6 LU, at a fraction of its cost (that LU was
-// a tenth of the planar solver's time).
-Eigen::Matrix<double, 6, 1> newtonCorrection(const std::array<Slip, 3>& s, double h,
-                                             const Eigen::Matrix<double, 6, 1>& rhs) {
+// 10x10 matrix is then I + sum_j w_j q_j^T (q_j: p_j in block j; w_j: h A_ij c_j p_j in block i),
+// and by the Sherman-Morrison-Woodbury identity dz = rhs - W M^-1 Q^T rhs with the 5x5
+// M = I + Q^T W, M_jk = delta_jk + h A_jk c_k p_j.p_k: the same solution as a 10x10 LU, at a
+// fraction of its cost (with three stages the 6x6 LU had been a tenth of the planar solver's
+// time). M is solved by core/numerics/SmallLinearSolve.h.
+Stages newtonCorrection(const std::array<Slip, kS>& s, double h, const Stages& rhs) {
     using namespace radau;
-    Eigen::Matrix3d m;
-    Eigen::Vector3d qb;
-    for (int j = 0; j < 3; ++j) {
+    Eigen::Matrix<double, kS, kS> m;
+    Eigen::Matrix<double, kS, 1> qb;
+    for (int j = 0; j < kS; ++j) {
         qb[j] = s[j].normal.dot(rhs.segment<2>(2 * j));
-        for (int k = 0; k < 3; ++k)
+        for (int k = 0; k < kS; ++k)
             m(j, k) =
                 (j == k ? 1.0 : 0.0) + h * kA[j][k] * s[k].rate * s[j].normal.dot(s[k].normal);
     }
-    const Eigen::Vector3d y = m.inverse() * qb; // cofactors: a 3x3 LU cost twice as much
-    Eigen::Matrix<double, 6, 1> dz = rhs;
-    for (int i = 0; i < 3; ++i)
-        for (int k = 0; k < 3; ++k)
+    Eigen::Matrix<double, kS, 1>& y = qb;
+    if (!solveInPlace<kS>(m, y)) y.setConstant(NAN); // Newton then stops: no finite norm
+    Stages dz = rhs;
+    for (int i = 0; i < kS; ++i)
+        for (int k = 0; k < kS; ++k)
             dz.segment<2>(2 * i) -= h * kA[i][k] * s[k].rate * y[k] * s[k].normal;
     return dz;
 }
 
+double node(int i) { // the polynomial's nodes: 0, c_1, ..., c_s
+    return i == 0 ? 0.0 : radau::kC[i - 1];
+}
+
 } // namespace
 
-Eigen::Vector2d SlipRadauPolynomial::at(double x) const {
-    using namespace radau;
-    const double nodes[4] = {0.0, kC[0], kC[1], kC[2]};
-    const Eigen::Vector2d values[4] = {u0, u[0], u[1], u[2]};
-    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
-    for (int i = 0; i < 4; ++i) {
-        double w = 1.0;
-        for (int j = 0; j < 4; ++j)
-            if (j != i) w *= (x - nodes[j]) / (nodes[i] - nodes[j]);
-        sum += w * values[i];
+// The monomial coefficients from the values at the nodes: the inverse of the nodes' Vandermonde
+// matrix, formed once. Evaluating Lagrange's form at each stage of each step had cost a twelfth
+// of the planar solver's time.
+SlipRadauPolynomial::SlipRadauPolynomial(double start, double length, const Eigen::Vector2d& u0,
+                                         const std::array<Eigen::Vector2d, radau::kStages>& u)
+    : t0(start), h(length) {
+    using Nodes = Eigen::Matrix<double, kS + 1, kS + 1>;
+    static const Nodes kInverseVandermonde = [] {
+        Nodes v;
+        for (int i = 0; i <= kS; ++i)
+            for (int m = 0; m <= kS; ++m)
+                v(i, m) = std::pow(node(i), m);
+        return Nodes(v.inverse());
+    }();
+    for (int m = 0; m <= kS; ++m) {
+        Eigen::Vector2d c = kInverseVandermonde(m, 0) * u0;
+        for (int i = 1; i <= kS; ++i)
+            c += kInverseVandermonde(m, i) * u[static_cast<std::size_t>(i - 1)];
+        coefficients[static_cast<std::size_t>(m)] = c;
     }
+}
+
+Eigen::Vector2d SlipRadauPolynomial::at(double x) const {
+    Eigen::Vector2d sum = coefficients[kS];
+    for (int m = kS - 1; m >= 0; --m)
+        sum = sum * x + coefficients[static_cast<std::size_t>(m)];
     return sum;
+}
+
+Eigen::Vector2d SlipRadauPolynomial::displacement(double x) const {
+    Eigen::Vector2d sum = coefficients[kS] / (kS + 1.0);
+    for (int m = kS - 1; m >= 0; --m)
+        sum = sum * x + coefficients[static_cast<std::size_t>(m)] / (m + 1.0);
+    return h * x * sum;
 }
 
 SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0,
@@ -125,47 +155,50 @@ SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0
     SlipRadauStep r;
     const double mu = m.params().mu;
     const Vec2d u0(y0[2], y0[3]);
-    std::array<Vec2d, 3> a;
-    std::array<double, 3> mun;
-    for (int i = 0; i < 3; ++i) {
+    std::array<Vec2d, kS> a;
+    std::array<double, kS> mun;
+    for (int i = 0; i < kS; ++i) {
         const double t = t0 + kC[i] * h;
         const Vec2 ai = m.accel(t);
         a[i] = Vec2d(ai.x, ai.y);
         mun[i] = mu * m.normal(t);
     }
-    r.evaluations = 3;
-    Eigen::Matrix<double, 6, 1> z;
-    if (guess && guess->h > 0.0 && guess->t0 + guess->h == t0) {
-        // Start from the previous step's collocation polynomial, extrapolated.
-        for (int i = 0; i < 3; ++i)
+    r.evaluations = kS;
+    Stages z;
+    if (guess && guess->h > 0.0 && guess->t0 + guess->h == t0 && h <= 8.0 * guess->h) {
+        // Start from the previous step's collocation polynomial, extrapolated: no further than
+        // the step control lets a step grow (8 times). A step cut short at a window's end can be
+        // a few ulps long, and the degree-5 polynomial extrapolated 1e12 times its length gave a
+        // start from which Newton converged to another root of the collocation equations (an
+        // error of 4e-5 in u that the estimate, built on the same stages, accepted).
+        for (int i = 0; i < kS; ++i)
             z.segment<2>(2 * i) = guess->at(1.0 + kC[i] * h / guess->h) - u0;
     } else {
         // Start: each stage slides along u0's direction under its own a_h and n.
         const Vec2d e0 = u0 / u0.norm();
-        for (int i = 0; i < 3; ++i)
+        for (int i = 0; i < kS; ++i)
             z.segment<2>(2 * i) = kC[i] * h * (-a[i] - mun[i] * e0);
     }
     // Newton's corrections are measured against the error estimate's tolerances and stopped, as
     // in RADAU5, when the contraction rate says the rest is below fnewt of them.
-    const double rtol = estimateRelTol(relTol);
-    const Vec2d scale(estimateScale(absTol[2], relTol, std::abs(u0[0])),
-                      estimateScale(absTol[3], relTol, std::abs(u0[1])));
-    const double fnewt = std::max(10.0 * 2.2e-16 / rtol, std::min(0.03, std::sqrt(rtol)));
-    std::array<Slip, 3> s;
+    const EstimateTolerance tol(relTol);
+    const Vec2d scale(tol.scale(absTol[2], std::abs(u0[0])), tol.scale(absTol[3], std::abs(u0[1])));
+    const double fnewt = std::max(10.0 * 2.2e-16 / tol.rtol, std::min(0.03, std::sqrt(tol.rtol)));
+    std::array<Slip, kS> s;
     bool converged = false;
     double lastNorm = INFINITY;
     for (int k = 0; k < kSlipRadauMaxNewton && !converged; ++k) {
-        Eigen::Matrix<double, 6, 1> g = z;
-        for (int j = 0; j < 3; ++j) {
+        Stages g = z;
+        for (int j = 0; j < kS; ++j) {
             const Vec2d uj = u0 + z.segment<2>(2 * j);
             // A stage at rest or turned against u0 holds a stop: not this step's business.
             if (!(uj.dot(u0) > 0.0)) return r;
             s[j] = slipAt(uj, a[j], mun[j]);
         }
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < kS; ++i)
+            for (int j = 0; j < kS; ++j)
                 g.segment<2>(2 * i) -= h * kA[i][j] * s[j].f;
-        const Eigen::Matrix<double, 6, 1> dz = newtonCorrection(s, h, -g);
+        const Stages dz = newtonCorrection(s, h, -g);
         z += dz;
         r.newton = k + 1;
         const double norm = rmsNorm(dz, scale);
@@ -180,23 +213,24 @@ SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0
         lastNorm = norm;
     }
     if (!converged) return r;
-    std::array<Vec2d, 3> u;
-    for (int j = 0; j < 3; ++j)
+    std::array<Vec2d, kS> u;
+    for (int j = 0; j < kS; ++j)
         u[j] = u0 + z.segment<2>(2 * j);
-    if (!(u[2].dot(u0) > 0.0)) return r;
+    if (!(u[kS - 1].dot(u0) > 0.0)) return r;
     // Stiffly accurate: the end is the last stage; the displacement is the quadrature of u.
-    std::array<Vec2d, 3> zd; // displacement stage increments
-    for (int i = 0; i < 3; ++i) {
+    std::array<Vec2d, kS> zd; // displacement stage increments
+    for (int i = 0; i < kS; ++i) {
         zd[i] = Vec2d::Zero();
-        for (int j = 0; j < 3; ++j)
+        for (int j = 0; j < kS; ++j)
             zd[i] += h * kA[i][j] * u[j];
     }
-    const Vec2d dd = zd[2];
-    const Slip end = slipAt(u[2], a[2], mun[2]);
-    r.y << y0[0] + dd[0], y0[1] + dd[1], u[2][0], u[2][1];
-    r.f << u[2][0], u[2][1], end.f[0], end.f[1];
-    r.poly = {t0, h, u0, u};
-    r.err = errorNorm(m, t0, y0, f0, h, zd, z, r.y, absTol, relTol, refine);
+    const Vec2d dd = zd[kS - 1];
+    const Vec2d& u1 = u[kS - 1];
+    const Slip end = slipAt(u1, a[kS - 1], mun[kS - 1]);
+    r.y << y0[0] + dd[0], y0[1] + dd[1], u1[0], u1[1];
+    r.f << u1[0], u1[1], end.f[0], end.f[1];
+    r.poly = SlipRadauPolynomial(t0, h, u0, u);
+    r.err = errorNorm(m, t0, y0, f0, h, zd, z, r.y, absTol, tol, refine);
     return r;
 }
 

@@ -1,15 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// One Radau IIA step (core/numerics/RadauIIA.h) of a planar slip,
+// One five-stage Radau IIA step (order 9; core/numerics/RadauIIA.h) of a planar slip,
 //   u' = -a_h(tau) - mu n(tau) u / |u|,   delta' = u,   state (dx, dy, ux, uy).
 // Why an implicit method: the friction term's Jacobian -mu n / |u| (I - e e^T) turns the
 // direction of u towards its slow manifold at rate mu n / |u|. At the small speeds of grazing
 // slips that rate caps an explicit method's step at a few |u| / (mu n) (stability, not
 // accuracy); Radau IIA is L-stable, so its step is set by the tolerance alone.
 // The time enters only through a_h and n, evaluated once per stage time; the Newton iteration
-// on the three stage velocities (6 unknowns, exact Jacobian) costs no further evaluations.
+// on the five stage velocities (10 unknowns, exact Jacobian) costs no further evaluations.
+// Why five stages: with three (order 5) the step was held by its order-3 error estimate to about
+// a fiftieth of the excitation's period on slow slips, where the order-5 estimate of five stages
+// allows steps about three times longer (docs/theory.md §6.5).
 
 #include "core/numerics/Dop853.h"
+#include "core/numerics/RadauIIA.h"
 #include "core/slab/SlabModel2D.h"
 
 #include <array>
@@ -19,10 +23,17 @@ namespace kinstab {
 // The step's collocation polynomial of u through u0 and the stage velocities: a dense output
 // and the next step's starting guess (extrapolated).
 struct SlipRadauPolynomial {
-    double t0 = 0, h = 0;
-    Eigen::Vector2d u0 = Eigen::Vector2d::Zero();
-    std::array<Eigen::Vector2d, 3> u{};
+    SlipRadauPolynomial() = default;
+    // Through u0 at t0 and u[i] at t0 + c_i h.
+    SlipRadauPolynomial(double t0, double h, const Eigen::Vector2d& u0,
+                        const std::array<Eigen::Vector2d, radau::kStages>& u);
     Eigen::Vector2d at(double x) const; // u at t0 + x h
+    // The displacement from t0 to t0 + x h: h times the integral of the polynomial (the dense
+    // output of the collocation method, error O(h^6)).
+    Eigen::Vector2d displacement(double x) const;
+
+    double t0 = 0, h = 0;                                           // h = 0: none
+    std::array<Eigen::Vector2d, radau::kStages + 1> coefficients{}; // of x^0 ... x^s
 };
 
 struct SlipRadauStep {
