@@ -8,6 +8,8 @@
 
 #include "core/numerics/Dopri5.h"
 
+#include "core/numerics/PredictiveStep.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -137,11 +139,11 @@ inline double dop853StepFactor(double err) {
     return std::clamp(0.9 / std::sqrt(std::sqrt(std::sqrt(err))), 0.2, 10.0);
 }
 
-// Gustafsson's predictive control (see radau::predictiveFactor) with DOP853's exponent 1/8 and
-// limits [0.2, 10].
+// Gustafsson's predictive control (core/numerics/PredictiveStep.h) with DOP853's exponent 1/8,
+// limited as dop853StepFactor.
 inline double dop853PredictiveFactor(double h, double err, double hPrev, double errPrev) {
-    const double quot = (hPrev / h) * std::sqrt(std::sqrt(std::sqrt(err * err / errPrev))) / 0.9;
-    return 1.0 / std::clamp(quot, 0.1, 5.0);
+    const double trend = std::sqrt(std::sqrt(std::sqrt(err * err / errPrev)));
+    return std::clamp(predictiveStepFactor(h, hPrev, trend), 0.2, 10.0);
 }
 
 // The step to retry with after a step rejected with error norm err (NaN: a fifth of it).

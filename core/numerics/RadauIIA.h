@@ -13,6 +13,8 @@
 // The constants are the roots and integrals to 21 digits, computed by scripts/radau-coefficients.py
 // (mpmath, 40 digits); tests/core/tst_slip_radau.cpp checks the conditions that define them.
 
+#include "core/numerics/PredictiveStep.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -52,23 +54,23 @@ struct EstimateTolerance {
     double rtol, perAbsTol;
 };
 
+// The most a step may grow, and shrink, from one step to the next.
+inline constexpr double kMaxGrowth = 8.0, kMaxShrink = 0.2;
+
 // The factor by which to scale h after a step with error norm err and `newton` Newton
 // iterations out of at most `maxNewton` (RADAU5's rule with the exponent 1/6 of an order-5
-// estimate: a safety factor that shrinks with the iterations, limited to [0.2, 8]).
+// estimate: a safety factor that shrinks with the iterations).
 inline double stepFactor(double err, int newton, int maxNewton) {
     const double safety = 0.9 * (1.0 + 2.0 * maxNewton) / (newton + 2.0 * maxNewton);
-    if (!(err > 0.0)) return 8.0;
-    return std::clamp(safety / std::cbrt(std::sqrt(err)), 0.2, 8.0);
+    if (!(err > 0.0)) return kMaxGrowth;
+    return std::clamp(safety / std::cbrt(std::sqrt(err)), kMaxShrink, kMaxGrowth);
 }
 
-// Gustafsson's predictive control, as in RADAU5: after two accepted steps in a row the next step
-// is also at most the one that the trend of the error from the previous step (length hPrev, norm
-// errPrev, floored at 1e-2) to this one predicts. It anticipates an error that grows step after
-// step, as it does while a slip slows down, where the factor above would be rejected in turn.
-// The factor by which to scale h, limited as stepFactor's.
+// Gustafsson's predictive control (core/numerics/PredictiveStep.h), as in RADAU5, with the
+// exponent 1/6.
 inline double predictiveFactor(double h, double err, double hPrev, double errPrev) {
-    const double quot = (hPrev / h) * std::cbrt(std::sqrt(err * err / errPrev)) / 0.9;
-    return 1.0 / std::clamp(quot, 0.125, 5.0);
+    const double trend = std::cbrt(std::sqrt(err * err / errPrev));
+    return std::clamp(predictiveStepFactor(h, hPrev, trend), kMaxShrink, kMaxGrowth);
 }
 
 } // namespace kinstab::radau

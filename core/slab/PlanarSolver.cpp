@@ -98,9 +98,10 @@ private:
     double startLength_ = 0;       // first step of a slaved slip
     double slavedSpeed_ = 0;       // below this |u| a slip may be slaved
     SlipRadauPolynomial lastPoly_; // the last accepted step's (h = 0: it was explicit)
-    // The last accepted step of the full equations, for the predictive step control.
+    // The last accepted step of the full equations (it ended at fsalT_), for the predictive
+    // step control.
     struct {
-        double end = -1.0, h = 0.0, err = 0.0; // err floored at 1e-2
+        double h = 0.0, err = 0.0; // err floored at 1e-2
         bool implicit = false;
     } lastStep_;
     double stiffSpeed_ = 0; // over mu n: below it a slip takes implicit steps
@@ -163,17 +164,23 @@ void PlanarRun::moveTo(double tau, const Vec4& y) {
     if (o_.recordPath) r_.path.push_back({tau, y[0], y[1], y[2], y[3], slipping_});
 }
 
-std::optional<Extremum> hermiteExtremum(double h, const Vec4& y0, const Vec4& y1, int c) {
-    const double p0 = y0[c], p1 = y1[c], m0 = h * y0[c + 2], m1 = h * y1[c + 2];
-    if (!(m0 * m1 < 0.0)) return std::nullopt;
-    // p'(s) = a s^2 + b s + m0 on [0, 1] changes sign once: bisection.
-    const double a = 6.0 * (p0 - p1) + 3.0 * (m0 + m1), b = 6.0 * (p1 - p0) - 4.0 * m0 - 2.0 * m1;
+// Where slope(x), of sign `start` at x = 0 and of the other at 1, changes sign: bisection.
+double signChangeOnStep(auto&& slope, double start) {
     double lo = 0.0, hi = 1.0;
     for (int i = 0; i < 60 && hi - lo > 1e-16; ++i) {
         const double mid = 0.5 * (lo + hi);
-        ((a * mid + b) * mid + m0)* m0 > 0.0 ? lo = mid : hi = mid;
+        slope(mid)* start > 0.0 ? lo = mid : hi = mid;
     }
-    const double t = 0.5 * (lo + hi), t2 = t * t, t3 = t2 * t;
+    return 0.5 * (lo + hi);
+}
+
+std::optional<Extremum> hermiteExtremum(double h, const Vec4& y0, const Vec4& y1, int c) {
+    const double p0 = y0[c], p1 = y1[c], m0 = h * y0[c + 2], m1 = h * y1[c + 2];
+    if (!(m0 * m1 < 0.0)) return std::nullopt;
+    // p'(s) = a s^2 + b s + m0 on [0, 1] changes sign once.
+    const double a = 6.0 * (p0 - p1) + 3.0 * (m0 + m1), b = 6.0 * (p1 - p0) - 4.0 * m0 - 2.0 * m1;
+    const double t = signChangeOnStep([&](double x) { return (a * x + b) * x + m0; }, m0),
+                 t2 = t * t, t3 = t2 * t;
     return Extremum{(2 * t3 - 3 * t2 + 1) * p0 + (t3 - 2 * t2 + t) * m0 + (-2 * t3 + 3 * t2) * p1 +
                         (t3 - t2) * m1,
                     t};
@@ -185,12 +192,7 @@ std::optional<Extremum> collocationExtremum(const SlipRadauPolynomial& p, const 
                                             const Vec4& y1, int c) {
     const double u0 = y0[c + 2];
     if (!(u0 * y1[c + 2] < 0.0)) return std::nullopt;
-    double lo = 0.0, hi = 1.0;
-    for (int i = 0; i < 60 && hi - lo > 1e-16; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        p.at(mid)[c]* u0 > 0.0 ? lo = mid : hi = mid;
-    }
-    const double x = 0.5 * (lo + hi);
+    const double x = signChangeOnStep([&](double xx) { return p.at(xx)[c]; }, u0);
     return Extremum{y0[c] + p.displacement(x)[c], x};
 }
 
@@ -460,20 +462,19 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
         }
         const bool truncated = h < hNext_;
         extremaWithin(extrema);
-        const double t0 = t_;
-        moveTo(t_ + h, st.y);
-        fsalT_ = t_;
-        fsalY_ = y_;
-        fsalF_ = st.f;
-        lastPoly_ = st.poly;
         double grow = h * st.grow;
-        if (lastStep_.end == t0 && lastStep_.implicit == implicit) {
+        if (fsalT_ == t_ && lastStep_.implicit == implicit) {
             const double errPrev = lastStep_.err, hPrev = lastStep_.h;
             grow =
                 std::min(grow, h * (implicit ? radau::predictiveFactor(h, st.err, hPrev, errPrev)
                                              : dop853PredictiveFactor(h, st.err, hPrev, errPrev)));
         }
-        lastStep_ = {t_, h, std::max(1e-2, st.err), implicit};
+        lastStep_ = {h, std::max(1e-2, st.err), implicit};
+        moveTo(t_ + h, st.y);
+        fsalT_ = t_;
+        fsalY_ = y_;
+        fsalF_ = st.f;
+        lastPoly_ = st.poly;
         hNext_ = truncated ? std::max(hNext_, grow) : grow;
     }
     return Step::Continue;

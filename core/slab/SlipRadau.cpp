@@ -165,9 +165,9 @@ SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0
     }
     r.evaluations = kS;
     Stages z;
-    if (guess && guess->h > 0.0 && guess->t0 + guess->h == t0 && h <= 8.0 * guess->h) {
+    if (guess && guess->h > 0.0 && guess->t0 + guess->h == t0 && h <= kMaxGrowth * guess->h) {
         // Start from the previous step's collocation polynomial, extrapolated: no further than
-        // the step control lets a step grow (8 times). A step cut short at a window's end can be
+        // the step control lets a step grow. A step cut short at a window's end can be
         // a few ulps long, and the degree-5 polynomial extrapolated 1e12 times its length gave a
         // start from which Newton converged to another root of the collocation equations (an
         // error of 4e-5 in u that the estimate, built on the same stages, accepted).
