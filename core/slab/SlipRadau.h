@@ -9,8 +9,8 @@
 // The time enters only through a_h and n, evaluated once per stage time; the Newton iteration
 // on the five stage velocities (10 unknowns, exact Jacobian) costs no further evaluations.
 // Why five stages: with three (order 5) the step was held by its order-3 error estimate to about
-// a fiftieth of the excitation's period on slow slips, where the order-5 estimate of five stages
-// allows steps about three times longer (docs/theory.md §6.5).
+// 0.015 tau on slow slips (the period at 1 Hz is 10 tau), where the order-5 estimate of five
+// stages allows steps about three times longer (docs/theory.md §6.5).
 
 #include "core/numerics/Dop853.h"
 #include "core/numerics/RadauIIA.h"
