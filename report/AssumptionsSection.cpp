@@ -31,7 +31,7 @@ QStringList slabAssumptions(const Project& p) {
 
 QStringList excitationAssumptions(const Project& p, const ReportAnalysis& a) {
     QStringList out;
-    if (!recordGoverns(p, a))
+    if (hasBasis(a.assessment, CheckBasis::Sine) || hasBasis(a.assessment, CheckBasis::Planar))
         out << QStringLiteral("The floor motion is idealized as an enveloped sine (%1 envelope) at "
                               "the building frequency f = 1/T, with the peak floor acceleration "
                               "A in g; other frequencies enter only through the A_crit(f) curve.")

@@ -89,16 +89,28 @@ void profileFigure(ReportDocument& doc, const Project& p, const FloorAnalysis& a
              .arg(num(a.pga, 3))});
 }
 
-void verdictTable(ReportDocument& doc, const std::vector<FloorVerdict>& verdicts,
-                  const QString& against) {
-    Table t{{"demand", "PFA at the slab (g)", against, "margin", "verdict"},
+// The assessment's floor checks, each comparison on its own row: the ground PGA through the
+// building model, and the code's floor formula at the slab's level; the governing one (bold)
+// gives the check's margin and verdict.
+void comparisonTable(ReportDocument& doc, const Assessment& s) {
+    Table t{{"check", "compares", "demand (g)", "capacity (g)", "margin", "verdict"},
             {},
-            {2.2, 1.0, 1.1, 0.7, 1.6},
-            {Align::Left, Align::Right, Align::Right, Align::Right, Align::Left},
+            {1.9, 2.4, 0.8, 0.8, 0.7, 1.8},
+            {Align::Left, Align::Left, Align::Right, Align::Right, Align::Right, Align::Left},
             {}};
-    for (const FloorVerdict& v : verdicts)
-        t.rows.push_back({qs(v.title), num(v.demand, 3), num(v.critical, 3, QStringLiteral("none")),
-                          num(v.margin, 2), qs(verdictText(v.verdict))});
+    for (const Check& c : s.checks) {
+        if (c.basis != CheckBasis::Floors) continue;
+        for (std::size_t k = 0; k < c.comparisons.size(); ++k) {
+            const Comparison& x = c.comparisons[k];
+            const bool governs = k == c.governingComparison;
+            if (governs) t.boldRows.push_back(static_cast<int>(t.rows.size()));
+            t.rows.push_back(
+                {k == 0 ? qs(c.id) : QString(), qs(x.intensity), num(x.demand, 3),
+                 num(x.capacity, 3, QStringLiteral("none")),
+                 x.margin ? num(*x.margin, 2) : QStringLiteral("> ") + num(x.orderingMargin(), 2),
+                 governs ? qs(c.verdict) : QString()});
+        }
+    }
     doc.addTable(t);
 }
 
@@ -162,15 +174,9 @@ void addFloorsSection(ReportDocument& doc, const Project& p, const ReportAnalysi
                        "level %1 (bold row).")
             .arg(a.slabLevel),
         true);
-    if (!a.verdicts.empty()) {
-        doc.addHeading(QStringLiteral("Verdicts at the slab's level"), 2);
-        verdictTable(doc, a.verdicts, QStringLiteral("critical floor peak, record (g)"));
-        doc.addParagraph(
-            QStringLiteral("The same demands against the paper's A_crit(1/T) = %1 g of the "
-                           "slab's enveloped sine at the building frequency (chapter V):")
-                .arg(num(a.sineACrit, 3, QStringLiteral("none"))),
-            true);
-        verdictTable(doc, a.sineVerdicts, QStringLiteral("A_crit(1/T), sine (g)"));
+    if (hasBasis(r.assessment, CheckBasis::Floors)) {
+        doc.addHeading(QStringLiteral("Floor checks at the slab's level"), 2);
+        comparisonTable(doc, r.assessment);
     }
     for (const FloorDemand& d : a.demands)
         trailTable(doc, d);

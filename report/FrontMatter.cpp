@@ -82,21 +82,31 @@ void addSignatureBlock(ReportDocument& doc, const Project& p) {
 }
 
 void addAcceptanceCriterion(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {
-    if (a.check.codes.empty()) return;
-    const QString crit = recordGoverns(p, a) ? QStringLiteral("the record's critical peak")
-                                             : QStringLiteral("A_crit");
-    doc.addParagraph(
-        QStringLiteral(
-            "Acceptance criterion: margin = %1 / (F_top/w_top), the floor acceleration that "
-            "slides the slab off its walls divided by the top-floor acceleration the code "
-            "requires the structure to resist. A margin greater than 1 is acceptable: the "
-            "structure reaches its code strength before the slab can slide off (member "
-            "overstress governs). A margin below 1 is not: the slab slides off at a floor "
+    const Assessment& s = a.assessment;
+    if (s.checks.empty()) return;
+    (void)p;
+    QStringList criteria;
+    if (hasBasis(s, CheckBasis::Sine) || hasBasis(s, CheckBasis::Planar) ||
+        hasBasis(s, CheckBasis::Record))
+        criteria << QStringLiteral(
+            "for the code-ratio checks (sine, planar, record), margin = critical floor peak / "
+            "(F_top/w_top): above 1 the structure reaches its code strength before the slab can "
+            "slide off (member overstress governs); below 1 the slab slides off at a floor "
             "acceleration the code requires the structure to withstand (kinetic instability "
-            "governs), and the slab seating must be lengthened or the slab restrained. The "
-            "verdict does not cover the strength of the members, the walls or the slab "
-            "themselves, nor floors other than the top floor.")
-            .arg(crit));
+            "governs)");
+    if (hasBasis(s, CheckBasis::Floors))
+        criteria << QStringLiteral(
+            "for the floor checks, margin = the ground PGA at which the slab on its level falls / "
+            "the ground acceleration of the code level (the code's own floor formula beside "
+            "it governs where it fails while the ground comparison holds): above 1 the slab stays "
+            "seated at that level of shaking, "
+            "below 1 it slides off");
+    doc.addParagraph(
+        QStringLiteral("Acceptance criterion: every check's margin must exceed 1; %1. A check "
+                       "that does not hold asks for a longer slab seating or a restrained slab. "
+                       "The assessment does not cover the strength of the members, the walls or "
+                       "the slab themselves.")
+            .arg(criteria.join(QStringLiteral("; "))));
     doc.addParagraph(
         QStringLiteral("This report was produced by software (kinstab %1). Its inputs and results "
                        "must be checked by a qualified engineer, who is responsible for the "

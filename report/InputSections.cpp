@@ -153,8 +153,9 @@ void addCodeSections(ReportDocument& doc, const Project& p, const ReportAnalysis
     doc.addParagraph(QStringLiteral(
         "Each code gives the base shear and its distribution over the height; the top floor "
         "carries the largest lateral force per unit weight, F_top / w_top. That ratio is the "
-        "floor acceleration (in g) that the code requires the structure to resist, and is "
-        "compared with A_crit in section 5."));
+        "floor acceleration (in g) that the code requires the structure to resist; the checks "
+        "on page 1 compare it with the slab's critical floor peak (A_crit, or a record's "
+        "critical peak)."));
     for (const CodeResult& r : a.codes) {
         doc.addHeading(qs(r.title), 2);
         Table t{{"coefficient", "symbol", "value", "source"},

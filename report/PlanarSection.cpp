@@ -7,9 +7,11 @@
 namespace kinstab::ui::report {
 
 QString modelName(const Project& p) {
-    return p.model == ModelKind::Planar
-               ? QStringLiteral("planar 2-DOF slab with vertical motion (Furgerson 1980, ch. VI)")
-               : QStringLiteral("1-DOF friction-held slab on walls (Furgerson 1980, ch. IV–V)");
+    if (p.model != ModelKind::Planar)
+        return QStringLiteral("1-DOF friction-held slab on walls (Furgerson 1980, ch. IV–V)");
+    return p.planar.vertical == VerticalSource::None
+               ? QStringLiteral("planar 2-DOF slab, no vertical motion (Furgerson 1980, ch. VI)")
+               : QStringLiteral("planar 2-DOF slab with vertical motion (Furgerson 1980, ch. VI)");
 }
 
 void addPlanarInputs(ReportDocument& doc, const Project& p) {

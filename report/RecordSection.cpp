@@ -136,8 +136,8 @@ void runTable(ReportDocument& doc, const Project& p, const RecordAnalysis& r) {
     doc.addTable(t);
     if (collapsed && c.peak)
         doc.addParagraph(QStringLiteral("The slab collapses at the record's peak of %1 g because "
-                                        "it exceeds the critical peak %2 g. The verdict (page 1) "
-                                        "compares each code's top-floor ratio with the critical "
+                                        "it exceeds the critical peak %2 g. The record checks "
+                                        "compare each code's top-floor ratio with the critical "
                                         "peak, not with this run.")
                              .arg(accelG(r.peak), accelG(*c.peak)),
                          true);
@@ -176,9 +176,9 @@ void addRecordSection(ReportDocument& doc, const Project& p, const ReportAnalysi
             "event-driven exact solver (exact for piecewise-linear input). %2 The single run "
             "below uses the motion %3; the critical peak is the smallest peak of the scaled "
             "motion that slides the slab off (a scan in steps of %4 g refined by bisection to "
-            "%5 g, since γc need not grow with the scale). The verdict of this report rests on "
-            "the critical peak; the sections on the enveloped sine (γc surfaces, A_crit(f)) stay "
-            "for comparison.")
+            "%5 g, since γc need not grow with the scale). The record checks (record.CODE on "
+            "page 1) compare each code's top-floor ratio with the critical peak; the sections on "
+            "the enveloped sine give the sine checks.")
             .arg(model, filter, scaling, num(p.critical.scanStep, 3),
                  num(p.critical.tolerance, 7)));
     provenanceTable(doc, p, r);
@@ -189,8 +189,8 @@ void addRecordSection(ReportDocument& doc, const Project& p, const ReportAnalysi
     runTable(doc, p, r);
     if (!r.verdicts.empty())
         doc.addParagraph(QStringLiteral("Each code's top-floor ratio against the record's "
-                                        "critical peak (the rule of chapter V) gives the verdict "
-                                        "in the Summary on page 1."));
+                                        "critical peak: the record.CODE checks of the assessment "
+                                        "on page 1."));
 }
 
 } // namespace kinstab::ui::report

@@ -2,6 +2,7 @@
 #include "report/ReportAnalysis.h"
 #include "report/CodeStyle.h"
 
+#include "core/assessment/RunAssessment.h"
 #include "core/codes/CodeSet.h"
 #include "core/sweep/ModelPoint.h"
 #include "report/PlanarVertical.h"
@@ -121,6 +122,17 @@ SolverCrossCheck crossCheck(const Project& p, const SweepResult& exact, double s
 
 } // namespace
 
+Assessment assessReport(const Project& project, const ReportAnalysis& a) {
+    AssessmentParts parts;
+    if (!a.check.codes.empty()) parts.sine = a.check;
+    if (a.record && a.record->critical) {
+        parts.record = a.record->verdicts;
+        parts.recordName = a.record->ground.name;
+    }
+    if (a.floors) parts.floors = floorCheckParts(*a.floors, project.building.stories);
+    return composeAssessment(project, parts);
+}
+
 std::optional<double> designFrequency(const Project& project, const DesignCheckResult& check) {
     if (project.building.period) return 1.0 / *project.building.period;
     if (!check.codes.empty()) return check.codes.front().frequencyHz;
@@ -184,6 +196,7 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
     // The paper's RK4 solver is of the 1-DOF model only.
     if (options.crossCheck && c.solver == SolverKind::Exact && !planar)
         a.crossCheck = crossCheck(project, a.projectSweep, options.crossCheckSteps);
+    a.assessment = assessReport(project, a);
     a.totalSeconds = secondsSince(t0);
     return a;
 }

@@ -6,6 +6,7 @@
 // struct from what it already computed; the CLI calls computeReportAnalysis.
 
 #include "core/analysis/RunAnalysis.h"
+#include "core/assessment/Assessment.h"
 #include "core/building/FloorAnalysis.h"
 #include "core/check/DesignCheck.h"
 #include "core/check/RecordAnalysis.h"
@@ -52,6 +53,9 @@ struct ReportAnalysis {
     // The project's record, when it has one: single run, critical peak, its verdicts.
     std::optional<RecordAnalysis> record;
     std::optional<FloorAnalysis> floors; // when the project has "floors" and a record
+    // Every check the project implies, composed once from the analyses above (assessReport):
+    // page 1 and every section show it and compose no verdict of their own.
+    Assessment assessment;
     double totalSeconds = 0;
 };
 
@@ -73,6 +77,10 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
 // The floor-motion analysis of a project with "floors" and a record (FloorsSection.cpp);
 // none otherwise or after a cancel. Throws ProjectError on an unreadable record.
 std::optional<FloorAnalysis> computeReportFloors(const Project& p, SweepControl* control);
+
+// The project's assessment from what the report ran: the sine's (or planar) check, the record's
+// verdicts, the floor analysis at the slab's level (core/assessment/Assessment.h).
+Assessment assessReport(const Project& project, const ReportAnalysis& a);
 
 // The building frequency 1/T the check used (first code's period; the entered period if any).
 std::optional<double> designFrequency(const Project& project, const DesignCheckResult& check);

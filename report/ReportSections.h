@@ -42,8 +42,10 @@ void addSymbolTable(ReportDocument& doc, const Project& p, const ReportAnalysis&
 void addCheckSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 // Page 1: the one verdict and the excitation it rests on (SummarySection.cpp).
 void addSummary(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
-// True when the project's record, not the enveloped sine, gives the report's verdict.
+// True when the governing check of the assessment rests on the project's record (record or floors).
 bool recordGoverns(const Project& p, const ReportAnalysis& a);
+// The assessment's checks as a table, one line each; the governing row in bold.
+void addChecksTable(ReportDocument& doc, const Assessment& a);
 // "event-driven exact solver ..." or "numerically integrated planar model ..., tolerance ...":
 // the solver that actually ran the sweeps and the check.
 QString solverDescription(const Project& p, const ReportAnalysis& a);
@@ -54,10 +56,8 @@ void addPlanarInputs(ReportDocument& doc, const Project& p); // planar projects 
 void addCodeSections(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 void addExcitationSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 void addSurfaceSections(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
-void addVerdictTable(ReportDocument& doc, const ReportAnalysis& a);
-// The same table for any verdicts (the record's: critHeader names its critical peak).
-void addVerdictTable(ReportDocument& doc, const std::vector<CodeVerdict>& codes,
-                     const QString& critHeader);
+// Each code's top-floor ratio (UBC with and without F_t), frequency and A_crit of the check.
+void addCodeCriticalTable(ReportDocument& doc, const ReportAnalysis& a);
 // The record as the project's excitation (RecordSection.cpp): provenance, scaling, floor
 // filter, the time histories and Fourier spectra of ground and floor (Figs. 25-27), the single
 // run and the critical peak against the code ratios. Only when the analysis has a record.

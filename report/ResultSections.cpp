@@ -112,22 +112,17 @@ void addSurfaceSections(ReportDocument& doc, const Project& p, const ReportAnaly
                       3))});
 }
 
-void addVerdictTable(ReportDocument& doc, const ReportAnalysis& a) {
-    addVerdictTable(doc, a.check.codes, QStringLiteral("A_crit (g)"));
-}
-
-void addVerdictTable(ReportDocument& doc, const std::vector<CodeVerdict>& codes,
-                     const QString& critHeader) {
-    Table t{{"code", "F_top/w_top", "f = 1/T (Hz)", critHeader, "margin A_crit/ratio", "verdict"},
+void addCodeCriticalTable(ReportDocument& doc, const ReportAnalysis& a) {
+    const std::vector<CodeVerdict>& codes = a.check.codes;
+    Table t{{"code", "F_top/w_top", "f = 1/T (Hz)", "A_crit (g)"},
             {},
-            {2.6, 1.2, 1.2, 1.2, 1.4, 2.4},
-            {Align::Left, Align::Right, Align::Right, Align::Right, Align::Right, Align::Left},
+            {2.6, 1.2, 1.2, 1.2},
+            {Align::Left, Align::Right, Align::Right, Align::Right},
             {}};
     for (const CodeVerdict& v : codes) {
         QString ratio = num(v.ratio, 3);
         if (v.ratioWithoutFt) ratio = num(*v.ratioWithoutFt, 3) + " / " + ratio;
-        t.rows.push_back({qs(v.title), ratio, num(v.frequencyHz, 3), accelG(v.aCrit, "> limit"),
-                          num(v.margin, 2), qs(verdictText(v.verdict))});
+        t.rows.push_back({qs(v.title), ratio, num(v.frequencyHz, 3), accelG(v.aCrit, "> limit")});
     }
     doc.addTable(t);
     bool ubc = false;
@@ -201,22 +196,16 @@ void addNumericsSection(ReportDocument& doc, const Project& p, const ReportAnaly
 
 void addCheckSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {
     if (a.check.codes.empty()) return;
-    const bool secondary = recordGoverns(p, a);
-    doc.addSection(secondary ? QStringLiteral("Design check with the enveloped sine")
-                             : QStringLiteral("Design check: which failure governs"));
-    doc.addParagraph(QStringLiteral(
-        "Chapter V of the source report: below A_crit the structure reaches its code strength "
-        "first (member overstress governs); at or above it the slab slides off (kinetic "
-        "instability governs). Margin = A_crit / (F_top/w_top)."));
-    if (!secondary) {
-        doc.addParagraph(QStringLiteral("The verdict, with A_crit and the margin for each code, "
-                                        "is given once, in the Summary on page 1."));
-        return;
-    }
-    doc.addParagraph(QStringLiteral(
-        "For comparison only: the verdict of this report rests on the project's record "
-        "(Summary, page 1). Here the same rule is applied to A_crit of the enveloped sine."));
-    addVerdictTable(doc, a);
+    const CheckBasis basis = p.model == ModelKind::Planar ? CheckBasis::Planar : CheckBasis::Sine;
+    doc.addSection(QStringLiteral("Design check with the enveloped sine"));
+    doc.addParagraph(
+        QStringLiteral(
+            "Chapter V of the source report: below A_crit the structure reaches its code strength "
+            "first (member overstress governs); at or above it the slab slides off (kinetic "
+            "instability governs). Margin = A_crit / (F_top/w_top). Each code's margin and verdict "
+            "are the %1.CODE checks of the assessment on page 1; A_crit at each code's frequency:")
+            .arg(qs(checkBasisName(basis))));
+    addCodeCriticalTable(doc, a);
 }
 
 void addReferences(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {

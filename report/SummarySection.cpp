@@ -1,127 +1,144 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The report's summary on page 1: one verdict, and the excitation it rests on. With a record
-// as the project's excitation the record's critical peak governs and the enveloped-sine check is
-// one labelled secondary line; otherwise the enveloped sine's A_crit(1/T) governs. Every
-// sentence is built from what was run (record, scaling, floor filter, outcome, verdicts).
+// The report's summary on page 1: the project's assessment (core/assessment) as it is, every
+// check with its margin and verdict and the governing one, and what each basis rests on. Every
+// sentence is built from the checks that ran (their model, excitation and comparisons); no
+// verdict is composed here.
 
 #include "report/CodeStyle.h"
 #include "report/ReportSections.h"
+
+#include <set>
 
 namespace kinstab::ui::report {
 
 namespace {
 
-int kineticCount(const std::vector<CodeVerdict>& codes) {
-    int n = 0;
-    for (const CodeVerdict& v : codes)
-        n += v.verdict == Verdict::KineticInstabilityGoverns;
-    return n;
+QString marginCell(const Comparison& x) {
+    return x.margin ? num(*x.margin, 2) : QStringLiteral("> ") + num(x.orderingMargin(), 2);
 }
 
-QString governs(const std::vector<CodeVerdict>& codes, const QString& limit) {
-    const int kinetic = kineticCount(codes);
-    if (kinetic == 0)
-        return QStringLiteral("for every code selected the required top-floor ratio lies below "
-                              "%1: member overstress governs, the slab does not slide off before "
-                              "the structure reaches its code strength.")
-            .arg(limit);
-    return QStringLiteral("for %1 of %2 codes the required top-floor ratio reaches %3: kinetic "
-                          "instability governs there, and the slab seating must be checked.")
-        .arg(kinetic)
-        .arg(codes.size())
-        .arg(limit);
+QString basisPhrase(CheckBasis b) {
+    switch (b) {
+    case CheckBasis::Sine:
+        return QStringLiteral("the enveloped sine (Furgerson 1980, ch. IV–V)");
+    case CheckBasis::Planar:
+        return QStringLiteral("the planar slab (Furgerson 1980, ch. VI)");
+    case CheckBasis::Record:
+        return QStringLiteral("the project's record");
+    case CheckBasis::Floors:
+        return QStringLiteral("the building's floor motions");
+    }
+    return {};
 }
 
-// "margins UBC 1976 4.26, ATC 3-06 3.56": the secondary check in one line.
-QString marginList(const std::vector<CodeVerdict>& codes) {
-    QStringList parts;
-    for (const CodeVerdict& v : codes)
-        parts << shortCodeName(v.code) + " " + num(v.margin, 2);
-    return parts.join(QStringLiteral(", "));
+std::vector<CheckBasis> basesOf(const Assessment& a) {
+    std::vector<CheckBasis> out;
+    for (const Check& c : a.checks)
+        if (std::find(out.begin(), out.end(), c.basis) == out.end()) out.push_back(c.basis);
+    return out;
 }
 
-QString filterText(const RecordExcitation& e) {
-    return e.floor ? QStringLiteral("through the floor filter of the building (T = %1 s, ζ = %2)")
-                         .arg(num(e.floor->period, 3), num(e.floor->damping, 3))
-                   : QStringLiteral("driving the slab directly (no floor filter)");
+const Check* firstOf(const Assessment& a, CheckBasis b) {
+    for (const Check& c : a.checks)
+        if (c.basis == b) return &c;
+    return nullptr;
+}
+
+// What one basis rests on, from its first check (every check of a basis shares model and
+// excitation).
+QString basisText(const Assessment& a, CheckBasis b) {
+    const Check& c = *firstOf(a, b);
+    const Comparison& x = c.comparisons.front();
+    QString s = QStringLiteral("%1.*: %2; excitation: %3; %4: %5 against %6.")
+                    .arg(qs(checkBasisName(b)), qs(c.model), qs(c.excitation), qs(x.intensity),
+                         qs(x.demandName), qs(x.capacityName));
+    if (b == CheckBasis::Floors)
+        s += QStringLiteral(" Each floor check also compares the code's own floor formula (%1 "
+                            "against the %2); where it fails while the ground comparison holds, "
+                            "it governs the check.")
+                 .arg(qs(c.comparisons.back().demandName), qs(c.comparisons.back().capacityName));
+    return s;
+}
+
+QString countText(const Assessment& a) {
+    int failing = 0;
+    QStringList ids;
+    for (const Check& c : a.checks)
+        if (!c.holds) ++failing, ids << qs(c.id);
+    if (failing == 0) return QStringLiteral("Every check holds.");
+    return QStringLiteral("%1 of %2 checks do not hold: %3.")
+        .arg(failing)
+        .arg(a.checks.size())
+        .arg(ids.join(QStringLiteral(", ")));
 }
 
 // The single run at the project's scaling, beside the critical peak: why "collapsed" there does
-// not contradict "overstress governs".
-QString asRunText(const RecordExcitation& e, const RecordAnalysis& r, double tstar) {
+// not contradict a check that holds.
+QString asRunText(const Project& p, const RecordAnalysis& r) {
+    const RecordExcitation& e = *p.record;
     const bool asGiven = !e.targetPeak && e.scaleFactor == 1.0;
-    const QString at = asGiven ? QStringLiteral("the record as given (scale %1, peak %2 g)")
-                                     .arg(num(r.scaleFactor, 1), accelG(r.peak))
-                               : QStringLiteral("the record as scaled in the project (factor "
-                                                "%1, peak %2 g)")
-                                     .arg(num(r.scaleFactor, 4), accelG(r.peak));
+    const QString at =
+        asGiven
+            ? QStringLiteral("the record as given (peak %1 g under the slab)").arg(accelG(r.peak))
+            : QStringLiteral("the record as scaled in the project (factor "
+                             "%1, peak %2 g under the slab)")
+                  .arg(num(r.scaleFactor, 4), accelG(r.peak));
     if (r.run.outcome != Outcome::Collapsed)
         return QStringLiteral("At %1 the slab does not fall (%2).")
             .arg(at, qs(outcomeName(r.run.outcome)));
-    return QStringLiteral("The slab collapses at %1, at τc = %2 (t = %3 s): that peak lies above "
-                          "the critical peak, so the record as it is would slide the slab off. "
-                          "The design check does not ask whether this record collapses the slab, "
-                          "but whether the structure reaches its code strength first: it compares "
-                          "each code's top-floor ratio with the critical peak.")
-        .arg(at, num(r.run.tauC, 3), num(r.run.tauC * tstar, 2));
-}
-
-void addRecordVerdict(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {
-    const RecordAnalysis& r = *a.record;
-    const RecordExcitation& e = *p.record;
-    const RecordCriticalScale& c = *r.critical;
-    doc.addParagraph(
-        QStringLiteral("Verdict basis: the recorded excitation. The project's excitation is the "
-                       "record %1, %2, so the verdict rests on the record's critical peak, the "
-                       "smallest peak of the scaled motion under the slab that slides the slab "
-                       "off, and not on the enveloped sine.")
-            .arg(qs(r.ground.name), filterText(e)));
-    const QString peak =
-        c.peak ? QStringLiteral("%1 g (factor %2 on the record)")
-                     .arg(accelG(*c.peak), num(*c.factor, 4))
-               : QStringLiteral("beyond the search limit of %1 g").arg(num(p.critical.to, 2));
-    const QString limit = c.peak ? QStringLiteral("the critical peak %1 g").arg(accelG(*c.peak))
-                                 : QStringLiteral("the search limit");
-    doc.addParagraph(
-        QStringLiteral("With the project's record the critical peak is %1. ").arg(peak) +
-        asRunText(e, r, p.slab.tstar) + " Verdict: " + governs(r.verdicts, limit));
-    addVerdictTable(doc, r.verdicts, QStringLiteral("critical peak (g)"));
-    if (!a.check.codes.empty()) {
-        const CodeVerdict& first = a.check.codes.front();
-        const int kinetic = kineticCount(a.check.codes);
-        const QString outcome =
-            kinetic == 0 ? QStringLiteral("overstress governs for every code")
-                         : QStringLiteral("kinetic instability governs for %1 of %2 codes")
-                               .arg(kinetic)
-                               .arg(a.check.codes.size());
-        doc.addParagraph(
-            QStringLiteral("Secondary check, enveloped sine (for comparison; not the verdict): "
-                           "A_crit = %1 g at f = 1/T = %2 Hz, margins %3; %4. See the section "
-                           "\"Design check with the enveloped sine\".")
-                .arg(accelG(first.aCrit, QStringLiteral("> limit")), num(first.frequencyHz, 3),
-                     marginList(a.check.codes), outcome),
-            true);
-    }
+    return QStringLiteral("At %1 the slab falls (τc = %2, t = %3 s): that peak lies above the "
+                          "critical peak. The record checks ask whether the structure reaches "
+                          "its code strength first, so they compare each code's top-floor ratio "
+                          "with the critical peak, not with this run.")
+        .arg(at, num(r.run.tauC, 3), num(r.run.tauC * p.slab.tstar, 2));
 }
 
 } // namespace
 
+void addChecksTable(ReportDocument& doc, const Assessment& a) {
+    // One line a check, so that page 1 holds them all: what each compares is said below the table.
+    Table t{{"check", "demand (g)", "capacity (g)", "margin", "verdict"},
+            {},
+            {1.9, 0.8, 0.9, 0.7, 3.0},
+            {Align::Left, Align::Right, Align::Right, Align::Right, Align::Left},
+            {}};
+    for (std::size_t k = 0; k < a.checks.size(); ++k) {
+        const Check& c = a.checks[k];
+        const Comparison& x = c.governing();
+        if (a.governing == k) t.boldRows.push_back(static_cast<int>(t.rows.size()));
+        t.rows.push_back({qs(c.id), num(x.demand, 3), num(x.capacity, 3, QStringLiteral("none")),
+                          marginCell(x), qs(c.verdict)});
+    }
+    doc.addTable(t);
+}
+
 bool recordGoverns(const Project& p, const ReportAnalysis& a) {
-    return p.record && a.record && a.record->critical && !a.record->verdicts.empty();
+    const Check* g = a.assessment.governingCheck();
+    return p.record && g && g->basis != CheckBasis::Sine && g->basis != CheckBasis::Planar;
 }
 
 void addSummary(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {
-    if (a.check.codes.empty()) return;
+    const Assessment& s = a.assessment;
+    const Check* g = s.governingCheck();
+    if (!g) return;
     doc.addHeading(QStringLiteral("Summary"));
-    if (recordGoverns(p, a)) return addRecordVerdict(doc, p, a);
+    QStringList bases;
+    for (CheckBasis b : basesOf(s))
+        bases << basisPhrase(b);
     doc.addParagraph(
-        QStringLiteral(
-            "Verdict basis: the enveloped sine (Furgerson 1980, ch. IV), the project's "
-            "excitation. The check compares, for each code, the top-floor force ratio "
-            "F_top/w_top with A_crit(f), the smallest peak floor acceleration (in g) that slides "
-            "the slab off its walls at the building frequency f = 1/T: ") +
-        governs(a.check.codes, QStringLiteral("A_crit")));
-    addVerdictTable(doc, a);
+        QStringLiteral("The project implies %1 checks, on %2; each compares a demand with a "
+                       "capacity in one intensity, margin = capacity / demand. %3")
+            .arg(s.checks.size())
+            .arg(bases.join(QStringLiteral("; ")), countText(s)));
+    doc.addParagraph(
+        QStringLiteral("Governing check: %1, margin %2: %3 (%4).")
+            .arg(qs(g->id), marginCell(g->governing()), qs(g->verdict), qs(s.governingReason)));
+    addChecksTable(doc, s);
+    for (CheckBasis b : basesOf(s))
+        doc.addParagraph(basisText(s, b), true);
+    for (const std::string& n : s.notes)
+        doc.addParagraph(qs(n), true);
+    if (p.record && a.record) doc.addParagraph(asRunText(p, *a.record), true);
 }
 
 } // namespace kinstab::ui::report

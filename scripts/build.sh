@@ -1,8 +1,17 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Configure and build kinstab into ${BUILD_DIR:-build} (extra CMake arguments pass through).
+# Ninja and ccache when installed (scripts/install-deps.sh installs both): ccache's cache lives
+# in $HOME/.cache/ccache, so a developer's builds warm CI's on the same machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build="${BUILD_DIR:-build}"
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE="${BUILD_TYPE:-Release}" -DKINSTAB_WERROR=ON "$@" >/dev/null
+args=(-DCMAKE_BUILD_TYPE="${BUILD_TYPE:-Release}" -DKINSTAB_WERROR=ON)
+if [ ! -f "$build/CMakeCache.txt" ] && command -v ninja >/dev/null; then
+  args+=(-G Ninja)
+fi
+if command -v ccache >/dev/null; then
+  args+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
+cmake -S . -B "$build" "${args[@]}" "$@" >/dev/null
 cmake --build "$build" -j"$(nproc)"

@@ -1,16 +1,20 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Builds the libFuzzer harnesses (tests/fuzz) with clang under ASan + UBSan into build-fuzz,
-# cuts seed corpora from the shipped files, replays tests/fuzz/regressions, then fuzzes each
-# reader for FUZZ_SECONDS (default 30). Any crash, leak of an exception or sanitizer report
-# fails the script; the input that did it is left in build-fuzz/artifacts/.
+# Builds the libFuzzer harnesses (tests/fuzz) with clang under ASan + UBSan into
+# ${FUZZ_BUILD:-build-fuzz} (CI passes its sanitizer build, configured with KINSTAB_FUZZ=ON, and
+# nothing is rebuilt), cuts seed corpora from the shipped files, replays tests/fuzz/regressions,
+# then fuzzes each reader for FUZZ_SECONDS (default 30). Any crash, leak of an exception or
+# sanitizer report fails the script; the input that did it is left in $build/artifacts/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-build=build-fuzz
+build="${FUZZ_BUILD:-build-fuzz}"
 seconds="${FUZZ_SECONDS:-30}"
-CC=clang CXX=clang++ cmake -S . -B "$build" -DKINSTAB_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  "$@" >/dev/null
-cmake --build "$build" -j"$(nproc)"
+readers=(at2 cosmos csmip plaintext project friction_csv)
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  CC=clang CXX=clang++ BUILD_DIR="$build" BUILD_TYPE=RelWithDebInfo bash scripts/build.sh \
+    -DKINSTAB_FUZZ=ON "$@"
+fi
+cmake --build "$build" -j"$(nproc)" --target "${readers[@]/#/fuzz_}"
 
 # Seeds: the first 120 lines of each shipped file of the kind the harness reads.
 seed() { # seed NAME FILE...
@@ -29,7 +33,7 @@ export ASAN_OPTIONS=detect_leaks=0:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 mkdir -p "$build/artifacts"
 failed=()
-for name in at2 cosmos csmip plaintext project friction_csv; do
+for name in "${readers[@]}"; do
   exe="$build/tests/fuzz/fuzz_$name"
   # Inputs that once crashed a reader (tests/fuzz/regressions/NAME/): each must now pass.
   regressions=(tests/fuzz/regressions/"$name"/*)

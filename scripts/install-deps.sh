@@ -8,7 +8,8 @@ packages=(cmake g++ make qt6-base-dev qt6-charts-dev qt6-datavisualization-dev q
           python3-dev pybind11-dev python3-pybind11 python3-pytest python3-numpy python3-matplotlib
           parallel python3-dask python3-distributed  # studies: GNU parallel and Dask (docs/studies.md)
           dpkg-dev file desktop-file-utils appstream
-          clang libclang-rt-14-dev)  # the Debian package and its validators
+          clang libclang-rt-14-dev  # the Debian package and its validators; the fuzzers
+          ninja-build ccache)  # faster builds (scripts/build.sh)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

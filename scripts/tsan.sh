@@ -8,7 +8,12 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=build-tsan
-cmake -S . -B "$build" -DKINSTAB_TSAN=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+generator=()
+[ ! -f "$build/CMakeCache.txt" ] && command -v ninja >/dev/null && generator=(-G Ninja)
+cmake -S . -B "$build" "${generator[@]}" "${launcher[@]}" -DKINSTAB_TSAN=ON \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DKINSTAB_PYTHON=OFF "$@" >/dev/null
 cmake --build "$build" -j"$(nproc)" --target tst_sweep tst_study_runner
 export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$PWD/tests/tsan.supp"
 QT_QPA_PLATFORM=offscreen "$build/tests/tst_sweep"

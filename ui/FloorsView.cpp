@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/FloorsView.h"
 
+#include "core/assessment/RunAssessment.h"
 #include "core/io/FloorsJson.h"
 #include "core/records/RecordReader.h"
 #include "core/records/RecordText.h"
@@ -25,6 +26,7 @@ namespace kinstab::ui {
 
 struct FloorsView::Outcome {
     FloorAnalysis analysis;
+    Assessment checks; // the floor checks at the slab's level (core/assessment)
     Accelerogram ground;
     Building building;
     Slab1DCase slab;
@@ -173,14 +175,20 @@ void FloorsView::run() {
         m_status->setText(tr("Cannot run: %1").arg(QString::fromStdString(e)));
         return;
     }
+    Project asRun = p;
+    asRun.floors = in.settings;
     m_job.start<std::shared_ptr<Outcome>>(
-        [in](JobContext& job) -> std::shared_ptr<Outcome> {
+        [in, asRun](JobContext& job) -> std::shared_ptr<Outcome> {
             auto o = std::make_shared<Outcome>();
             try {
                 o->analysis = analyseFloors(in, &job.control);
             } catch (const std::exception&) {
                 return nullptr; // validated above; a throw here is a bug, shown as a failed run
             }
+            AssessmentParts parts;
+            parts.floors = floorCheckParts(o->analysis, in.building.stories);
+            parts.recordName = in.ground.name;
+            o->checks = composeAssessment(asRun, parts);
             o->ground = in.ground;
             o->building = in.building;
             o->slab = in.slab;
@@ -248,21 +256,22 @@ void FloorsView::showVerdicts() {
                .arg(QString::fromStdString(a.building.periodSource))
                .arg(a.sdofRoofPeak, 0, 'f', 3)
                .arg(a.pfa.back(), 0, 'f', 3);
-    for (const FloorVerdict& v : a.verdicts)
-        lines << QStringLiteral("%1: %2 — %3%4")
-                     .arg(QString::fromStdString(v.title), QString::fromStdString(v.explanation),
-                          QString::fromStdString(verdictText(v.verdict)),
-                          v.margin ? tr(", margin %1").arg(*v.margin, 0, 'f', 2) : QString());
-    if (a.sineACrit && !a.sineVerdicts.empty())
-        lines << tr("Against the paper's A_crit(1/T) = %1 g of the enveloped sine: margins %2.")
-                     .arg(*a.sineACrit, 0, 'f', 3)
-                     .arg([&a] {
-                         QStringList m;
-                         for (const FloorVerdict& v : a.sineVerdicts)
-                             m << QString::fromStdString(v.title) + " " +
-                                      (v.margin ? QString::number(*v.margin, 'f', 2) : "—");
-                         return m.join("; ");
-                     }());
+    for (const Check& c : m_shown->checks.checks) {
+        QStringList parts;
+        for (const Comparison& x : c.comparisons)
+            parts << tr("%1: %2 %3 g against %4 %5 (margin %6)")
+                         .arg(QString::fromStdString(x.intensity))
+                         .arg(QString::fromStdString(x.demandName))
+                         .arg(x.demand, 0, 'f', 3)
+                         .arg(QString::fromStdString(x.capacityName))
+                         .arg(x.capacity ? QString::number(*x.capacity, 'f', 3) + " g"
+                                         : tr("none up to the limit"))
+                         .arg(x.margin ? QString::number(*x.margin, 'f', 2)
+                                       : "> " + QString::number(x.orderingMargin(), 'f', 2));
+        lines << QStringLiteral("%1 — %2. %3")
+                     .arg(QString::fromStdString(c.id), QString::fromStdString(c.verdict),
+                          parts.join(QStringLiteral("; ")));
+    }
     if (a.demands.empty()) lines << tr("The project selects neither ASCE 7-22 nor EN 1998-1.");
     m_verdicts->setText(lines.join('\n'));
 }

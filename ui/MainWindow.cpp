@@ -406,7 +406,7 @@ void MainWindow::showFinished(const SweepOutput& out) {
     m_results.setACrit(m_overlays.aCrit);
     refreshOverlays();
     if (out.check)
-        m_results.setCheck(*out.check, {CheckBasis::Source::Sine, m_project.critical.to, {}, {}});
+        m_results.setCheck(*out.check, {CheckSource::Source::Sine, m_project.critical.to, {}, {}});
     m_results.runEnded();
     inputsChanged(); // code inputs changed while it ran: re-judge now
     if (!out.check && !out.checkError.empty())

@@ -3,6 +3,7 @@
 // The main window: input panels and the verdict in docks on the left, the γc surface in the
 // middle, the linked charts in docks below. Run/Cancel drive a SweepRunner.
 
+#include "core/assessment/Assessment.h"
 #include "core/io/Project.h"
 #include "core/slab/Slab1DCase.h"
 #include "ui/PlanarPointRun.h"
@@ -151,6 +152,7 @@ private:
     void inputsChanged();
     void showStaleness();
     void showVerdict();
+    Assessment currentAssessment() const;
     void exportSurface();
     void exportChart(QChartView* view, const QString& name);
     // The planar model (MainWindowPlanar.cpp).

@@ -87,7 +87,7 @@ void MainWindow::showRecordFinished(const RecordOutput& out) {
         if (out.history) m_history->setRun(*out.history);
         if (a.critical)
             m_results.setCheck(DesignCheckResult{a.verdicts, a.critical->runs},
-                               {CheckBasis::Source::Record, m_project.critical.to, *a.critical,
+                               {CheckSource::Source::Record, m_project.critical.to, *a.critical,
                                 m_project.critical});
         const QString summary = runSummary(a, currentCase().tstar);
         // The result is shown under the record's inputs: bring their dock to the front.

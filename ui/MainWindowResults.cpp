@@ -64,13 +64,27 @@ void MainWindow::inputsChanged() {
     // A kept check is shown (re-judged, or dimmed when stale) unless the codes failed: then
     // updateCodes' message naming the bad input stays.
     if (m_results.check() && !(m_results.checkStale() && m_codeResults.empty()))
-        m_verdict->setCheck(*m_results.check());
+        m_verdict->setAssessment(currentAssessment());
     showStaleness();
+}
+
+// The assessment of what ran (core composes it): the check of the last run, on the enveloped sine
+// (or the planar model) or on the project's record.
+Assessment MainWindow::currentAssessment() const {
+    AssessmentParts parts;
+    if (m_results.checkBasis().source == CheckSource::Source::Record) {
+        parts.record = m_results.check()->codes;
+        const auto& run = m_results.recordRun();
+        if (run && run->analysis) parts.recordName = run->analysis->ground.name;
+    } else {
+        parts.sine = *m_results.check();
+    }
+    return composeAssessment(project(), parts);
 }
 
 void MainWindow::showVerdict() {
     if (m_results.check())
-        m_verdict->setCheck(*m_results.check());
+        m_verdict->setAssessment(currentAssessment());
     else
         m_verdict->setCodeResults(m_codeResults);
 }

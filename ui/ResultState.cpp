@@ -15,11 +15,11 @@ InputFingerprint fingerprintOf(const Project& p) {
     return {j.dump(), codes.dump()};
 }
 
-std::optional<DesignCheckResult> rejudge(const DesignCheckResult& kept, const CheckBasis& basis,
+std::optional<DesignCheckResult> rejudge(const DesignCheckResult& kept, const CheckSource& basis,
                                          const std::vector<CodeResult>& codes) {
     DesignCheckResult out;
     out.runs = 0; // nothing was run: the kept A_crit is judged against the new ratios
-    if (basis.source == CheckBasis::Source::Record) {
+    if (basis.source == CheckSource::Source::Record) {
         if (!basis.recordCritical) return std::nullopt;
         out.codes = recordVerdicts(codes, *basis.recordCritical, basis.search);
         return out;
@@ -80,7 +80,7 @@ void ResultState::setACrit(std::vector<std::pair<double, double>> aCrit) {
     if (m_surface) m_surface->aCrit = std::move(aCrit);
 }
 
-void ResultState::setCheck(const DesignCheckResult& check, const CheckBasis& basis) {
+void ResultState::setCheck(const DesignCheckResult& check, const CheckSource& basis) {
     m_check = check;
     m_basis = basis;
     m_checkKey = m_runKey;

@@ -49,7 +49,7 @@ struct SurfaceResult {
 };
 
 // Where the verdicts' A_crit came from, so they can be re-judged for new code ratios.
-struct CheckBasis {
+struct CheckSource {
     enum class Source { Sine, Record };
     Source source = Source::Sine;
     double searchLimit = 0; // A_crit search limit (g), for codes where nothing collapsed
@@ -80,7 +80,7 @@ public:
     void setSweepProgress(const SweepResult& r, const GammaGrid& g);
     void setACrit(std::vector<std::pair<double, double>> aCrit);
     // Verdicts made with the inputs the run started with.
-    void setCheck(const DesignCheckResult& check, const CheckBasis& basis);
+    void setCheck(const DesignCheckResult& check, const CheckSource& basis);
     void setPicked(std::optional<PointRun> run, std::optional<PlanarPointRun> planar);
     // A record run started with the current inputs: old record run and check go.
     void startRecordRun();
@@ -90,7 +90,7 @@ public:
     const std::optional<PointRun>& picked() const { return m_picked; }
     const std::optional<PlanarPointRun>& pickedPlanar() const { return m_pickedPlanar; }
     const std::optional<DesignCheckResult>& check() const { return m_check; }
-    const CheckBasis& checkBasis() const { return m_basis; }
+    const CheckSource& checkBasis() const { return m_basis; }
     const std::optional<RecordOutput>& recordRun() const { return m_record; }
 
     // A result that exists but was made with other inputs than the panels now show.
@@ -108,7 +108,7 @@ private:
     std::optional<PointRun> m_picked;
     std::optional<PlanarPointRun> m_pickedPlanar;
     std::optional<DesignCheckResult> m_check;
-    CheckBasis m_basis;
+    CheckSource m_basis;
     InputFingerprint m_checkKey;
     std::optional<RecordOutput> m_record;
     std::string m_recordKey;
@@ -116,7 +116,7 @@ private:
 
 // The verdicts of `codes` from the A_crit a check already found: nullopt when some code's
 // building frequency has no A_crit there (a new period needs a new search).
-std::optional<DesignCheckResult> rejudge(const DesignCheckResult& kept, const CheckBasis& basis,
+std::optional<DesignCheckResult> rejudge(const DesignCheckResult& kept, const CheckSource& basis,
                                          const std::vector<CodeResult>& codes);
 
 } // namespace kinstab::ui

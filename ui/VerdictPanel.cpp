@@ -11,7 +11,15 @@
 namespace kinstab::ui {
 
 namespace {
-enum Column { ColCode, ColRatio, ColACrit, ColMargin, ColVerdict, Columns };
+enum Column { ColBasis, ColCheck, ColDemand, ColCapacity, ColMargin, ColVerdict, Columns };
+
+QString fixed(double x, int digits) {
+    return QString::number(x, 'f', digits);
+}
+
+QString marginText(const Comparison& x) {
+    return x.margin ? fixed(*x.margin, 2) : QStringLiteral("> ") + fixed(x.orderingMargin(), 2);
+}
 } // namespace
 
 VerdictPanel::VerdictPanel(QWidget* parent)
@@ -19,22 +27,26 @@ VerdictPanel::VerdictPanel(QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
     m_table->setHorizontalHeaderLabels(
-        {tr("Code"), tr("Ratio (g)"), tr("A_crit (g)"), tr("Margin"), tr("Verdict")});
-    m_table->horizontalHeaderItem(ColRatio)->setToolTip(
-        tr("Top-floor lateral force over the top floor's weight, as the code requires it: the peak "
-           "floor "
-           "acceleration the code designs the slab's floor for, in g."));
-    m_table->horizontalHeaderItem(ColACrit)->setToolTip(
-        tr("Smallest floor-acceleration amplitude that slides the slab off its walls at f = 1/T."));
+        {tr("Basis"), tr("Code"), tr("Demand"), tr("Capacity"), tr("Margin"), tr("Verdict")});
+    m_table->horizontalHeaderItem(ColBasis)->setToolTip(
+        tr("What the check rests on: sine (enveloped sine, ch. IV), planar (ch. VI), record (the "
+           "project's record), floors (the building's floor motions under the ground record)."));
+    m_table->horizontalHeaderItem(ColDemand)->setToolTip(
+        tr("The code's demand in g, in the check's intensity: the top-floor force ratio "
+           "F_top/w_top, or for a floor check the ground acceleration of the code level."));
+    m_table->horizontalHeaderItem(ColCapacity)
+        ->setToolTip(tr("The same intensity (g) at which the slab slides off its walls."));
     m_table->horizontalHeaderItem(ColMargin)->setToolTip(
-        tr("A_crit / ratio: above 1 the members overstress before the slab can fall."));
+        tr("Capacity / demand: above 1 the check holds. The smallest margin governs."));
     m_table->verticalHeader()->hide();
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionMode(QAbstractItemView::NoSelection);
+    // The verdict takes what is left and wraps: the dock is narrow at 1280 x 800.
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->horizontalHeader()->setSectionResizeMode(ColVerdict, QHeaderView::Stretch);
+    m_table->setWordWrap(true);
     layout->addWidget(m_table);
-    m_note->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred); // no wrap: see SurfaceView
+    m_note->setWordWrap(true);
     layout->addWidget(m_note);
 }
 
@@ -43,7 +55,15 @@ int VerdictPanel::rowCount() const {
 }
 
 QString VerdictPanel::codeText(int row) const {
-    const QTableWidgetItem* item = m_table->item(row, ColCode);
+    return row >= 0 && row < m_codes.size() ? m_codes[row] : QString();
+}
+
+QString VerdictPanel::checkText(int row) const {
+    return row >= 0 && row < m_ids.size() ? m_ids[row] : QString();
+}
+
+QString VerdictPanel::basisText(int row) const {
+    const QTableWidgetItem* item = m_table->item(row, ColBasis);
     return item ? item->text() : QString();
 }
 
@@ -52,29 +72,34 @@ QString VerdictPanel::verdictText(int row) const {
     return item ? item->text() : QString();
 }
 
-void VerdictPanel::setRow(int row, const std::string& code, const QString& title, double period,
-                          double ratio, const QString& aCrit, const QString& margin,
-                          const QString& verdict, const QColor& colour) {
-    // The short name ("UBC 1976"): the dock is narrow; the full title is the tooltip.
-    const QString cells[] = {report::shortCodeName(code), QString::number(ratio, 'f', 3), aCrit,
-                             margin, verdict};
+QString VerdictPanel::governingText() const {
+    return m_note->text();
+}
+
+void VerdictPanel::setRow(int row, const QStringList& cells, const QString& tooltip,
+                          const QColor& colour) {
     for (int c = 0; c < Columns; ++c) {
-        auto* item = new QTableWidgetItem(cells[c]);
-        if (c != ColCode && c != ColVerdict)
+        auto* item = new QTableWidgetItem(cells.value(c));
+        if (c == ColDemand || c == ColCapacity || c == ColMargin)
             item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         if (c == ColVerdict) item->setForeground(colour);
-        if (c == ColCode) item->setToolTip(tr("%1, T = %2 s").arg(title).arg(period, 0, 'f', 3));
+        item->setToolTip(tooltip);
         m_table->setItem(row, c, item);
     }
 }
 
 void VerdictPanel::setCodeResults(const std::vector<CodeResult>& results) {
     m_table->setRowCount(static_cast<int>(results.size()));
+    m_codes.clear();
+    m_ids.clear();
     QStringList notes;
     for (int i = 0; i < static_cast<int>(results.size()); ++i) {
         const CodeResult& r = results[static_cast<std::size_t>(i)];
-        setRow(i, r.code, QString::fromStdString(r.title), r.periodSeconds, r.topRatio, tr("…"),
-               tr("…"), tr("press Run"), palette().color(QPalette::PlaceholderText));
+        m_codes << report::shortCodeName(r.code);
+        setRow(
+            i, {QString(), m_codes.back(), fixed(r.topRatio, 3), tr("…"), tr("…"), tr("press Run")},
+            tr("%1, T = %2 s").arg(QString::fromStdString(r.title)).arg(r.periodSeconds, 0, 'f', 3),
+            palette().color(QPalette::PlaceholderText));
         if (r.topRatioWithoutFt)
             notes << tr("%1: %2 with F_t, %3 without (the paper's).")
                          .arg(QString::fromStdString(r.title))
@@ -82,25 +107,52 @@ void VerdictPanel::setCodeResults(const std::vector<CodeResult>& results) {
                          .arg(*r.topRatioWithoutFt, 0, 'f', 3);
     }
     m_note->setText(results.empty() ? tr("No code selected.") : notes.join(QLatin1Char(' ')));
+    m_table->resizeRowsToContents();
 }
 
 void VerdictPanel::setError(const QString& message) {
     m_table->setRowCount(0);
+    m_codes.clear();
+    m_ids.clear();
     m_note->setText(tr("<span style='color:#c0392b'>%1</span>").arg(message.toHtmlEscaped()));
 }
 
-void VerdictPanel::setCheck(const DesignCheckResult& check) {
-    m_table->setRowCount(static_cast<int>(check.codes.size()));
-    for (int i = 0; i < static_cast<int>(check.codes.size()); ++i) {
-        const CodeVerdict& v = check.codes[static_cast<std::size_t>(i)];
-        const bool kinetic = v.verdict == Verdict::KineticInstabilityGoverns;
-        setRow(i, v.code, QString::fromStdString(v.title), v.periodSeconds, v.ratio,
-               v.aCrit ? QString::number(*v.aCrit, 'f', 3) : tr("none ≤ limit"),
-               v.margin ? QString::number(*v.margin, 'f', 2) : tr("—"),
-               QString::fromStdString(kinstab::verdictText(v.verdict)),
-               kinetic ? QColor(192, 57, 43) : QColor(30, 130, 60));
-        m_table->item(i, ColVerdict)->setToolTip(QString::fromStdString(v.explanation));
+void VerdictPanel::setAssessment(const Assessment& a) {
+    m_table->setRowCount(static_cast<int>(a.checks.size()));
+    m_codes.clear();
+    m_ids.clear();
+    for (int i = 0; i < static_cast<int>(a.checks.size()); ++i) {
+        const Check& c = a.checks[static_cast<std::size_t>(i)];
+        const Comparison& x = c.governing();
+        m_codes << report::shortCodeName(c.code);
+        m_ids << QString::fromStdString(c.id);
+        const QString level = c.basis == CheckBasis::Floors && c.code == "asce7_22"
+                                  ? (c.level == CheckLevel::MceR ? tr(" MCE_R") : tr(" design"))
+                                  : QString();
+        setRow(i,
+               {QString::fromStdString(checkBasisName(c.basis)), m_codes.back() + level,
+                fixed(x.demand, 3), x.capacity ? fixed(*x.capacity, 3) : tr("none ≤ limit"),
+                marginText(x), QString::fromStdString(c.verdict)},
+               tr("%1: %2\n%3 against %4 (%5)\nModel: %6\nExcitation: %7")
+                   .arg(m_ids.back(), QString::fromStdString(c.codeTitle),
+                        QString::fromStdString(x.demandName),
+                        QString::fromStdString(x.capacityName), QString::fromStdString(x.intensity),
+                        QString::fromStdString(c.model), QString::fromStdString(c.excitation)),
+               c.holds ? QColor(30, 130, 60) : QColor(192, 57, 43));
+        if (a.governing == static_cast<std::size_t>(i))
+            for (int col = 0; col < Columns; ++col) {
+                QFont f = m_table->item(i, col)->font();
+                f.setBold(true);
+                m_table->item(i, col)->setFont(f);
+            }
     }
+    const Check* g = a.governingCheck();
+    m_note->setText(g ? tr("Governing: %1, margin %2 — %3.")
+                            .arg(QString::fromStdString(g->id), marginText(g->governing()),
+                                 QString::fromStdString(g->verdict))
+                      : tr("No check ran."));
+    m_note->setToolTip(QString::fromStdString(a.governingReason));
+    m_table->resizeRowsToContents();
 }
 
 } // namespace kinstab::ui

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The verdict: per code, the top-floor ratio F_top / w_top, the critical amplitude A_crit at
-// the building's frequency, the margin A_crit / ratio and what governs, in words.
+// The project's assessment (core/assessment): one row per check with its basis, demand,
+// capacity, margin and verdict, the governing check named below the table. Before a run, the
+// code ratios alone. The panel shows what core composed and judges nothing itself.
 
-#include "core/check/DesignCheck.h"
+#include "core/assessment/Assessment.h"
 #include "core/codes/CodeResult.h"
 
 #include <QWidget>
@@ -21,18 +22,21 @@ public:
     // Code ratios alone (A_crit not yet computed), or an error naming the bad input.
     void setCodeResults(const std::vector<CodeResult>& results);
     void setError(const QString& message);
-    void setCheck(const DesignCheckResult& check);
+    void setAssessment(const Assessment& a);
     QString verdictText(int row) const; // for tests
-    QString codeText(int row) const;    // for tests
+    QString codeText(int row) const;    // for tests: the code's short name
+    QString checkText(int row) const;   // for tests: the check's id
+    QString basisText(int row) const;   // for tests
+    QString governingText() const;      // for tests
     int rowCount() const;
 
 private:
-    void setRow(int row, const std::string& code, const QString& title, double period, double ratio,
-                const QString& aCrit, const QString& margin, const QString& verdict,
-                const QColor& colour);
+    void setRow(int row, const QStringList& cells, const QString& tooltip, const QColor& colour);
 
     QTableWidget* m_table;
     QLabel* m_note;
+    QStringList m_codes; // per row, the code's short name
+    QStringList m_ids;   // per row, the check's id
 };
 
 } // namespace kinstab::ui

@@ -5,60 +5,48 @@
 #include "app/cli/ModelFlags.h"
 #include "app/cli/PlanarFlags.h"
 #include "app/cli/RecordFlags.h"
-#include "core/analysis/RunAnalysis.h"
+#include "core/assessment/AssessmentJson.h"
+#include "core/assessment/RunAssessment.h"
+#include "core/io/AtomicFile.h"
 #include "core/io/CaseJson.h"
 #include "core/io/CodesJson.h"
 #include "core/io/JsonText.h"
 #include "core/io/Project.h"
 #include "report/PlanarVertical.h"
 
+#include <unistd.h>
+
 #include <chrono>
-#include <iostream>
 
 namespace kinstab::cli {
 
 namespace {
-AnalysisRequest checkRequest(const Project& p, const std::vector<CodeResult>& codes) {
-    AnalysisRequest request;
-    request.slab = p.slab;
-    request.codes = codes;
-    request.checkSearch = p.critical;
-    return request;
-}
 
-// The model the sine's check runs: the 1-DOF slab (none), or the planar slab of Furgerson 1980
+// The model the sine's checks run: the 1-DOF slab (none), or the planar slab of Furgerson 1980
 // ch. VI with the project's planar settings and its vertical record read. Throws InputError.
 std::optional<PlanarCase> planarModel(const Project& p) {
     if (p.model != ModelKind::Planar) return std::nullopt;
     return ui::projectPlanarCase(p.slab, p.planar);
 }
 
-// A project whose excitation is the enveloped sine: each code against A_crit(1/T) of its model.
-nlohmann::json sineCheckJson(const Project& p, const std::vector<CodeResult>& codes,
-                             const std::optional<PlanarCase>& planar) {
-    AnalysisRequest request = checkRequest(p, codes);
-    request.planar = planar;
-    request.parts.designCheck = true;
+AssessmentRun assess(const Project& p, const std::optional<PlanarCase>& planar) {
     AnalysisControl control;
-    const AnalysisResult r = runAnalysis(request, control);
-    if (r.checkError) std::rethrow_exception(r.checkError);
-    return designCheckJson(*r.check);
-}
-
-// A project whose excitation is a record: each code against the record's critical peak.
-nlohmann::json recordCheckJson(const Project& p, const std::vector<CodeResult>& codes) {
-    AnalysisRequest request = checkRequest(p, codes);
-    request.record = p.record;
-    request.parts.recordCheck = true;
-    RecordAnalysis a;
     try {
-        AnalysisControl control;
-        a = *runAnalysis(request, control).record;
+        return runAssessment(p, planar, control);
     } catch (const RecordError& e) {
         throw UsageError("excitation.record.file = '" + p.record->file + "': " + e.what());
+    } catch (const InputError&) {
+        throw;
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
+}
+
+// The per-basis figures kept from before the assessment (keys are never renamed): "codes" holds
+// the record's verdicts for a record project, the sine's otherwise.
+nlohmann::json detailJson(const Project& p, const AssessmentRun& run) {
+    if (!run.record) return designCheckJson(*run.parts.sine);
+    const RecordAnalysis& a = *run.record;
     nlohmann::json j = designCheckJson(DesignCheckResult{a.verdicts, a.critical->runs});
     j["record"] = accelerogramJson(a.ground);
     j["floor_filter"] = p.record->floor ? floorFilterJson(*p.record->floor) : nlohmann::json();
@@ -67,13 +55,18 @@ nlohmann::json recordCheckJson(const Project& p, const std::vector<CodeResult>& 
     j["outcome"] = outcomeName(a.run.outcome);
     return j;
 }
+
 } // namespace
 
-// The design check of chapter V for a project: per code the top-floor ratio, A_crit(1/T) of the
-// project's model (or the critical peak of the project's record), the margin and the verdict.
+// The project's assessment (core/assessment): every check the project implies (the sine's or
+// planar model's A_crit(1/T), the record's critical peak, the floors' critical ground PGA), each
+// with its margin and verdict, and the governing one. JSON when piped (the assessment under
+// "assessment"), a table on a terminal; --format chooses.
 int runCheck(const ArgList& argv) {
-    const Args args(argv, {"project"});
+    const Args args(argv, {"project", "format"});
     if (!args.has("project")) throw UsageError("missing required flag --project");
+    const std::string format =
+        args.choice("format", {"json", "table"}, isatty(STDOUT_FILENO) ? "table" : "json");
     const Project p = projectFromFlag(args);
     if (p.codes.empty())
         throw UsageError("--project " + args.text("project") + ": the project selects no code");
@@ -84,13 +77,19 @@ int runCheck(const ArgList& argv) {
     const auto start = std::chrono::steady_clock::now();
     nlohmann::json j;
     std::optional<PlanarCase> planar;
+    AssessmentRun run;
     try {
-        const std::vector<CodeResult> codes = kinstab::runCodes(p.building, p.codes);
         planar = planarModel(p);
-        j = p.record ? recordCheckJson(p, codes) : sineCheckJson(p, codes, planar);
+        run = assess(p, planar);
     } catch (const InputError& e) {
         throw inputUsageError(e);
     }
+    if (format == "table") {
+        writeStandardOutput(p.name + "\n\n" + assessmentTable(run.assessment));
+        return 0;
+    }
+    j = detailJson(p, run);
+    j["assessment"] = assessmentJson(run.assessment);
     j["project"] = p.name;
     if (planar) {
         j.update(planarCaseJson(*planar)); // model, solver, envelope, mu, t*, the planar inputs
@@ -106,7 +105,7 @@ int runCheck(const ArgList& argv) {
                    {"tolerance", p.critical.tolerance}};
     j["wall_time_s"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << jsonText(j, 2) << "\n";
+    writeStandardOutput(jsonText(j, 2) + "\n");
     return 0;
 }
 

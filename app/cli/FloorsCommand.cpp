@@ -8,13 +8,15 @@
 #include "app/cli/BuildingFlags.h"
 #include "app/cli/Commands.h"
 #include "app/cli/RecordFlags.h"
+#include "core/assessment/AssessmentJson.h"
+#include "core/assessment/RunAssessment.h"
 #include "core/building/FloorAnalysis.h"
+#include "core/io/AtomicFile.h"
 #include "core/io/FloorsJson.h"
 #include "core/io/JsonText.h"
 #include "core/io/Project.h"
 
 #include <chrono>
-#include <iostream>
 
 namespace kinstab::cli {
 
@@ -78,6 +80,13 @@ int runFloors(const ArgList& argv) {
         throw UsageError(e.what());
     }
     nlohmann::json j = floorAnalysisJson(a, p.building);
+    // The floor checks at the slab's level, as the project's assessment states them (check).
+    Project asRun = p;
+    asRun.floors = in.settings;
+    AssessmentParts parts;
+    parts.floors = floorCheckParts(a, p.building.stories);
+    parts.recordName = in.ground.name;
+    j["checks"] = assessmentJson(composeAssessment(asRun, parts))["checks"];
     j["project"] = p.name;
     j["record"] = accelerogramJson(in.ground);
     j["stiffness"] = stiffnessName(in.settings.stiffness);
@@ -85,7 +94,7 @@ int runFloors(const ArgList& argv) {
     j["wall_time_s"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (args.has("history-csv")) writeOutput(args, "history-csv", floorHistoryCsv(a, in.ground));
-    std::cout << jsonText(j, 2) << "\n";
+    writeStandardOutput(jsonText(j, 2) + "\n");
     return 0;
 }
 

@@ -57,15 +57,6 @@ FloorAnalysis analyseFloors(const FloorAnalysisInput& in, SweepControl* control)
     a.critical = levelCriticalPga(in.slab, a.motions, a.pga, in.search, control);
     a.cancelled = control && control->isCancelled();
     if (a.cancelled) return a;
-    const LevelCritical& atSlab = a.critical[static_cast<std::size_t>(a.slabLevel - 1)];
-    for (const FloorDemand& d : a.demands)
-        a.verdicts.push_back(judgeFloorDemand(d, atSlab.criticalFloorPeak, in.search.to));
-    const CriticalResult sine = criticalAmplitude(slab1DPoint(in.slab), 1.0 / a.building.period,
-                                                  in.slab.slab.mu, in.search);
-    a.sineACrit = sine.amplitude;
-    for (const FloorDemand& d : a.demands)
-        a.sineVerdicts.push_back(
-            judgeFloorDemand(d, a.sineACrit, in.search.to, "A_crit(1/T) of the enveloped sine"));
     return a;
 }
 

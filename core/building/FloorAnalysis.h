@@ -3,9 +3,9 @@
 // The floor-motion check of a project, shared by `kinstab-cli floors`, the GUI's Floors view and
 // the report: the shear-building model of the building, every level's motion under a ground
 // record, the codes' floor-acceleration demands (ASCE 7-22 §13.3.1, EN 1998-1 §4.3.5.2) per
-// level, the critical PGA per level, the verdict of each demand at the slab's level and, for
-// comparison at the roof, the paper's SDOF floor filter (period T, the same damping). The
-// demands are also judged against the paper's A_crit(1/T) of the slab's enveloped sine.
+// level, the critical PGA per level, and, for
+// comparison at the roof, the paper's SDOF floor filter (period T, the same damping). The checks
+// at the slab's level are the assessment's (core/assessment/Assessment.h: floors.CODE.LEVEL).
 
 #include "core/building/FloorMotions.h"
 #include "core/building/FloorSettings.h"
@@ -38,12 +38,8 @@ struct FloorAnalysis {
     int slabLevel = 0;                   // 1-based
     std::vector<FloorDemand> demands;    // asce7_22, asce7_22_mce, ec8 (those the codes select)
     std::vector<LevelCritical> critical; // per level when searched
-    std::vector<FloorVerdict> verdicts;  // each demand against the record's critical floor peak
-    // The paper's A_crit(1/T) of the enveloped sine (chapter V) and each demand against it.
-    std::optional<double> sineACrit;
-    std::vector<FloorVerdict> sineVerdicts;
-    double sdofRoofPeak = 0; // g, the floor filter's (T, damping) peak
-    double damping = 0.05;   // modal damping used (and the filter's)
+    double sdofRoofPeak = 0;             // g, the floor filter's (T, damping) peak
+    double damping = 0.05;               // modal damping used (and the filter's)
     bool cancelled = false;
 };
 

@@ -37,6 +37,8 @@ FloorDemand asce7FloorDemand(const Building& b, const Asce7Inputs& in, double om
     }
     const auto at = static_cast<std::size_t>(slabLevel - 1);
     d.slabPfa = d.pfa[at];
+    d.groundPga = 0.4 * s;
+    d.groundPgaSource = mce ? "0.4 S_MS" : "0.4 S_DS";
     d.trail = {
         {"approximate period", "T_a", ta, "§12.8.2.1 eq. 12.8-7, Table 12.8-2"},
         {"height coefficient", "a_1", std::min(1.0 / ta, 2.5), "eq. 13.3-4: 1/T_a <= 2.5"},

@@ -32,6 +32,8 @@ FloorDemand ec8FloorDemand(const Building& b, const Eurocode8Inputs& in,
     }
     const auto at = static_cast<std::size_t>(slabLevel - 1);
     d.slabPfa = d.pfa[at];
+    d.groundPga = alpha * p.s;
+    d.groundPgaSource = "alpha S";
     d.trail = {
         {"reference peak ground acceleration", "a_gR", in.agr, "§3.2.1 (entered)"},
         {"importance factor", "gamma_I", gammaI, in.gammaI ? "§4.2.5 (entered)" : "§4.2.5(5)P"},

@@ -56,16 +56,6 @@ json demandJson(const FloorDemand& d) {
             {"slab_pfa_g", d.slabPfa}, {"trail", trail},   {"notes", d.notes}};
 }
 
-json verdictJson(const FloorVerdict& v) {
-    return {{"code", v.code},
-            {"title", v.title},
-            {"demand_g", v.demand},
-            {"critical_g", orNull(v.critical)},
-            {"margin", orNull(v.margin)},
-            {"verdict", verdictText(v.verdict)},
-            {"explanation", v.explanation}};
-}
-
 json levelJson(const FloorAnalysis& a, const Building& b, std::size_t i) {
     const auto at = [&](const char* code, bool factor) {
         const FloorDemand* d = demandOf(a, code);
@@ -96,13 +86,9 @@ json floorAnalysisJson(const FloorAnalysis& a, const Building& b) {
     json levels = json::array();
     for (std::size_t i = 0; i < a.pfa.size(); ++i)
         levels.push_back(levelJson(a, b, i));
-    json demands = json::array(), verdicts = json::array(), sine = json::array();
+    json demands = json::array();
     for (const FloorDemand& d : a.demands)
         demands.push_back(demandJson(d));
-    for (const FloorVerdict& v : a.verdicts)
-        verdicts.push_back(verdictJson(v));
-    for (const FloorVerdict& v : a.sineVerdicts)
-        sine.push_back(verdictJson(v));
     const FloorDemand* asce = demandOf(a, "asce7_22");
     long runs = 0;
     for (const LevelCritical& l : a.critical)
@@ -116,9 +102,6 @@ json floorAnalysisJson(const FloorAnalysis& a, const Building& b) {
             {"levels", levels},
             {"sdof_roof", {{"pfa_g", a.sdofRoofPeak}, {"pfa_over_pga", a.sdofRoofPeak / a.pga}}},
             {"demands", demands},
-            {"verdicts", verdicts},
-            {"enveloped_sine_a_crit_g", orNull(a.sineACrit)},
-            {"enveloped_sine_verdicts", sine},
             {"runs", runs}};
 }
 

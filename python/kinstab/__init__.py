@@ -203,3 +203,12 @@ def codes(building: dict, **code_inputs: dict) -> dict:
     ec8={...})``. Returns one dict per code: base shear coefficient, period, top ratio, story
     forces and the ``trail`` of every coefficient with its clause."""
     return json.loads(_core._codes_json(json.dumps(building), json.dumps(code_inputs)))
+
+
+def assess(path: str) -> dict:
+    """The assessment of a project file: every check the project implies, each with its id
+    (``sine.ubc1976``, ``record.atc306``, ``floors.asce7_22.mce_r``, ...), what it compares
+    (demand and capacity in one intensity), its margin and verdict, and the governing check.
+    The same dictionary as ``kinstab-cli check --project PATH``'s ``"assessment"``; a bad field
+    raises ValueError naming it."""
+    return json.loads(_core._assess_json(str(path)))

@@ -14,5 +14,6 @@ void bindRecords(pybind11::module_& m);  // read_record, floor_filter, simulate_
 void bindCodes(pybind11::module_& m);    // codes: the building-code force ratios
 void bindFriction(pybind11::module_& m); // calibrate: the friction law of ch. III
 void bindStudy(pybind11::module_& m);    // study_case_count, study_rows (the Dask driver)
+void bindAssess(pybind11::module_& m);   // assess: a project's assessment
 
 } // namespace kinstab::python

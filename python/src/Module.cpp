@@ -15,4 +15,5 @@ PYBIND11_MODULE(_core, m) {
     kinstab::python::bindCodes(m);
     kinstab::python::bindFriction(m);
     kinstab::python::bindStudy(m);
+    kinstab::python::bindAssess(m);
 }

@@ -76,15 +76,17 @@ void TestCliFloors::paperBuildingUnderPacoima() {
     QVERIFY(std::abs(top["asce7_22_pfa_g"].toDouble() - 0.70421) < 5e-5);
     QVERIFY(std::abs(top["ec8_pfa_g"].toDouble() - 0.71875) < 1e-12);
     QCOMPARE(j["slab_level"].toInt(), 16);
-    QCOMPARE(j["verdicts"].toArray().size(), 3);
+    QCOMPARE(j["checks"].toArray().size(), 3);
     QVERIFY(j["sdof_roof"].toObject()["pfa_g"].toDouble() > 0);
-    // The paper's A_crit(1 Hz) = 0.979 g (moderate envelope, mu = 0.6; chapter V design check),
-    // against which the ASCE 7-22 roof demand 0.70421 g leaves a margin of 1.39.
-    const double aCrit = j["enveloped_sine_a_crit_g"].toDouble();
-    QVERIFY(std::abs(aCrit - 0.979) < 0.0005);
-    const QJsonObject asce = j["enveloped_sine_verdicts"].toArray()[0].toObject();
-    QVERIFY(std::abs(asce["margin"].toDouble() - aCrit / 0.70421) < 1e-4);
-    QCOMPARE(asce["verdict"].toString(), QString("overstress governs"));
+    // The floor checks of the assessment: the code formula's roof demand 0.70421 g against the
+    // roof's critical floor peak, and 0.4 S_DS = 0.4 g (S_DS = 1.0) against the critical PGA.
+    const QJsonObject asce = j["checks"].toArray()[0].toObject();
+    QCOMPARE(asce["id"].toString(), QString("floors.asce7_22.design"));
+    const QJsonArray cmp = asce["comparisons"].toArray();
+    QVERIFY(std::abs(cmp[0].toObject()["demand"].toDouble() - 0.4) < 1e-12);
+    QCOMPARE(cmp[0].toObject()["capacity"].toDouble(), top["critical_pga_g"].toDouble());
+    QVERIFY(std::abs(cmp[1].toObject()["demand"].toDouble() - 0.70421) < 5e-5);
+    QCOMPARE(cmp[1].toObject()["capacity"].toDouble(), top["critical_floor_peak_g"].toDouble());
 }
 
 void TestCliFloors::exampleProjectAndHistoryCsv() {
@@ -103,7 +105,7 @@ void TestCliFloors::exampleProjectAndHistoryCsv() {
     QCOMPARE(j["stiffness"].toString(), QString("weight"));
     QCOMPARE(j["damping"].toDouble(), 0.05);
     QVERIFY(j["levels"].toArray()[7].toObject()["critical_pga_g"].isNull()); // --no-critical
-    QVERIFY(j["verdicts"].toArray().isEmpty());
+    QVERIFY(j["checks"].toArray().isEmpty());
     QFile f(csv);
     QVERIFY(f.open(QIODevice::ReadOnly));
     const QList<QByteArray> lines = f.readAll().split('\n');
@@ -144,7 +146,7 @@ void TestCliFloors::reportHasTheSection() {
     QCOMPARE(cli({"report", "--project", kFloors, "-o", pdf, "--figure-grid", "5"}).code, 0);
     const QString text = run("pdftotext", {"-layout", pdf, "-"}).out;
     QVERIFY(text.contains("Floor motions and today"));
-    QVERIFY(text.contains("Verdicts at the slab's level"));
+    QVERIFY(text.contains("Floor checks at the slab's level"));
     QVERIFY(text.contains("ASCE/SEI 7-22 §13.3.1, MCE_R level"));
     QVERIFY(text.contains("0.704")); // ASCE design PFA at the roof (tst_floors_demand)
     QCOMPARE(cli({"report", "--project", kPaper, "-o", plain, "--figure-grid", "5"}).code, 0);

@@ -30,6 +30,10 @@
 // residual dx in 10 by 1.8e-9 (now 7e-12 from the value at rtol 1e-13, was 2.6e-10) and its
 // max |dx|, a cubic interpolant's peak inside an explicit step, by 5.1e-7 (now 3.4e-7 from the
 // value at rtol 1e-13, was 7.5e-7); the steps fell from 559 to 362.
+// Issue 30 added keys and changed none: 06, 07 and 08 gained "assessment" (every value that was
+// there before is bit-identical); 12 gained "checks" (the assessment's floor checks) and lost
+// "verdicts", "enveloped_sine_a_crit_g" and "enveloped_sine_verdicts", the floor verdicts that
+// contradicted the assessment.
 
 #include <QDir>
 #include <QFile>

@@ -5,6 +5,7 @@
 // first collapsing PGA of the scan must lie within one step above the searched critical PGA.
 // Also: the analysis ties the verdicts to the slab's level.
 
+#include "core/assessment/RunAssessment.h"
 #include "core/building/FloorAnalysis.h"
 #include "core/io/Project.h"
 #include "core/records/RecordReader.h"
@@ -89,19 +90,29 @@ void TestFloorsCritical::analysisVerdictsAtTheSlabLevel() {
     const FloorAnalysis a = analyseFloors(in);
     QCOMPARE(a.slabLevel, 2);
     QCOMPARE(a.demands.size(), std::size_t(3));
-    QCOMPARE(a.verdicts.size(), std::size_t(3));
     QCOMPARE(a.critical.size(), std::size_t(3));
+    // The assessment's floor checks (core/assessment) compare at the slab's level: the code's
+    // PFA there against the level's critical floor peak, and the code level's ground motion
+    // against the level's critical PGA.
+    Project p;
+    p.building = in.building;
+    p.codes = in.codes;
+    p.floors = in.settings;
+    AssessmentParts parts;
+    parts.floors = floorCheckParts(a, in.building.stories);
+    QVERIFY(parts.floors);
+    QCOMPARE(parts.floors->atSlab.level, 2);
+    const Assessment checks = composeAssessment(p, parts);
+    QCOMPARE(checks.checks.size(), std::size_t(3));
     for (std::size_t i = 0; i < 3; ++i) {
         QCOMPARE(a.demands[i].slabLevel, 2);
-        QCOMPARE(a.verdicts[i].demand, a.demands[i].pfa[1]);
-        QCOMPARE(a.verdicts[i].critical, a.critical[1].criticalFloorPeak);
-        const bool stable = a.verdicts[i].demand < *a.verdicts[i].critical;
-        QCOMPARE(a.verdicts[i].verdict,
-                 stable ? Verdict::OverstressGoverns : Verdict::KineticInstabilityGoverns);
+        const Check& c = checks.checks[i];
+        QCOMPARE(c.comparisons[0].demand, a.demands[i].groundPga);
+        QCOMPARE(c.comparisons[0].capacity, a.critical[1].criticalPga);
+        QCOMPARE(c.comparisons[1].demand, a.demands[i].pfa[1]);
+        QCOMPARE(c.comparisons[1].capacity, a.critical[1].criticalFloorPeak);
+        QCOMPARE(c.holds, c.comparisons[0].holds() && c.comparisons[1].holds());
     }
-    QCOMPARE(a.sineVerdicts.size(), std::size_t(3));
-    QVERIFY(a.sineACrit);
-    QCOMPARE(a.sineVerdicts[2].critical, a.sineACrit);
     // The SDOF filter at T and the model's roof both respond to the same record.
     QVERIFY(a.sdofRoofPeak > 0.0 && a.pfa.back() > 0.0);
 }

@@ -37,7 +37,7 @@ private slots:
     void asce7PaperBuilding();
     void ec8Factor();
     void ec8PaperBuilding();
-    void verdictAndBadInput();
+    void groundLevelAndBadInput();
 };
 
 void TestFloorsDemand::heightFactorWorkedValues() {
@@ -93,16 +93,19 @@ void TestFloorsDemand::ec8PaperBuilding() {
     QVERIFY(near(tuned.slabPfa, 0.2875 * 5.5, 1e-12));
 }
 
-void TestFloorsDemand::verdictAndBadInput() {
-    FloorDemand d;
-    d.code = "ec8";
-    d.slabLevel = 16;
-    d.slabPfa = 0.5;
-    const FloorVerdict stable = judgeFloorDemand(d, 0.8, 5.0);
-    QCOMPARE(stable.verdict, Verdict::OverstressGoverns);
-    QVERIFY(near(*stable.margin, 1.6, 1e-15));
-    QCOMPARE(judgeFloorDemand(d, 0.4, 5.0).verdict, Verdict::KineticInstabilityGoverns);
-    QCOMPARE(judgeFloorDemand(d, std::nullopt, 5.0).verdict, Verdict::OverstressGoverns);
+void TestFloorsDemand::groundLevelAndBadInput() {
+    // The ground acceleration each code level implies, the same expressions at grade: ASCE 7-22
+    // 0.4 S_DS (H_f = 1, R_mu = 1 at grade, §13.3.1.1) and 0.4 S_MS = 0.6 S_DS; EN 1998-1
+    // alpha S = 0.25 x 1.15 (the factor of eq. 4.25 is 1 at z = 0 for a rigid element).
+    const Asce7Inputs asce;
+    const FloorDemand design = asce7FloorDemand(paperBuilding(), asce, 2.5, 16, false);
+    const FloorDemand mce = asce7FloorDemand(paperBuilding(), asce, 2.5, 16, true);
+    QVERIFY(near(design.groundPga, 0.4 * asce.sds, 1e-15));
+    QVERIFY(near(mce.groundPga, 0.6 * asce.sds, 1e-15));
+    QCOMPARE(mce.groundPgaSource, std::string("0.4 S_MS"));
+    const FloorDemand ec8 = ec8FloorDemand(paperBuilding(), Eurocode8Inputs{}, std::nullopt, 16);
+    QVERIFY(near(ec8.groundPga, 0.2875, 1e-15));
+    QVERIFY(near(ec8.groundPga, ec8.pfa.front() / ec8.factor.front(), 1e-15));
     QVERIFY_THROWS_EXCEPTION(InputError,
                              asce7FloorDemand(paperBuilding(), Asce7Inputs{}, 2.5, 17, false));
     try {

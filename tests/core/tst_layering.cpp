@@ -19,10 +19,10 @@ namespace fs = std::filesystem;
 namespace {
 
 // Bottom floor first. io/ reads and writes every file, the study file and the project's study
-// included, so it sits on top.
+// included; assessment/ composes a project's checks from everything below, so it sits on top.
 const std::vector<std::string> kCoreFloors = {
-    "base",      "numerics", "records", "codes",    "friction", "excitation", "slab",
-    "precision", "sweep",    "check",   "building", "analysis", "study",      "io"};
+    "base",  "numerics", "records",  "codes",    "friction", "excitation", "slab",      "precision",
+    "sweep", "check",    "building", "analysis", "study",    "io",         "assessment"};
 
 struct Finding {
     std::vector<std::string> upward;     // "core/a/X.h includes core/b/Y.h (floor b above a)"

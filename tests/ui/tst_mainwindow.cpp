@@ -97,6 +97,11 @@ private slots:
         QCOMPARE(w->verdictPanel()->rowCount(), 4);
         for (int row = 0; row < 2; ++row)
             QCOMPARE(w->verdictPanel()->verdictText(row), QStringLiteral("overstress governs"));
+        // The assessment's sine checks, governed by ATC 3-06's (the largest ratio, 0.275).
+        QCOMPARE(w->verdictPanel()->basisText(0), QStringLiteral("sine"));
+        QCOMPARE(w->verdictPanel()->checkText(1), QStringLiteral("sine.atc306"));
+        QVERIFY2(w->verdictPanel()->governingText().startsWith("Governing: sine.atc306"),
+                 qPrintable(w->verdictPanel()->governingText()));
         const auto& codes = w->surfaceView()->overlays().codes;
         QCOMPARE(codes.size(), std::size_t(4));
         QVERIFY(w->lastCheck().has_value());

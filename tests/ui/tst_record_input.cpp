@@ -89,6 +89,10 @@ private slots:
         // The paper's building: the code ratios are far below the record's critical peak.
         QVERIFY(w->verdictPanel()->rowCount() > 0);
         QCOMPARE(w->verdictPanel()->verdictText(0), QString("overstress governs"));
+        // The rows are the assessment's record checks (core/assessment), with their basis.
+        QCOMPARE(w->verdictPanel()->basisText(0), QString("record"));
+        QCOMPARE(w->verdictPanel()->checkText(0), QString("record.ubc1976"));
+        QVERIFY(w->verdictPanel()->governingText().startsWith("Governing: record."));
         // The surface tab says why it is empty, and stops saying so for the sine.
         QVERIFY(w->surfaceView()->notice().contains("no γc(A, f) surface"));
         w->excitationPanel()->findChild<QComboBox*>("excitationSource")->setCurrentIndex(0);

@@ -1,0 +1,221 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/assessment/Assessment.h"
+
+#include "core/base/TextInput.h"
+#include "core/codes/CodeCatalog.h"
+#include "core/io/Project.h"
+
+#include <locale>
+#include <sstream>
+
+namespace kinstab {
+
+namespace {
+
+std::string g(double x) {
+    std::ostringstream s;
+    s.imbue(std::locale::classic());
+    s.precision(4);
+    s << x;
+    return s.str();
+}
+
+std::string verticalText(const PlanarSettings& s) {
+    switch (s.vertical) {
+    case VerticalSource::None:
+        return "no vertical motion (gravity only)";
+    case VerticalSource::Rsn68Up:
+        return "vertical motion RSN68 UP";
+    case VerticalSource::File:
+        return "vertical motion from " + s.verticalPath;
+    }
+    return {};
+}
+
+// The paper's words at the design level (ch. V: which limit the code's force reaches first);
+// at MCE_R, and for the floor checks, whether the slab stays on its walls.
+std::string verdictWords(CheckBasis basis, CheckLevel level, bool holds) {
+    if (basis != CheckBasis::Floors)
+        return verdictText(holds ? Verdict::OverstressGoverns : Verdict::KineticInstabilityGoverns);
+    const std::string at = level == CheckLevel::MceR ? "at the MCE_R level" : "at the design level";
+    return (holds ? "slab stays seated " : "slab slides off ") + at;
+}
+
+// The first comparison is the check's own; another governs only where it disagrees, i.e. does
+// not hold while the first does (then the failing one with the smallest margin). So the
+// margin follows the first comparison wherever the verdicts agree, and the verdict is the
+// more cautious one where they do not.
+void finish(Check& c) {
+    c.holds = true;
+    c.governingComparison = 0;
+    for (std::size_t k = 0; k < c.comparisons.size(); ++k) {
+        const Comparison& x = c.comparisons[k];
+        c.holds = c.holds && x.holds();
+        const Comparison& g = c.comparisons[c.governingComparison];
+        if (!x.holds() && (g.holds() || x.orderingMargin() < g.orderingMargin()))
+            c.governingComparison = k;
+    }
+    c.verdict = verdictWords(c.basis, c.level, c.holds);
+}
+
+// A code's top-floor ratio against a critical top-floor peak (sine, planar or record).
+Check codeRatioCheck(CheckBasis basis, const CodeVerdict& v, const std::string& model,
+                     const std::string& excitation, const std::string& capacityName,
+                     double searchLimit) {
+    Check c;
+    c.basis = basis;
+    c.code = v.code;
+    c.codeTitle = v.title;
+    c.id = checkBasisName(basis) + "." + v.code;
+    c.model = model;
+    c.excitation = excitation;
+    Comparison x;
+    x.intensity = "floor peak acceleration";
+    x.unit = "g";
+    x.demandName = "F_top/w_top";
+    x.demand = v.ratio;
+    x.capacityName = capacityName;
+    x.capacity = v.aCrit;
+    x.searchLimit = searchLimit;
+    x.margin = v.margin;
+    c.comparisons.push_back(x);
+    finish(c);
+    return c;
+}
+
+std::string levelSuffix(const FloorDemand& d) {
+    if (d.code == "asce7_22_mce") return "asce7_22.mce_r";
+    if (d.code == "asce7_22") return "asce7_22.design";
+    return d.code;
+}
+
+std::string floorModelText(const Project& p, const FloorCheckParts& f) {
+    const FloorSettings s = p.floors.value_or(FloorSettings{});
+    return slabModelText(p, ModelKind::Slab1D) + " on level " + std::to_string(f.atSlab.level) +
+           " of " + std::to_string(f.stories) + " of the shear-building model (" +
+           stiffnessName(s.stiffness) + " storey stiffness, " + g(100 * s.damping) +
+           " % damping in every mode)";
+}
+
+Check floorCheck(const Project& p, const FloorCheckParts& f, const FloorDemand& d,
+                 const std::string& recordName, double searchLimit) {
+    Check c;
+    c.basis = CheckBasis::Floors;
+    c.code = d.code == "asce7_22_mce" ? "asce7_22" : d.code;
+    c.codeTitle = d.title;
+    c.level = d.code == "asce7_22_mce" ? CheckLevel::MceR : CheckLevel::Design;
+    c.id = "floors." + levelSuffix(d);
+    c.model = floorModelText(p, f);
+    c.excitation = "ground record " + recordName + " scaled to the code level's ground motion";
+    const std::string level = "level " + std::to_string(f.atSlab.level);
+    // The building model: the ground motion the code level implies against the ground PGA at
+    // which the slab falls. Both are ground intensities, so the margin falls whenever the slab
+    // falls at a lower ground intensity, whatever the floor amplification.
+    Comparison ground;
+    ground.intensity = "ground PGA";
+    ground.unit = "g";
+    ground.demandName = d.groundPgaSource;
+    ground.demand = d.groundPga;
+    ground.capacityName = "critical ground PGA, slab on " + level;
+    ground.capacity = f.atSlab.criticalPga;
+    ground.searchLimit = f.atSlab.floorPeak > 0 ? searchLimit * f.pga / f.atSlab.floorPeak : 0;
+    if (ground.capacity && ground.demand > 0) ground.margin = *ground.capacity / ground.demand;
+    // The code's own floor formula: its peak floor acceleration at the slab's level against
+    // the critical floor peak there.
+    Comparison formula;
+    formula.intensity = "floor peak acceleration, " + level;
+    formula.unit = "g";
+    formula.demandName = "PFA of " + d.title;
+    formula.demand = d.slabPfa;
+    formula.capacityName = "critical floor peak, " + level;
+    formula.capacity = f.atSlab.criticalFloorPeak;
+    formula.searchLimit = searchLimit;
+    if (formula.capacity && formula.demand > 0) formula.margin = *formula.capacity / formula.demand;
+    c.comparisons = {ground, formula};
+    finish(c);
+    return c;
+}
+
+void pickGoverning(Assessment& a) {
+    for (std::size_t k = 0; k < a.checks.size(); ++k)
+        if (!a.governing || a.checks[k].governing().orderingMargin() <
+                                a.checks[*a.governing].governing().orderingMargin())
+            a.governing = k;
+    if (!a.governing) return;
+    const Check& c = a.checks[*a.governing];
+    const Comparison& x = c.governing();
+    std::ostringstream s;
+    s.imbue(std::locale::classic());
+    s << "the smallest margin of the " << a.checks.size() << " checks: ";
+    if (x.margin)
+        s << x.capacityName << " = " << g(*x.capacity) << " " << x.unit << " against "
+          << x.demandName << " = " << g(x.demand) << " " << x.unit;
+    else
+        s << "no collapse up to the search limit (" << g(x.searchLimit) << " " << x.unit
+          << "), margin above " << g(x.orderingMargin());
+    a.governingReason = s.str();
+}
+
+} // namespace
+
+std::string slabModelText(const Project& p, ModelKind model) {
+    const std::string common =
+        "mu = " + g(p.slab.slab.mu) + ", t* = " + g(p.slab.tstar) + " s, exact solver";
+    if (model == ModelKind::Planar)
+        return "planar 2-DOF slab (Furgerson 1980 ch. VI), " + common +
+               ", f_y = " + g(p.planar.fyHz) + " Hz, A_y/A_x = " + g(p.planar.ayRatio) +
+               ", theta = " + g(p.planar.theta) + ", " + verticalText(p.planar);
+    return "1-DOF slab (Furgerson 1980 ch. IV), " + common;
+}
+
+std::string sineExcitationText(const Project& p) {
+    return "enveloped sine '" + p.slab.envelope.name() + "' (alpha = " + g(p.slab.envelope.alpha) +
+           "/s, beta = " + g(p.slab.envelope.beta) + "/s) at the building frequency f = 1/T";
+}
+
+std::string recordExcitationText(const Project& p, const std::string& recordName) {
+    if (!p.record) return {};
+    const RecordExcitation& e = *p.record;
+    std::string s = "record " + recordName;
+    if (e.floor)
+        s += " through the floor filter (T = " + g(e.floor->period) +
+             " s, zeta = " + g(e.floor->damping) + ")";
+    else
+        s += " driving the slab directly";
+    return s + ", scaled to its critical peak";
+}
+
+bool hasBasis(const Assessment& a, CheckBasis b) {
+    for (const Check& c : a.checks)
+        if (c.basis == b) return true;
+    return false;
+}
+
+Assessment composeAssessment(const Project& p, const AssessmentParts& parts) {
+    Assessment a;
+    const double limit = p.critical.to;
+    if (parts.sine) {
+        const bool planar = p.model == ModelKind::Planar;
+        const CheckBasis basis = planar ? CheckBasis::Planar : CheckBasis::Sine;
+        for (const CodeVerdict& v : parts.sine->codes)
+            a.checks.push_back(
+                codeRatioCheck(basis, v, slabModelText(p, p.model), sineExcitationText(p),
+                               "A_crit(f) at f = 1/T = " + g(v.frequencyHz) + " Hz", limit));
+    }
+    if (parts.record)
+        for (const CodeVerdict& v : *parts.record)
+            a.checks.push_back(codeRatioCheck(CheckBasis::Record, v,
+                                              slabModelText(p, ModelKind::Slab1D),
+                                              recordExcitationText(p, parts.recordName),
+                                              "critical peak of the record's motion", limit));
+    if (parts.floors)
+        for (const FloorDemand& d : parts.floors->demands)
+            a.checks.push_back(floorCheck(p, *parts.floors, d, parts.recordName, limit));
+    else if (p.floors && !p.record)
+        a.notes.push_back("floors: the project's floor check needs a ground record "
+                          "(excitation.record); none ran");
+    pickGoverning(a);
+    return a;
+}
+
+} // namespace kinstab

@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/assessment/AssessmentJson.h"
+
+#include <iomanip>
+#include <locale>
+#include <sstream>
+
+namespace kinstab {
+
+namespace {
+
+nlohmann::json optionalNumber(const std::optional<double>& x) {
+    return x ? nlohmann::json(*x) : nlohmann::json();
+}
+
+nlohmann::json comparisonJson(const Comparison& x) {
+    return {{"intensity", x.intensity},
+            {"unit", x.unit},
+            {"demand_name", x.demandName},
+            {"demand", x.demand},
+            {"capacity_name", x.capacityName},
+            {"capacity", optionalNumber(x.capacity)},
+            {"search_limit", x.searchLimit},
+            {"margin", optionalNumber(x.margin)},
+            {"margin_at_least", x.margin ? nlohmann::json() : nlohmann::json(x.orderingMargin())},
+            {"holds", x.holds()}};
+}
+
+nlohmann::json checkJson(const Check& c) {
+    nlohmann::json j = {{"id", c.id},
+                        {"basis", checkBasisName(c.basis)},
+                        {"code", c.code},
+                        {"code_title", c.codeTitle},
+                        {"level", checkLevelName(c.level)},
+                        {"model", c.model},
+                        {"excitation", c.excitation}};
+    j.update(comparisonJson(c.governing())); // the check's own figures: its governing comparison
+    j["holds"] = c.holds;
+    j["verdict"] = c.verdict;
+    nlohmann::json all = nlohmann::json::array();
+    for (const Comparison& x : c.comparisons)
+        all.push_back(comparisonJson(x));
+    j["comparisons"] = all;
+    return j;
+}
+
+std::string fixed(double x, int digits) {
+    std::ostringstream s;
+    s.imbue(std::locale::classic());
+    s << std::fixed << std::setprecision(digits) << x;
+    return s.str();
+}
+
+std::string marginText(const Comparison& x) {
+    return x.margin ? fixed(*x.margin, 2) : "> " + fixed(x.orderingMargin(), 2);
+}
+
+} // namespace
+
+nlohmann::json assessmentJson(const Assessment& a) {
+    nlohmann::json checks = nlohmann::json::array();
+    for (const Check& c : a.checks)
+        checks.push_back(checkJson(c));
+    nlohmann::json governing;
+    if (const Check* c = a.governingCheck())
+        governing = {{"id", c->id},
+                     {"margin", optionalNumber(c->governing().margin)},
+                     {"margin_at_least", c->governing().margin
+                                             ? nlohmann::json()
+                                             : nlohmann::json(c->governing().orderingMargin())},
+                     {"holds", c->holds},
+                     {"verdict", c->verdict},
+                     {"reason", a.governingReason}};
+    return {{"checks", checks}, {"governing", governing}, {"notes", a.notes}};
+}
+
+std::string assessmentTable(const Assessment& a) {
+    std::ostringstream s;
+    s.imbue(std::locale::classic());
+    s << std::left << std::setw(24) << "check" << std::setw(10) << "demand" << std::setw(10)
+      << "capacity" << std::setw(9) << "margin"
+      << "verdict\n";
+    for (const Check& c : a.checks) {
+        const Comparison& x = c.governing();
+        s << std::setw(24) << c.id << std::setw(10) << fixed(x.demand, 3) << std::setw(10)
+          << (x.capacity ? fixed(*x.capacity, 3) : "none") << std::setw(9) << marginText(x)
+          << c.verdict << "\n";
+    }
+    if (const Check* c = a.governingCheck())
+        s << "\ngoverning: " << c->id << ", margin " << marginText(c->governing()) << ", "
+          << c->verdict << "\n  " << a.governingReason << "\n";
+    for (const std::string& n : a.notes)
+        s << "note: " << n << "\n";
+    return s.str();
+}
+
+} // namespace kinstab

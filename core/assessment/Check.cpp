@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/assessment/Check.h"
+
+namespace kinstab {
+
+std::string checkBasisName(CheckBasis b) {
+    switch (b) {
+    case CheckBasis::Sine:
+        return "sine";
+    case CheckBasis::Record:
+        return "record";
+    case CheckBasis::Floors:
+        return "floors";
+    case CheckBasis::Planar:
+        return "planar";
+    }
+    return "sine";
+}
+
+std::string checkLevelName(CheckLevel l) {
+    return l == CheckLevel::MceR ? "mce_r" : "design";
+}
+
+double Comparison::orderingMargin() const {
+    if (margin) return *margin;
+    return demand > 0 ? searchLimit / demand : searchLimit;
+}
+
+bool Comparison::holds() const {
+    return demand < capacity.value_or(searchLimit);
+}
+
+} // namespace kinstab

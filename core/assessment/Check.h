@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// One check of a project's assessment (core/assessment/Assessment.h): a demand and a capacity
+// expressed in the same intensity, their margin (capacity / demand) and a verdict in words that
+// say what was compared. A check may hold more than one comparison (a floor check compares the
+// ground intensity through the building model, then the code's own floor formula). The first is
+// the check's own; another governs only where it disagrees (fails while the first holds), so
+// the verdict is the cautious one and the margin otherwise follows the first.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kinstab {
+
+// What the check rests on: the enveloped sine of ch. IV, a record (through the floor filter or
+// not), the building's floor motions under a ground record, or the planar slab of ch. VI.
+enum class CheckBasis { Sine, Record, Floors, Planar };
+std::string checkBasisName(CheckBasis b); // "sine" | "record" | "floors" | "planar"
+
+// The code level the demand belongs to: the design level (the paper's ch. V question: does the
+// structure reach its code strength before the slab slides off?) or MCE_R (does the slab stay
+// seated?).
+enum class CheckLevel { Design, MceR };
+std::string checkLevelName(CheckLevel l); // "design" | "mce_r"
+
+struct Comparison {
+    std::string intensity;          // what both numbers measure: "ground PGA", ...
+    std::string unit;               // "g"
+    std::string demandName;         // "0.4 S_MS (ASCE 7-22 §13.3.1 at grade)"
+    double demand = 0;              //
+    std::string capacityName;       // "critical ground PGA of the slab on level 16"
+    std::optional<double> capacity; // none: nothing collapses up to searchLimit
+    double searchLimit = 0;         // the capacity's search bound, in the same unit
+    std::optional<double> margin;   // capacity / demand; none when no capacity
+    double orderingMargin() const;  // margin, or searchLimit / demand when no collapse was found
+    bool holds() const;             // demand below capacity (or below the search limit)
+};
+
+struct Check {
+    std::string id; // BASIS.CODE[.LEVEL]: "sine.ubc1976", "floors.asce7_22.mce_r"
+    CheckBasis basis = CheckBasis::Sine;
+    std::string code;      // "ubc1976"
+    std::string codeTitle; // "UBC 1976 §2312"
+    CheckLevel level = CheckLevel::Design;
+    std::string model;                   // the slab model and, for floors, the building model
+    std::string excitation;              // what drives it
+    std::vector<Comparison> comparisons; // at least one
+    std::size_t governingComparison = 0; // the first, or a failing one where they disagree
+    bool holds = true;                   // every comparison holds
+    std::string verdict;                 // words: see verdictWords in Assessment.cpp
+
+    const Comparison& governing() const { return comparisons.at(governingComparison); }
+};
+
+} // namespace kinstab

@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/assessment/RunAssessment.h"
+
+#include "core/analysis/RunAnalysis.h"
+#include "core/base/InputError.h"
+#include "core/codes/CodeSet.h"
+#include "core/io/Project.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace kinstab {
+
+namespace {
+
+AnalysisRequest checkRequest(const Project& p, const std::vector<CodeResult>& codes) {
+    AnalysisRequest r;
+    r.slab = p.slab;
+    r.codes = codes;
+    r.checkSearch = p.critical;
+    return r;
+}
+
+// The floor analysis without the per-level searches, then the search of the slab's level alone.
+std::optional<FloorCheckParts> slabLevelFloors(const Project& p, const Accelerogram& ground,
+                                               AnalysisControl& control) {
+    FloorAnalysisInput in;
+    in.building = p.building;
+    in.codes = p.codes;
+    in.settings = *p.floors;
+    in.slab = p.slab;
+    in.search = p.critical;
+    in.ground = ground;
+    in.critical = false;
+    const FloorAnalysis a = analyseFloors(in, &control.sweepControl());
+    if (a.demands.empty()) return std::nullopt;
+    const auto at = static_cast<std::size_t>(a.slabLevel - 1);
+    std::vector<LevelCritical> c =
+        levelCriticalPga(p.slab, {a.motions[at]}, a.pga, p.critical, &control.sweepControl());
+    if (c.empty() || control.isCancelled()) return std::nullopt;
+    FloorCheckParts f;
+    f.demands = a.demands;
+    f.atSlab = c.front();
+    f.atSlab.level = a.slabLevel;
+    f.pga = a.pga;
+    f.stories = p.building.stories;
+    return f;
+}
+
+} // namespace
+
+std::optional<FloorCheckParts> floorCheckParts(const FloorAnalysis& a, int stories) {
+    const auto at = static_cast<std::size_t>(a.slabLevel - 1);
+    if (a.cancelled || a.demands.empty() || at >= a.critical.size()) return std::nullopt;
+    FloorCheckParts f;
+    f.demands = a.demands;
+    f.atSlab = a.critical[at];
+    f.pga = a.pga;
+    f.stories = stories;
+    return f;
+}
+
+AssessmentRun runAssessment(const Project& p, const std::optional<PlanarCase>& planar,
+                            AnalysisControl& control) {
+    if (p.model == ModelKind::Planar && !planar)
+        throw std::logic_error("runAssessment: a planar project needs its planar case");
+    AssessmentRun run;
+    run.codes = runCodes(p.building, p.codes);
+    AnalysisRequest sine = checkRequest(p, run.codes);
+    sine.planar = p.model == ModelKind::Planar ? planar : std::nullopt;
+    sine.parts.designCheck = true;
+    const AnalysisResult s = runAnalysis(sine, control);
+    if (s.checkError) std::rethrow_exception(s.checkError);
+    run.parts.sine = s.check;
+    if (p.record) {
+        AnalysisRequest rec = checkRequest(p, run.codes);
+        rec.record = p.record;
+        rec.parts.recordCheck = true;
+        run.record = runAnalysis(rec, control).record;
+        if (run.record) {
+            run.parts.record = run.record->verdicts;
+            run.parts.recordName = run.record->ground.name;
+            if (p.floors) run.parts.floors = slabLevelFloors(p, run.record->ground, control);
+        }
+    }
+    run.cancelled = control.isCancelled();
+    if (!run.cancelled) run.assessment = composeAssessment(p, run.parts);
+    return run;
+}
+
+} // namespace kinstab
