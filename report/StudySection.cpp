@@ -99,8 +99,19 @@ void recordTable(ReportDocument& doc, const std::vector<StudyRow>& rows) {
     doc.addTable(t);
 }
 
-QString bounds(double lo, double hi, int digits) {
-    return QStringLiteral("%1 – %2").arg(num(lo, digits), num(hi, digits));
+// "0.412 – 0.903", an unbounded upper end as "> " the search's top (too few collapses in some
+// resamples to show a median), "—" without a bootstrap.
+QString bounds(const std::optional<double>& lo, const std::optional<double>& hi, int digits,
+               double top = 0) {
+    if (!lo || !hi) return QStringLiteral("—");
+    const QString upper = std::isfinite(*hi) ? num(*hi, digits) : "> " + num(top, digits);
+    return QStringLiteral("%1 – %2").arg(num(*lo, digits), upper);
+}
+
+// The fit's median, marked when it lies beyond every record's search limit.
+QString medianCell(const Fragility& f) {
+    if (!f.fit) return QStringLiteral("—");
+    return accelG(f.fit->median) + (f.medianBeyondSearch ? QStringLiteral(" (extrapolated)") : "");
 }
 
 void fragilityTable(ReportDocument& doc, const std::vector<Fragility>& sets) {
@@ -113,16 +124,31 @@ void fragilityTable(ReportDocument& doc, const std::vector<Fragility>& sets) {
             {}};
     for (const Fragility& f : sets) {
         const StudyRow& r = f.parameters;
-        const bool b = f.fit && f.fitted > 0;
         t.rows.push_back({QString::number(r.set + 1), num(r.mu, 3), num(r.tstar, 3),
                           qs(studyDriverText(r)),
-                          QStringLiteral("%1 of %2").arg(f.collapsed).arg(f.records),
-                          f.fit ? accelG(f.fit->median) : QStringLiteral("—"),
-                          b ? bounds(f.medianLower, f.medianUpper, 3) : QStringLiteral("—"),
-                          f.fit ? num(f.fit->beta, 3) : QStringLiteral("—"),
-                          b ? bounds(f.betaLower, f.betaUpper, 3) : QStringLiteral("—")});
+                          QStringLiteral("%1 of %2").arg(f.collapsed).arg(f.records), medianCell(f),
+                          bounds(f.medianLower, f.medianUpper, 3, f.searchTop),
+                          f.fit ? num(f.fit->beta, 3) + (f.betaAtBound ? " (at bound)" : "")
+                                : QStringLiteral("—"),
+                          bounds(f.betaLower, f.betaUpper, 3)});
     }
     doc.addTable(t);
+    bool extrapolated = false, unfitted = false;
+    for (const Fragility& f : sets) {
+        extrapolated = extrapolated || f.medianBeyondSearch;
+        unfitted = unfitted || (f.fit && f.fitted < f.resamples);
+    }
+    if (extrapolated)
+        doc.addParagraph(QStringLiteral("\"Extrapolated\": the fitted median lies above every "
+                                        "record's search limit, beyond the intensities searched; "
+                                        "it is not a finding of the study."),
+                         true);
+    if (unfitted)
+        doc.addParagraph(
+            QStringLiteral("Bootstrap resamples with fewer than two distinct collapses "
+                           "cannot be fitted; they count as medians beyond the data, "
+                           "so an upper bound may be open (\"> the search's top\")."),
+            true);
 }
 
 CurvePlot fragilityPlot(const Fragility& f, double xhi, const QString& measure) {
@@ -136,11 +162,11 @@ CurvePlot fragilityPlot(const Fragility& f, double xhi, const QString& measure) 
     QList<QPointF> mid, lo, hi;
     for (const FragilityCurvePoint& c : f.curve) {
         mid.append(QPointF(c.intensity, c.probability));
-        lo.append(QPointF(c.intensity, c.lower));
-        hi.append(QPointF(c.intensity, c.upper));
+        if (c.lower) lo.append(QPointF(c.intensity, *c.lower));
+        if (c.upper) hi.append(QPointF(c.intensity, *c.upper));
     }
     plot.curves.push_back({mid, kFit, QStringLiteral("lognormal fit"), 0.3});
-    if (f.fitted > 0) {
+    if (!lo.isEmpty()) {
         plot.curves.push_back({lo, kBound, QStringLiteral("bootstrap bounds"), 0.15});
         plot.curves.push_back({hi, kBound, QString(), 0.15});
     }

@@ -12,6 +12,8 @@ if [ ! -f "$build/CMakeCache.txt" ] && command -v ninja >/dev/null; then
 fi
 if command -v ccache >/dev/null; then
   args+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  # Precompiled headers are cached only with these (ccache's manual, "Precompiled headers").
+  export CCACHE_SLOPPINESS="${CCACHE_SLOPPINESS:-pch_defines,time_macros,include_file_mtime,include_file_ctime}"
 fi
 cmake -S . -B "$build" "${args[@]}" "$@" >/dev/null
 cmake --build "$build" -j"$(nproc)"

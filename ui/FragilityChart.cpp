@@ -38,6 +38,15 @@ QLineSeries* line(const std::vector<FragilityCurvePoint>& curve, double Fragilit
     return s;
 }
 
+// A bootstrap bound: its points where the bootstrap gave one.
+QLineSeries* line(const std::vector<FragilityCurvePoint>& curve,
+                  std::optional<double> FragilityCurvePoint::*p) {
+    auto* s = new QLineSeries;
+    for (const auto& c : curve)
+        if (c.*p) s->append(c.intensity, *(c.*p));
+    return s;
+}
+
 } // namespace
 
 void fillFragilityChart(QChart* chart, const std::vector<Fragility>& sets) {
@@ -65,11 +74,13 @@ void fillFragilityChart(QChart* chart, const std::vector<Fragility>& sets) {
         QList<QXYSeries*> series;
         QString name = setName(f.parameters, sets);
         if (f.fit) {
-            name += QString(": θ = %1 g, β = %2")
+            name += QString(": θ = %1 g%2, β = %3%4")
                         .arg(f.fit->median, 0, 'g', 3)
-                        .arg(f.fit->beta, 0, 'g', 2);
+                        .arg(f.medianBeyondSearch ? QObject::tr(" (extrapolated)") : QString())
+                        .arg(f.fit->beta, 0, 'g', 2)
+                        .arg(f.betaAtBound ? QObject::tr(" (at bound)") : QString());
             series << line(f.curve, &FragilityCurvePoint::probability);
-            if (f.fitted > 0)
+            if (f.medianLower)
                 series << line(f.curve, &FragilityCurvePoint::lower)
                        << line(f.curve, &FragilityCurvePoint::upper);
         } else {

@@ -236,7 +236,8 @@ std::string StudyTab::studyJson() const {
     study["format"] = "kinstab-study";
     study["version"] = 1;
     const QStringList fields{m_folder->text(), m_include->text(), m_exclude->text()};
-    study["records"] = fields == m_openedRecordFields ? m_openedRecords : nlohmann::json{records};
+    study["records"] =
+        fields == m_openedRecordFields ? m_openedRecords : nlohmann::json::array({records});
     const nlohmann::json base = m_base.value("intensity", nlohmann::json::object());
     study["intensity"] = base.is_object() ? base : nlohmann::json::object();
     study["intensity"].update(im);

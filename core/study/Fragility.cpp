@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
+#include <tuple>
 
 namespace kinstab {
 
@@ -28,45 +30,51 @@ double quantile(const std::vector<double>& sorted, double q) {
     const double pos = q * static_cast<double>(sorted.size() - 1);
     const auto i = static_cast<std::size_t>(std::floor(pos));
     const std::size_t j = std::min(i + 1, sorted.size() - 1);
-    return sorted[i] + (pos - static_cast<double>(i)) * (sorted[j] - sorted[i]);
+    const double w = pos - static_cast<double>(i);
+    // An infinite value (an unfitted resample's median) is reached, never interpolated into NaN.
+    if (w == 0.0 || sorted[i] == sorted[j]) return sorted[i];
+    if (std::isinf(sorted[j])) return sorted[j];
+    return sorted[i] + w * (sorted[j] - sorted[i]);
 }
 
-std::vector<LognormalFit> bootstrapFits(const std::vector<const StudyRow*>& rows,
-                                        const BootstrapSettings& b) {
+// One fit per resample; none where the resample cannot be fitted.
+std::vector<std::optional<LognormalFit>> bootstrapFits(const std::vector<const StudyRow*>& rows,
+                                                       const BootstrapSettings& b) {
     // mt19937_64 is specified to the bit by the C++ standard, and the index is taken from its
     // output by arithmetic alone (not by a library distribution), so every platform resamples
     // the same records.
     std::mt19937_64 rng(b.seed);
-    std::vector<LognormalFit> fits;
+    std::vector<std::optional<LognormalFit>> fits;
     std::vector<const StudyRow*> pick(rows.size());
     for (std::size_t k = 0; k < b.resamples; ++k) {
         for (auto& p : pick)
             p = rows[rng() % rows.size()];
-        if (auto f = fitLognormal(sampleOf(pick))) fits.push_back(*f);
+        fits.push_back(fitLognormal(sampleOf(pick)));
     }
     return fits;
 }
 
-void addBounds(Fragility& f, const std::vector<LognormalFit>& fits, double level) {
+// The quantile interval [lo, hi] of the values, widened to contain the estimate.
+std::pair<double, double> interval(std::vector<double> v, double lo, double hi, double estimate) {
+    std::sort(v.begin(), v.end());
+    return {std::min(quantile(v, lo), estimate), std::max(quantile(v, hi), estimate)};
+}
+
+void addBounds(Fragility& f, const std::vector<std::optional<LognormalFit>>& fits, double level) {
     const double lo = 0.5 * (1.0 - level), hi = 1.0 - lo;
+    constexpr double inf = std::numeric_limits<double>::infinity();
     std::vector<double> medians, betas;
     for (const auto& x : fits) {
-        medians.push_back(x.median);
-        betas.push_back(x.beta);
+        medians.push_back(x ? x->median : inf); // unfitted: too few collapses to show a median
+        if (x) betas.push_back(x->beta);
     }
-    std::sort(medians.begin(), medians.end());
-    std::sort(betas.begin(), betas.end());
-    f.medianLower = quantile(medians, lo);
-    f.medianUpper = quantile(medians, hi);
-    f.betaLower = quantile(betas, lo);
-    f.betaUpper = quantile(betas, hi);
+    std::tie(f.medianLower, f.medianUpper) = interval(medians, lo, hi, f.fit->median);
+    if (!betas.empty()) std::tie(f.betaLower, f.betaUpper) = interval(betas, lo, hi, f.fit->beta);
     std::vector<double> p(fits.size());
     for (FragilityCurvePoint& c : f.curve) {
         for (std::size_t k = 0; k < fits.size(); ++k)
-            p[k] = lognormalCdf(c.intensity, fits[k].median, fits[k].beta);
-        std::sort(p.begin(), p.end());
-        c.lower = quantile(p, lo);
-        c.upper = quantile(p, hi);
+            p[k] = fits[k] ? lognormalCdf(c.intensity, fits[k]->median, fits[k]->beta) : 0.0;
+        std::tie(c.lower, c.upper) = interval(p, lo, hi, c.probability);
     }
 }
 
@@ -120,14 +128,19 @@ Fragility fragilityOf(const std::vector<StudyRow>& rows, const BootstrapSettings
     f.resamples = b.resamples;
     if (!f.fit) return f;
     double top = 0.0; // the curve spans up to the largest limit or collapse intensity
-    for (const StudyRow* r : ptrs)
+    for (const StudyRow* r : ptrs) {
         top = std::max({top, r->limitIntensity, r->criticalIntensity.value_or(0.0)});
+        f.searchTop = std::max(f.searchTop, r->limitIntensity);
+    }
+    f.medianBeyondSearch = f.fit->median > f.searchTop;
+    f.betaAtBound = betaAtBound(f.fit->beta);
     for (int i = 1; i <= kCurvePoints; ++i) {
         const double x = top * i / kCurvePoints;
-        f.curve.push_back({x, lognormalCdf(x, f.fit->median, f.fit->beta), 0.0, 0.0});
+        f.curve.push_back({x, lognormalCdf(x, f.fit->median, f.fit->beta), {}, {}});
     }
-    const std::vector<LognormalFit> fits = bootstrapFits(ptrs, b);
-    f.fitted = fits.size();
+    const std::vector<std::optional<LognormalFit>> fits = bootstrapFits(ptrs, b);
+    f.fitted = static_cast<std::size_t>(
+        std::count_if(fits.begin(), fits.end(), [](const auto& x) { return x.has_value(); }));
     if (!fits.empty()) addBounds(f, fits, b.level);
     return f;
 }

@@ -22,9 +22,9 @@ struct FragilityPoint {
 };
 
 struct FragilityCurvePoint {
-    double intensity = 0;        // g
-    double probability = 0;      // of the fit
-    double lower = 0, upper = 0; // pointwise bootstrap bounds
+    double intensity = 0;               // g
+    double probability = 0;             // of the fit
+    std::optional<double> lower, upper; // pointwise bootstrap bounds; none without a bootstrap
 };
 
 struct Fragility {
@@ -34,7 +34,16 @@ struct Fragility {
     std::optional<double> collapsedAsGiven; // fraction of the records that collapse as given
     std::optional<LognormalFit> fit;
     std::string noFit; // why there is no fit
-    double medianLower = 0, medianUpper = 0, betaLower = 0, betaUpper = 0;
+    // The fit's median lies above every record's search limit: an extrapolation beyond the
+    // intensities searched (searchTop), not a finding.
+    bool medianBeyondSearch = false;
+    double searchTop = 0;     // g, the largest limit intensity of the set's records
+    bool betaAtBound = false; // the fit's beta is at the search's bound (LognormalFit.h)
+    // Bootstrap bounds: percentiles over the resamples, widened to contain the estimate. A
+    // resample that cannot be fitted (fewer than two distinct collapses) is one whose median lies
+    // beyond what it shows: it counts as an infinite median (and probability 0 on the curve),
+    // so medianUpper may be infinite; beta's bounds are over the fitted resamples only.
+    std::optional<double> medianLower, medianUpper, betaLower, betaUpper;
     std::size_t resamples = 0, fitted = 0; // bootstrap resamples asked for and fitted
     std::vector<FragilityPoint> points;
     std::vector<FragilityCurvePoint> curve;

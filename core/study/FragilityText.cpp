@@ -3,14 +3,17 @@
 
 #include "core/base/TextInput.h"
 
+#include <cmath>
+
 namespace kinstab {
 
 using ojson = nlohmann::ordered_json;
 
 namespace {
 
+// A number, or null when absent or infinite (an unbounded bootstrap bound).
 ojson orNull(const std::optional<double>& v) {
-    return v ? ojson(*v) : ojson();
+    return v && std::isfinite(*v) ? ojson(*v) : ojson();
 }
 
 ojson setJson(const Fragility& f) {
@@ -31,11 +34,18 @@ ojson setJson(const Fragility& f) {
         j["median_g"] = f.fit->median;
         j["beta"] = f.fit->beta;
         j["log_likelihood"] = f.fit->logLikelihood;
-        if (f.fitted > 0) {
-            j["median_bounds_g"] = {f.medianLower, f.medianUpper};
-            j["beta_bounds"] = {f.betaLower, f.betaUpper};
+        // What the fit is: a median above every search limit is an extrapolation, a beta at
+        // the search's bound is a bound.
+        j["search_top_g"] = f.searchTop;
+        j["median_beyond_search"] = f.medianBeyondSearch;
+        j["beta_at_bound"] = f.betaAtBound;
+        if (f.medianLower) {
+            j["median_bounds_g"] = {orNull(f.medianLower), orNull(f.medianUpper)};
+            j["median_upper_unbounded"] = !std::isfinite(*f.medianUpper);
         }
+        if (f.betaLower) j["beta_bounds"] = {*f.betaLower, *f.betaUpper};
         j["bootstrap_fitted"] = f.fitted;
+        j["bootstrap_unfitted"] = f.resamples - f.fitted; // counted as medians beyond the data
     } else {
         j["no_fit"] = f.noFit;
     }
@@ -47,14 +57,14 @@ ojson setJson(const Fragility& f) {
     for (const auto& c : f.curve)
         curve.push_back({{"im_g", c.intensity},
                          {"p", c.probability},
-                         {"p_lower", c.lower},
-                         {"p_upper", c.upper}});
+                         {"p_lower", orNull(c.lower)},
+                         {"p_upper", orNull(c.upper)}});
     j["curve"] = curve;
     return j;
 }
 
 std::string cell(const std::optional<double>& v) {
-    return v ? formatDouble(*v) : std::string();
+    return v && std::isfinite(*v) ? formatDouble(*v) : std::string();
 }
 
 } // namespace
@@ -73,7 +83,7 @@ namespace {
 // The columns a study adds when it uses levels, motions or record scales (older studies keep
 // their bytes): which of them the sets carry.
 struct ExtraColumns {
-    bool level = false, motion = false, asGiven = false;
+    bool level = false, motion = false, asGiven = false, flags = false;
 };
 
 ExtraColumns extraColumns(const std::vector<Fragility>& sets) {
@@ -82,13 +92,15 @@ ExtraColumns extraColumns(const std::vector<Fragility>& sets) {
         x.level = x.level || f.parameters.level.has_value();
         x.motion = x.motion || f.parameters.motion.has_value();
         x.asGiven = x.asGiven || f.collapsedAsGiven.has_value();
+        x.flags = x.flags || f.medianBeyondSearch || f.betaAtBound;
     }
     return x;
 }
 
 std::string extraHeader(const ExtraColumns& x) {
     return std::string(x.level ? ",level" : "") + (x.motion ? ",motion" : "") +
-           (x.asGiven ? ",collapsed_as_given_fraction" : "");
+           (x.asGiven ? ",collapsed_as_given_fraction" : "") +
+           (x.flags ? ",median_beyond_search,beta_at_bound" : "");
 }
 
 std::string extraCells(const ExtraColumns& x, const Fragility& f) {
@@ -97,6 +109,9 @@ std::string extraCells(const ExtraColumns& x, const Fragility& f) {
     if (x.level) out += "," + (p.level ? std::to_string(*p.level) : std::string());
     if (x.motion) out += "," + p.motion.value_or("");
     if (x.asGiven) out += "," + cell(f.collapsedAsGiven);
+    if (x.flags)
+        out += std::string(f.medianBeyondSearch ? ",true" : ",false") +
+               (f.betaAtBound ? ",true" : ",false");
     return out;
 }
 
@@ -109,16 +124,14 @@ std::string fragilityCsv(const std::vector<Fragility>& sets) {
                       extraHeader(x) + "\n";
     for (const Fragility& f : sets) {
         const StudyRow& p = f.parameters;
-        const bool bounds = f.fit && f.fitted > 0;
         auto opt = [](bool has, double v) { return has ? std::optional(v) : std::nullopt; };
         out += std::to_string(p.set) + "," + formatDouble(p.mu) + "," + formatDouble(p.tstar) +
                "," + formatDouble(p.limit) + "," + cell(p.floorPeriod) + "," +
                cell(p.floorDamping) + "," + p.measure + "," + std::to_string(f.records) + "," +
                std::to_string(f.collapsed) + "," +
                cell(opt(f.fit.has_value(), f.fit ? f.fit->median : 0)) + "," +
-               cell(opt(f.fit.has_value(), f.fit ? f.fit->beta : 0)) + "," +
-               cell(opt(bounds, f.medianLower)) + "," + cell(opt(bounds, f.medianUpper)) + "," +
-               cell(opt(bounds, f.betaLower)) + "," + cell(opt(bounds, f.betaUpper)) +
+               cell(opt(f.fit.has_value(), f.fit ? f.fit->beta : 0)) + "," + cell(f.medianLower) +
+               "," + cell(f.medianUpper) + "," + cell(f.betaLower) + "," + cell(f.betaUpper) +
                extraCells(x, f) + "\n";
     }
     return out;

@@ -22,7 +22,7 @@ double logSurvival(double z) {
 // Search box in (ln median, beta): ten log-units beyond the data (a factor of 22,000) and a
 // dispersion from 1e-4 to 5 (fitted values of record suites lie between 0.2 and 1).
 constexpr double kLogMargin = 10.0;
-constexpr double kMinBeta = 1e-4, kMaxBeta = 5.0;
+constexpr double kMinBeta = kMinFragilityBeta, kMaxBeta = kMaxFragilityBeta;
 constexpr double kTolerance = 1e-12;
 
 } // namespace
@@ -70,6 +70,10 @@ std::optional<LognormalFit> fitLognormal(const CensoredSample& s, std::string* w
     const MinimumResult m = bestM(b.x);
     if (!b.converged || !m.converged) return fail("the likelihood maximization did not converge");
     return LognormalFit{std::exp(m.x), b.x, -m.fx};
+}
+
+bool betaAtBound(double beta) {
+    return beta <= kMinFragilityBeta * (1 + 1e-6) || beta >= kMaxFragilityBeta * (1 - 1e-6);
 }
 
 } // namespace kinstab

@@ -32,4 +32,8 @@ std::optional<LognormalFit> fitLognormal(const CensoredSample& s, std::string* w
 
 double lognormalCdf(double x, double median, double beta); // Phi(ln(x/median)/beta)
 
+// The dispersions the fit searches between: a fit at either end is a bound, not an estimate.
+inline constexpr double kMinFragilityBeta = 1e-4, kMaxFragilityBeta = 5.0;
+bool betaAtBound(double beta);
+
 } // namespace kinstab

@@ -46,8 +46,13 @@ std::vector<StudyRow> readStudyRows(const std::string& path, std::string* text) 
     FileText file = readTextFile(path, kMaxResultsBytes);
     if (!file.error.empty()) throw StudyRowError(path + ": " + file.error);
     std::vector<StudyRow> rows;
-    std::set<std::size_t> seen;
+    std::set<std::size_t> seen, doneSets;
     forEachRow(file.text, path, [&](Line l) {
+        if (!rows.empty() && rows.back().set != l.row.set) doneSets.insert(rows.back().set);
+        if (doneSets.count(l.row.set))
+            throw StudyRowError(l.where + ": a row of parameter set " + std::to_string(l.row.set) +
+                                " after rows of another set: a results file keeps each set's "
+                                "rows together (merge the shards with kinstab-cli merge)");
         // One study's rows: the same size and intensity measure, each case once.
         if (!rows.empty() &&
             (l.row.cases != rows.front().cases || l.row.measure != rows.front().measure))
@@ -77,7 +82,13 @@ public:
     }
     // The next line; false at the end of the file. Throws StudyRowError naming FILE:LINE.
     bool next() {
-        if (!std::getline(in_, line_.text)) return false;
+        if (!std::getline(in_, line_.text)) {
+            // The end of the file, or a read that failed (an I/O error, memory): never the same.
+            if (in_.bad() || !in_.eof())
+                throw StudyRowError(path_ + ":" + std::to_string(number_ + 1) +
+                                    ": cannot be read (a read error, not the end of the file)");
+            return false;
+        }
         ++number_;
         line_.where = path_ + ":" + std::to_string(number_);
         if (number_ == 1) line_.text = std::string(withoutBom(line_.text));
@@ -111,6 +122,7 @@ void forEachStudySet(const std::string& path,
                      const std::function<void(std::vector<StudyRow>&&)>& onSet) {
     ShardReader file(path);
     std::vector<StudyRow> set;
+    std::set<std::size_t> done; // sets already handed on: each set's rows stand together
     std::size_t cases = 0;
     std::string measure;
     bool any = false;
@@ -123,7 +135,14 @@ void forEachStudySet(const std::string& path,
         } else if (l.row.cases != cases || l.row.measure != measure) {
             throw StudyRowError(l.where + ": a row of another study than line 1's");
         }
-        if (!set.empty() && set.front().set != l.row.set) onSet(std::exchange(set, {}));
+        if (!set.empty() && set.front().set != l.row.set) {
+            done.insert(set.front().set);
+            onSet(std::exchange(set, {}));
+        }
+        if (done.count(l.row.set))
+            throw StudyRowError(l.where + ": a row of parameter set " + std::to_string(l.row.set) +
+                                " after rows of another set: a results file keeps each set's "
+                                "rows together (merge the shards with kinstab-cli merge)");
         set.push_back(l.row);
     }
     if (!any) throw StudyRowError(path + ": no rows");

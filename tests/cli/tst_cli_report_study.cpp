@@ -60,12 +60,17 @@ class TestCliReportStudy : public QObject {
         for (const QJsonValue& v : sets_) {
             const QJsonObject s = v.toObject();
             QVERIFY2(s.contains("median_g"), "every set of the small study has a fit");
-            const QString median = QString::number(s["median_g"].toDouble(), 'f', 3);
+            // A median above every search limit is printed as the extrapolation it is, and an
+            // open upper bound as "> " the search's top (issue 30).
+            const QString median = QString::number(s["median_g"].toDouble(), 'f', 3) +
+                                   (s["median_beyond_search"].toBool() ? " (extrapolated)" : "");
             const QString beta = QString::number(s["beta"].toDouble(), 'f', 3);
             const QJsonArray mb = s["median_bounds_g"].toArray();
+            const QString upper = mb[1].isNull()
+                                      ? "> " + QString::number(s["search_top_g"].toDouble(), 'f', 3)
+                                      : QString::number(mb[1].toDouble(), 'f', 3);
             const QString bounds =
-                QStringLiteral("%1 – %2").arg(QString::number(mb[0].toDouble(), 'f', 3),
-                                              QString::number(mb[1].toDouble(), 'f', 3));
+                QStringLiteral("%1 – %2").arg(QString::number(mb[0].toDouble(), 'f', 3), upper);
             QVERIFY2(text.contains(median + " " + bounds + " " + beta), qPrintable(median));
         }
     }

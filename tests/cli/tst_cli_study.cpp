@@ -216,6 +216,29 @@ private slots:
         writeBytes(d.filePath("mixed.jsonl"), lines[0] + "\n" + other + "\n");
         QVERIFY(err({"fragility", "--results", d.filePath("mixed.jsonl")})
                     .contains("mixed.jsonl:2: a row of another study"));
+        // Sets 0, 1, 0 (cases in order): refused, not fitted as three sets (issue 30).
+        qsizetype change = 1;
+        while (change < lines.size() &&
+               QJsonDocument::fromJson(lines[change]).object()["set"].toInt() == 0)
+            ++change;
+        QVERIFY(change + 1 < lines.size());
+        QByteArray back = lines[0];
+        back.replace("\"case\":0,", "\"case\":" + QByteArray::number(change + 1) + ",");
+        writeBytes(d.filePath("split.jsonl"), lines[0] + "\n" + lines[change] + "\n" + back + "\n");
+        QVERIFY(err({"fragility", "--results", d.filePath("split.jsonl")})
+                    .contains("split.jsonl:3: a row of parameter set 0 after rows of another set"));
+    }
+    // --bootstrap 0: no bounds anywhere, not bounds of 0 beside the fit (issue 30).
+    void fragilityWithoutBootstrapHasNoBounds() {
+        const Run j =
+            cli({"fragility", "--results", dir_.filePath("all.jsonl"), "--bootstrap", "0"});
+        QVERIFY2(j.code == 0, j.err);
+        for (const QJsonValue& s : QJsonDocument::fromJson(j.out).object()["sets"].toArray()) {
+            const QJsonObject set = s.toObject();
+            QVERIFY(!set.contains("median_bounds_g") && !set.contains("beta_bounds"));
+            for (const QJsonValue& c : set["curve"].toArray())
+                QVERIFY(c.toObject()["p_lower"].isNull() && c.toObject()["p_upper"].isNull());
+        }
     }
 };
 

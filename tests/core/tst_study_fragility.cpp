@@ -130,19 +130,56 @@ private slots:
         QCOMPARE(f.records, std::size_t(10));
         QCOMPARE(f.collapsed, std::size_t(8));
         QVERIFY(f.fitted > 350); // a resample with < 2 distinct collapses has no fit
-        QVERIFY(f.medianLower < f.fit->median && f.fit->median < f.medianUpper);
-        QVERIFY(f.betaLower < f.fit->beta && f.fit->beta < f.betaUpper);
+        QVERIFY(*f.medianLower < f.fit->median && f.fit->median < *f.medianUpper);
+        QVERIFY(*f.betaLower < f.fit->beta && f.fit->beta < *f.betaUpper);
+        QVERIFY(!f.medianBeyondSearch && !f.betaAtBound);
         const Fragility again = fragilityOf(rows, b);
         QCOMPARE(again.medianLower, f.medianLower);
         QCOMPARE(again.betaUpper, f.betaUpper);
         const Fragility other = fragilityOf(rows, {400, 8, 0.9});
         QVERIFY(other.medianLower != f.medianLower);
         for (const auto& c : f.curve)
-            QVERIFY(0 <= c.lower && c.lower <= c.upper && c.upper <= 1);
+            QVERIFY(0 <= *c.lower && *c.lower <= c.probability && c.probability <= *c.upper &&
+                    *c.upper <= 1);
         // Empirical points: 8 collapses of 10 records, the last at 8/10.
         QCOMPARE(f.points.size(), std::size_t(8));
         QCOMPARE(f.points.front().intensity, 0.42);
         QCOMPARE(f.points.back().probability, 0.8);
+    }
+    // Issue 30: 2 collapses among 30 records. Most resamples draw fewer than two distinct
+    // collapses and cannot be fitted; they are the ones whose median lies beyond the data, so
+    // dropping them biased the upper bound down onto the estimate. Counted as medians beyond
+    // the data, the upper bound is open and the interval contains the estimate.
+    void bootstrapCountsUnfittedResamplesAsBeyondTheData() {
+        std::vector<StudyRow> rows;
+        for (std::size_t i = 0; i < 30; ++i)
+            rows.push_back(row(i, i == 3 ? 2.1 : i == 17 ? 2.8 : 0.0, 3.0));
+        const Fragility f = fragilityOf(rows, {1000, 1, 0.9});
+        QVERIFY(f.fit);
+        QVERIFY(f.fitted < f.resamples);
+        QVERIFY(*f.medianLower <= f.fit->median && f.fit->median <= *f.medianUpper);
+        QVERIFY(std::isinf(*f.medianUpper)); // over 5 % of the resamples have no fit
+        // The median lies above every search limit (3 g): an extrapolation, said so.
+        QCOMPARE(f.searchTop, 3.0);
+        QCOMPARE(f.medianBeyondSearch, f.fit->median > 3.0);
+    }
+    void noBootstrapNoBounds() {
+        std::vector<StudyRow> rows;
+        const double crit[] = {0.42, 0.55, 0.58, 0.71, 0.93};
+        for (std::size_t i = 0; i < 5; ++i)
+            rows.push_back(row(i, crit[i], 1.3));
+        const Fragility f = fragilityOf(rows, {0, 1, 0.9});
+        QVERIFY(f.fit && !f.medianLower && !f.betaLower);
+        for (const auto& c : f.curve)
+            QVERIFY(!c.lower && !c.upper);
+    }
+    void betaAtTheSearchBoundIsSaid() {
+        // Two collapses a factor 1e6 apart: the likelihood rises toward ever larger beta.
+        std::vector<StudyRow> rows = {row(0, 1e-3, 1e4), row(1, 1e3, 1e4)};
+        const Fragility f = fragilityOf(rows, {0, 1, 0.9});
+        QVERIFY(f.fit);
+        QCOMPARE(f.betaAtBound, betaAtBound(f.fit->beta));
+        QVERIFY2(f.betaAtBound, qPrintable(QString::number(f.fit->beta)));
     }
     void pointsCensoredBelowACollapseAreKaplanMeier() {
         // Collapses at 0.2, 0.4, 0.5, 0.8 g; censored at 0.3 and 0.6 g: F = 1/6, 3/8, 7/12, 1
