@@ -12,6 +12,7 @@
 #include "ui/teaching/TeachingView.h"
 
 #include <QApplication>
+#include <QTabWidget>
 #include <QTimer>
 
 #include <cmath>
@@ -130,7 +131,8 @@ QString screenshotScenario(MainWindow& window, const QString& scenario, const QS
     return {};
 }
 
-void screenshotAfterSweep(MainWindow& window, const QString& path, QSize size, int gridPoints) {
+void screenshotAfterSweep(MainWindow& window, const QString& path, QSize size, int gridPoints,
+                          const QString& tab) {
     if (gridPoints > 1) {
         GridRanges r = window.gridPanel()->ranges();
         // A hair under the exact step, so that rounding cannot drop the last point.
@@ -139,21 +141,25 @@ void screenshotAfterSweep(MainWindow& window, const QString& path, QSize size, i
         r.fStep = (r.fTo - r.fFrom) / n;
         window.gridPanel()->setRanges(r);
     }
-    const auto grab = [&window, path] {
+    const auto grab = [&window, path, tab] {
+        if (!tab.isEmpty())
+            for (QTabWidget* t : window.findChildren<QTabWidget*>())
+                for (int i = 0; i < t->count(); ++i)
+                    if (t->tabText(i).startsWith(tab)) t->setCurrentIndex(i);
         QTimer::singleShot(1500, &window, [&window, path] {
             const bool ok = window.screenshot().save(path);
             std::fprintf(stderr, "%s %s\n", ok ? "wrote" : "could not write", qPrintable(path));
             QApplication::exit(ok ? 0 : 1);
         });
     };
-    // A record as the excitation: the single run and its critical scale, no surface.
-    QObject::connect(&window, &MainWindow::recordRunFinished, &window, grab);
-    QObject::connect(&window, &MainWindow::sweepFinished, &window, [&window, grab] {
+    // A record as the excitation: the single run and its critical scale, no surface. Either way
+    // the image waits for the whole assessment (it follows the run).
+    QObject::connect(&window, &MainWindow::assessmentFinished, &window, grab);
+    QObject::connect(&window, &MainWindow::sweepFinished, &window, [&window] {
         const SweepGrid& g = window.lastSweep().grid;
         if (!g.amplitudes.empty() && !g.frequencies.empty())
             window.surfaceView()->selectPoint(nearest(g.amplitudes, 1.0),
                                               nearest(g.frequencies, 1.125));
-        grab(); // after the charts and the 3D view have repainted
     });
     window.resize(size); // the documented size, whatever the settings say
     window.resetLayout();

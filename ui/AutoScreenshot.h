@@ -13,9 +13,11 @@ class MainWindow;
 
 // size: the window's size for the image (default: the documented 1280×800). gridPoints > 1: the
 // sweep runs on that many amplitudes and frequencies over the project's ranges (200: a
-// 200×200 grid) instead of the project's steps.
+// 200×200 grid) instead of the project's steps. tab: the centre tab to show (its title's start;
+// empty: the surface). The image is taken once the project's whole assessment is in the
+// Verdict panel.
 void screenshotAfterSweep(MainWindow& window, const QString& path, QSize size = {1280, 800},
-                          int gridPoints = 0);
+                          int gridPoints = 0, const QString& tab = {});
 
 // `kinstab --screenshot FILE --scenario STEP`: the sweep as above, then one step before the
 // image, to show how results follow their inputs (ui/ResultState.h):

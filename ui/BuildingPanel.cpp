@@ -45,7 +45,7 @@ const std::pair<Occupancy, const char*> occupancies[] = {
 BuildingPanel::BuildingPanel(QWidget* parent)
     : InputPanel(parent), m_name(new QLineEdit(this)),
       m_estimate(new QCheckBox(tr("Estimate by each code's formula"), this)),
-      m_estimates(new QLabel(this)), m_system(new QComboBox(this)),
+      m_estimates(new QLabel(this)), m_system(new QComboBox(this)), m_systemNote(new QLabel(this)),
       m_occupancy(new QComboBox(this)) {
     m_name->setToolTip(tr("A name for the building, printed on exports and reports."));
     form()->addRow(tr("&Name:"), m_name);
@@ -80,9 +80,12 @@ BuildingPanel::BuildingPanel(QWidget* parent)
     form()->addRow(QString(), m_estimates);
     for (const auto& entry : systems)
         m_system->addItem(tr(entry.second));
-    m_system->setToolTip(tr("Lateral-force-resisting system: sets each code's period formula and "
-                            "its force reduction (K, R, q) defaults."));
+    m_system->setToolTip(tr("Lateral-force-resisting system: it chooses each code's period "
+                            "formula. K, R and q are the Codes panel's own inputs."));
     form()->addRow(tr("S&ystem:"), m_system);
+    m_systemNote->setObjectName(QStringLiteral("systemNote"));
+    m_systemNote->setWordWrap(true);
+    form()->addRow(QString(), m_systemNote);
     for (const auto& entry : occupancies)
         m_occupancy->addItem(tr(entry.second));
     m_occupancy->setToolTip(tr("Use of the building: each code's importance factor follows from it "
@@ -138,7 +141,19 @@ void BuildingPanel::setBuilding(const Building& b) {
     updateEstimate();
 }
 
+QString BuildingPanel::systemNote() const {
+    return m_systemNote->text();
+}
+
 void BuildingPanel::updateEstimate() {
+    // What the system drives, said beside it: with T entered, nothing (issue 30: a change of
+    // system changed nothing and nothing said so).
+    m_systemNote->setText(
+        m_estimate->isChecked()
+            ? tr("The system sets each code's period formula (below); K, R and q are entered "
+                 "under Codes.")
+            : tr("With T entered the system changes no result: it only chooses the period "
+                 "formulas, and K, R and q are entered under Codes."));
     if (!isValid()) {
         m_estimates->clear();
         return;

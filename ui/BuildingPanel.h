@@ -21,7 +21,8 @@ class BuildingPanel : public InputPanel {
 public:
     explicit BuildingPanel(QWidget* parent = nullptr);
 
-    Building building() const; // valid panel only
+    Building building() const;  // valid panel only
+    QString systemNote() const; // what a change of system drives (shown under it)
     void setBuilding(const Building& b);
 
 private:
@@ -37,6 +38,7 @@ private:
     NumberField* m_period;
     QLabel* m_estimates;
     QComboBox* m_system;
+    QLabel* m_systemNote; // what a change of system drives, given what is entered
     QComboBox* m_occupancy;
 };
 

@@ -91,6 +91,7 @@ MainWindow::MainWindow(QWidget* parent)
       m_progress(new RunProgress), m_status(new QLabel) {
     m_modelPanel = new ModelPanel;
     m_planarHistory = new PlanarHistoryChart;
+    m_assessJob = new BackgroundJob(this);
     setWindowTitle(tr("kinstab — kinetic stability of friction-held slabs"));
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks |
                    QMainWindow::AllowNestedDocks);
@@ -409,6 +410,7 @@ void MainWindow::showFinished(const SweepOutput& out) {
         m_results.setCheck(*out.check, {CheckSource::Source::Sine, m_project.critical.to, {}, {}});
     m_results.runEnded();
     inputsChanged(); // code inputs changed while it ran: re-judge now
+    if (!out.cancelled) startAssessment();
     if (!out.check && !out.checkError.empty())
         m_verdict->setError(QString::fromStdString(out.checkError));
     m_progress->finish();
@@ -425,8 +427,16 @@ void MainWindow::showFinished(const SweepOutput& out) {
 
 void MainWindow::refreshOverlays() {
     m_surface->setOverlays(m_overlays);
+    // The code lines follow the code inputs at once, before any run too: over the surface's
+    // frequencies, or the grid's while there is no surface.
     const GammaGrid& g = m_surface->data();
-    if (!g.empty()) m_critical->setData(m_overlays, g.frequencies.front(), g.frequencies.back());
+    if (!g.empty()) {
+        m_critical->setData(m_overlays, g.frequencies.front(), g.frequencies.back());
+        return;
+    }
+    const SweepGrid grid = m_gridPanel->grid();
+    if (!grid.frequencies.empty())
+        m_critical->setData(m_overlays, grid.frequencies.front(), grid.frequencies.back());
 }
 
 void MainWindow::pickPoint(int ai, int fi) {
@@ -437,7 +447,12 @@ void MainWindow::pickPoint(int ai, int fi) {
     updateSlice();
     const double a = s->gamma.amplitudes[static_cast<std::size_t>(ai)];
     const double f = s->gamma.frequencies[static_cast<std::size_t>(fi)];
-    m_teaching->showPoint(a, f); // the teaching tab follows the pick
+    // The teaching tab follows the pick with the model that made the surface (planar too).
+    std::string notShown;
+    m_teaching->setParams(
+        teachingParamsOf(s->slabCase, s->planar, a, f, m_teaching->params(), &notShown));
+    if (!notShown.empty())
+        m_status->setText(tr("Teaching does not show %1.").arg(QString::fromStdString(notShown)));
     if (s->planar) {
         pickPlanar(a, f);
         return;
@@ -514,7 +529,8 @@ void MainWindow::exportChart(QChartView* view, const QString& name) {
 
 QImage MainWindow::screenshot() {
     QImage img = grab().toImage();
-    if (m_surface->showsGL()) {
+    // The 3D view's own image where it is on screen; not over another tab that hides it.
+    if (m_surface->showsGL() && m_surface->graphWidget()->isVisible()) {
         QWidget* c = m_surface->graphWidget();
         const QRect target(c->mapTo(this, QPoint(0, 0)), c->size());
         const QImage graph = m_surface->renderImage(c->size() * img.devicePixelRatio());

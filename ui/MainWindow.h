@@ -6,6 +6,7 @@
 #include "core/assessment/Assessment.h"
 #include "core/io/Project.h"
 #include "core/slab/Slab1DCase.h"
+#include "ui/BackgroundJob.h"
 #include "ui/PlanarPointRun.h"
 #include "ui/PointRun.h"
 #include "ui/RecordRunner.h"
@@ -118,9 +119,14 @@ public slots:
     bool save();
     bool saveAsDialog();
 
+    // The project's whole assessment (core/assessment/RunAssessment.h), as check and the report
+    // give it, computed after each run; none before the first or when inputs changed since.
+    const Assessment* fullAssessment() const;
+
 signals:
     void sweepFinished();
     void recordRunFinished();
+    void assessmentFinished(); // the whole assessment of the inputs shown is in the panel
 
 protected:
     void closeEvent(QCloseEvent* e) override;
@@ -153,6 +159,7 @@ private:
     void showStaleness();
     void showVerdict();
     Assessment currentAssessment() const;
+    void startAssessment(); // the whole assessment of the inputs shown, in the background
     void exportSurface();
     void exportChart(QChartView* view, const QString& name);
     // The planar model (MainWindowPlanar.cpp).
@@ -203,6 +210,9 @@ private:
     std::vector<CodeResult> m_codeResults;
 
     ResultState m_results;
+    BackgroundJob* m_assessJob = nullptr;
+    // The whole assessment and the inputs it was made with (shown while they are the inputs).
+    std::optional<std::pair<InputFingerprint, Assessment>> m_assessment;
     SurfaceOverlays m_overlays; // code ratios and building frequency (inputs), A_crit (result)
     StaleFrame* m_sliceFrame = nullptr;
     StaleFrame* m_historyFrame = nullptr;

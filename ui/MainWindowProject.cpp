@@ -14,6 +14,7 @@
 #include "ui/MainWindow.h"
 #include "ui/ModelPanel.h"
 #include "ui/RecentFiles.h"
+#include "ui/RecordsTab.h"
 #include "ui/SlabPanel.h"
 #include "ui/StudyTab.h"
 #include "ui/SurfaceView.h"
@@ -57,7 +58,8 @@ void MainWindow::showProject(const Project& p) {
     m_project = p;
     showStudy(p.study); // none: the Study tab is cleared, as the other results are
     showInputs(p);
-    m_undo->reset(); // a fresh start: nothing to undo, nothing unsaved
+    m_records->showProject(p); // the project's record, or an empty state
+    m_undo->reset();           // a fresh start: nothing to undo, nothing unsaved
     m_undo->markSaved();
 }
 

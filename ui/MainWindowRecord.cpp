@@ -100,6 +100,7 @@ void MainWindow::showRecordFinished(const RecordOutput& out) {
                 : tr("%1 (%2 s)").arg(summary).arg(a.runSeconds + a.criticalSeconds, 0, 'f', 2));
     }
     inputsChanged(); // code inputs changed while it ran: re-judge now
+    if (out.analysis && !out.cancelled) startAssessment();
     updateRunState();
     emit recordRunFinished();
 }

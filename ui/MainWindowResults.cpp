@@ -4,6 +4,8 @@
 // where the kept A_crit serves and dims every result made with other inputs, with the line
 // "inputs changed — Run to update", until a run with the new inputs replaces it.
 
+#include "core/assessment/RunAssessment.h"
+#include "report/PlanarVertical.h"
 #include "ui/CriticalChart.h"
 #include "ui/ExcitationPanel.h"
 #include "ui/GridPanel.h"
@@ -16,7 +18,9 @@
 #include "ui/SurfaceView.h"
 #include "ui/VerdictPanel.h"
 
+#include <QLabel>
 #include <QStackedWidget>
+#include <QTabWidget>
 
 namespace kinstab::ui {
 
@@ -34,7 +38,12 @@ void MainWindow::clearResults() {
     // A run still going belongs to the previous inputs: stopped, and its end is not shown.
     m_runner->cancel();
     m_recordRunner->cancel();
+    m_assessJob->cancel();
+    m_assessment.reset();
     m_results.clear();
+    // Nothing said of the previous project's run stays: the surface tab's model and the status.
+    m_centre->setTabText(0, tr("γc surface"));
+    m_status->clear();
     m_overlays.aCrit.clear();
     m_selA = m_selF = -1;
     m_surface->setData(GammaGrid{});
@@ -63,14 +72,59 @@ void MainWindow::inputsChanged() {
     m_results.setInputs(now, m_codeResults);
     // A kept check is shown (re-judged, or dimmed when stale) unless the codes failed: then
     // updateCodes' message naming the bad input stays.
-    if (m_results.check() && !(m_results.checkStale() && m_codeResults.empty()))
+    if ((m_results.check() || fullAssessment()) &&
+        !(m_results.checkStale() && m_codeResults.empty()))
         m_verdict->setAssessment(currentAssessment());
     showStaleness();
 }
 
-// The assessment of what ran (core composes it): the check of the last run, on the enveloped sine
-// (or the planar model) or on the project's record.
+const Assessment* MainWindow::fullAssessment() const {
+    if (!m_assessment || !inputsValid()) return nullptr;
+    try {
+        if (m_assessment->first == fingerprintOf(project())) return &m_assessment->second;
+    } catch (const std::exception&) {
+    }
+    return nullptr;
+}
+
+// What check and the report would say for the inputs shown: core's runAssessment, run after each
+// run of the window (it adds what the run did not compute: the sine's checks of a record project,
+// the floor checks at the slab's level). Superseded by the next start; dropped on a change.
+void MainWindow::startAssessment() {
+    if (!inputsValid()) return;
+    Project p;
+    InputFingerprint key;
+    try {
+        p = project();
+        key = fingerprintOf(p);
+    } catch (const std::exception&) {
+        return;
+    }
+    m_assessJob->start<std::optional<Assessment>>(
+        [p](JobContext& job) -> std::optional<Assessment> {
+            auto& control = static_cast<AnalysisJobContext&>(job).analysis;
+            try {
+                std::optional<PlanarCase> planar;
+                if (p.model == ModelKind::Planar) planar = projectPlanarCase(p.slab, p.planar);
+                const AssessmentRun run = runAssessment(p, planar, control);
+                if (run.cancelled) return std::nullopt;
+                return run.assessment;
+            } catch (const std::exception&) {
+                return std::nullopt; // the run's own panels say what was wrong with the inputs
+            }
+        },
+        [this, key](std::optional<Assessment> a) {
+            if (a) m_assessment.emplace(key, std::move(*a));
+            showVerdict();
+            emit assessmentFinished();
+        },
+        std::make_shared<AnalysisJobContext>());
+}
+
+// The assessment of what ran (core composes it): the whole one when it is of the inputs shown,
+// else the check of the last run, on the enveloped sine (or the planar model) or on the record.
 Assessment MainWindow::currentAssessment() const {
+    if (const Assessment* full = fullAssessment()) return *full;
     AssessmentParts parts;
     if (m_results.checkBasis().source == CheckSource::Source::Record) {
         parts.record = m_results.check()->codes;
@@ -83,7 +137,7 @@ Assessment MainWindow::currentAssessment() const {
 }
 
 void MainWindow::showVerdict() {
-    if (m_results.check())
+    if (m_results.check() || fullAssessment())
         m_verdict->setAssessment(currentAssessment());
     else
         m_verdict->setCodeResults(m_codeResults);

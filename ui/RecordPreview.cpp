@@ -176,6 +176,17 @@ bool RecordPreview::loadFile(const QString& path, const RecordReadOptions& optio
     }
 }
 
+void RecordPreview::clear() {
+    ground_.reset();
+    floor_.reset();
+    fit_.reset();
+    error_.clear();
+    for (QChart* c : {groundChart(), floorChart(), spectrumChart()})
+        clearSeries(c);
+    info_->setText(tr("No record."));
+    emit recordChanged();
+}
+
 void RecordPreview::setRecord(const Accelerogram& ground) {
     validateAccelerogram(ground);
     ground_ = ground;

@@ -30,6 +30,7 @@ public:
     // Reads a file (also ":/records/..." resources); false with errorText() set when it is broken.
     bool loadFile(const QString& path, const RecordReadOptions& options = {});
     void setRecord(const Accelerogram& ground);
+    void clear(); // no record: empty charts
     void setFloorFilter(std::optional<FloorFilterParams> filter);
     // A planar project takes the record as the slab's vertical base motion, unfiltered: the
     // floor filter (a horizontal floor's response) is then switched off and locked.

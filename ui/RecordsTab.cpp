@@ -24,8 +24,49 @@ RecordsTab::RecordsTab(QWidget* parent)
     layout->addLayout(bar);
     layout->addWidget(m_preview, 1);
     connect(open, &QPushButton::clicked, this, &RecordsTab::chooseFile);
-    if (m_preview->loadFile(RecordPreview::defaultVerticalRecord()))
-        m_message->setText(RecordPreview::defaultVerticalNote());
+    m_preview->clear();
+    m_message->setText(tr("No record open."));
+}
+
+QString RecordsTab::messageText() const {
+    return m_message->text();
+}
+
+void RecordsTab::showProject(const Project& p) {
+    m_message->setStyleSheet({});
+    if (p.record) {
+        m_preview->setPlanarBase(false);
+        if (!m_preview->loadFile(QString::fromStdString(p.record->file), p.record->read)) {
+            m_message->setStyleSheet(QStringLiteral("color: #b00020"));
+            m_message->setText(m_preview->errorText());
+            return;
+        }
+        m_preview->setFloorFilter(p.record->floor);
+        m_message->setText(
+            p.record->floor
+                ? tr("The project's record, through its floor filter (T = %1 s, ζ = %2 %).")
+                      .arg(p.record->floor->period)
+                      .arg(100.0 * p.record->floor->damping)
+                : tr("The project's record, driving the slab directly (no floor filter)."));
+        return;
+    }
+    if (p.model == ModelKind::Planar && p.planar.vertical != VerticalSource::None) {
+        m_preview->setPlanarBase(true);
+        const QString path = p.planar.vertical == VerticalSource::Rsn68Up
+                                 ? RecordPreview::defaultVerticalRecord()
+                                 : QString::fromStdString(p.planar.verticalPath);
+        if (m_preview->loadFile(path))
+            m_message->setText(tr("The planar project's vertical base motion, as recorded. %1")
+                                   .arg(p.planar.vertical == VerticalSource::Rsn68Up
+                                            ? RecordPreview::defaultVerticalNote()
+                                            : path));
+        return;
+    }
+    m_preview->clear();
+    m_message->setText(
+        tr("This project has no record: its excitation is the enveloped sine%1. "
+           "Open a record to preview it.")
+            .arg(p.model == ModelKind::Planar ? tr(", with no vertical motion") : QString()));
 }
 
 bool RecordsTab::open(const QString& path) {

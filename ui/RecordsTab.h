@@ -2,10 +2,12 @@
 #pragma once
 // The Records tab: import an accelerogram (AT2, COSMOS, CSMIP, text) and preview the ground
 // motion, the floor motion through the floor filter, the spectra and the fitted envelope
-// (paper Figs. 25-27). Starts on the shipped RSN68 UP record, the stand-in for the paper's
-// Pacoima Dam vertical.
+// (paper Figs. 25-27). It shows the open project's record with its floor filter, a planar
+// project's vertical motion, or says that the project has none.
 
 #include <QWidget>
+
+#include "core/io/Project.h"
 
 class QLabel;
 
@@ -19,6 +21,10 @@ public:
     explicit RecordsTab(QWidget* parent = nullptr);
     // Loads a file; on failure the reason is shown beside the button and false returned.
     bool open(const QString& path);
+    // The project's record and floor filter, a planar project's vertical motion (unfiltered),
+    // or an empty state that says why.
+    void showProject(const Project& p);
+    QString messageText() const;
     RecordPreview* preview() const { return m_preview; }
     QString errorText() const;
 

@@ -127,7 +127,7 @@ void VerdictPanel::setAssessment(const Assessment& a) {
         m_codes << report::shortCodeName(c.code);
         m_ids << QString::fromStdString(c.id);
         const QString level = c.basis == CheckBasis::Floors && c.code == "asce7_22"
-                                  ? (c.level == CheckLevel::MceR ? tr(" MCE_R") : tr(" design"))
+                                  ? (c.level == CheckLevel::MceR ? tr("\nMCE_R") : tr("\ndesign"))
                                   : QString();
         setRow(i,
                {QString::fromStdString(checkBasisName(c.basis)), m_codes.back() + level,

@@ -128,11 +128,13 @@ const char* kCodes =
     "             [--importance-class 1-4 [2]] [--gamma-i G] [--beta B [0.2]] [--irregular]\n";
 
 const char* kCheck =
-    "usage: kinstab-cli check --project FILE\n"
-    "The design check of a project: each code's ratio against the critical amplitude of the\n"
-    "project's model (slab1d or planar) at the building's frequency 1/T; verdict 'overstress\n"
-    "governs' or 'kinetic instability governs'.\n"
-    "  --project FILE               a kinstab project (.json), e.g. the shipped examples\n";
+    "usage: kinstab-cli check --project FILE [--format json|table]\n"
+    "The project's assessment: every check it implies, each code's ratio against the critical\n"
+    "amplitude of the project's model at 1/T (sine.CODE, planar.CODE), against the record's\n"
+    "critical peak (record.CODE), and the floor checks at the slab's level (floors.CODE.LEVEL),\n"
+    "each with demand, capacity, margin and verdict, and the governing check (smallest margin).\n"
+    "  --project FILE               a kinstab project (.json), e.g. the shipped examples\n"
+    "  --format json|table          JSON (\"assessment\"), or a table [table on a terminal]\n";
 
 const char* kFriction =
     "usage: kinstab-cli friction --data FILE.csv [--bearing-area IN2] [--alpha 0|2] [--beta "

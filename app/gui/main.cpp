@@ -25,6 +25,10 @@ const QCommandLineOption
 
 const QCommandLineOption kSize("size", "With --screenshot: the window's size (default 1280x800).",
                                "WxH");
+const QCommandLineOption kTab("tab",
+                              "With --screenshot: show the centre tab whose title begins with "
+                              "TITLE (Records, Teaching, Floors, ...) in the image.",
+                              "TITLE");
 const QCommandLineOption kGrid("grid",
                                "With --screenshot: N amplitudes by N frequencies over the "
                                "project's ranges (2..400).",
@@ -43,6 +47,7 @@ void describe(QCoreApplication& app, QCommandLineParser& parser) {
     parser.addOption(kScenario);
     parser.addOption(kSize);
     parser.addOption(kGrid);
+    parser.addOption(kTab);
     parser.addPositionalArgument("project", "Project file (.json) to open.", "[project]");
     parser.process(app);
 }
@@ -107,7 +112,8 @@ int main(int argc, char** argv) {
                 return 2;
             }
         }
-        kinstab::ui::screenshotAfterSweep(window, parser.value(kShot), size, grid);
+        kinstab::ui::screenshotAfterSweep(window, parser.value(kShot), size, grid,
+                                          parser.value(kTab));
     }
     return QApplication::exec();
 }

@@ -159,13 +159,15 @@ void pickGoverning(Assessment& a) {
 } // namespace
 
 std::string slabModelText(const Project& p, ModelKind model) {
-    const std::string common =
-        "mu = " + g(p.slab.slab.mu) + ", t* = " + g(p.slab.tstar) + " s, exact solver";
+    const std::string common = "mu = " + g(p.slab.slab.mu) + ", t* = " + g(p.slab.tstar) + " s";
     if (model == ModelKind::Planar)
         return "planar 2-DOF slab (Furgerson 1980 ch. VI), " + common +
-               ", f_y = " + g(p.planar.fyHz) + " Hz, A_y/A_x = " + g(p.planar.ayRatio) +
-               ", theta = " + g(p.planar.theta) + ", " + verticalText(p.planar);
-    return "1-DOF slab (Furgerson 1980 ch. IV), " + common;
+               ", numerically integrated, f_y = " + g(p.planar.fyHz) +
+               " Hz, A_y/A_x = " + g(p.planar.ayRatio) + ", theta = " + g(p.planar.theta) + ", " +
+               verticalText(p.planar);
+    const std::string solver =
+        p.slab.solver == SolverKind::Exact ? "event-driven exact solver" : "the paper's RK4 solver";
+    return "1-DOF slab (Furgerson 1980 ch. IV), " + common + ", " + solver;
 }
 
 std::string sineExcitationText(const Project& p) {

@@ -16,6 +16,7 @@
 #include "ui/PlanarHistoryChart.h"
 #include "ui/SurfaceView.h"
 #include "ui/VerdictPanel.h"
+#include "ui/teaching/TeachingView.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -24,6 +25,8 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -163,6 +166,23 @@ private slots:
         QCOMPARE(int(w->pickedPlanarRun()->result.slab.outcome), int(r.at(2, 0).outcome));
         QVERIFY(w->planarHistoryChart()->sampleCount() > 10);
         QVERIFY(w->planarHistoryChart()->isVisibleTo(w.get()));
+        // Teaching follows the pick with the planar model that made the surface (issue 30: it
+        // animated the 1-DOF slab), with the project's planar inputs.
+        const TeachingParams t = w->findChild<TeachingView*>()->params();
+        QVERIFY(t.model == TeachingModel::Planar);
+        QCOMPARE(t.fyHz, p.planar.fyHz);
+        QCOMPARE(t.ayRatio, p.planar.ayRatio);
+        QCOMPARE(t.amplitude, r.grid.amplitudes[2]);
+        // New: nothing said of this run stays, neither the tab's model nor the status line.
+        QTabWidget* tabs = nullptr;
+        for (QTabWidget* t : w->findChildren<QTabWidget*>())
+            if (t->count() > 0 && t->tabText(0).startsWith(QStringLiteral("γc surface"))) tabs = t;
+        QVERIFY(tabs);
+        QCOMPARE(tabs->tabText(0), QStringLiteral("γc surface — planar"));
+        w->newProject();
+        QCOMPARE(tabs->tabText(0), QStringLiteral("γc surface"));
+        for (QLabel* l : w->statusBar()->findChildren<QLabel*>())
+            QVERIFY2(!l->text().contains("Done"), qPrintable(l->text()));
     }
 
     void saveOpenKeepsPlanarSettings() {

@@ -5,6 +5,7 @@
 // tst_record_critical), a broken file shows its reason beside the field and blocks Run, and a
 // project with a record survives save and open.
 
+#include "core/assessment/RunAssessment.h"
 #include "core/check/RecordAnalysis.h"
 #include "core/io/Project.h"
 #include "ui/ExcitationPanel.h"
@@ -89,10 +90,19 @@ private slots:
         // The paper's building: the code ratios are far below the record's critical peak.
         QVERIFY(w->verdictPanel()->rowCount() > 0);
         QCOMPARE(w->verdictPanel()->verdictText(0), QString("overstress governs"));
-        // The rows are the assessment's record checks (core/assessment), with their basis.
-        QCOMPARE(w->verdictPanel()->basisText(0), QString("record"));
-        QCOMPARE(w->verdictPanel()->checkText(0), QString("record.ubc1976"));
-        QVERIFY(w->verdictPanel()->governingText().startsWith("Governing: record."));
+        // Then the project's whole assessment, as kinstab-cli check gives it: the enveloped
+        // sine's checks and the record's, with their basis (core/assessment).
+        QSignalSpy assessed(w.get(), &MainWindow::assessmentFinished);
+        QVERIFY(assessed.wait(120000));
+        QVERIFY(w->fullAssessment());
+        AnalysisControl control;
+        const Assessment cli = runAssessment(w->project(), std::nullopt, control).assessment;
+        QCOMPARE(w->verdictPanel()->rowCount(), int(cli.checks.size()));
+        for (int row = 0; row < w->verdictPanel()->rowCount(); ++row)
+            QCOMPARE(w->verdictPanel()->checkText(row), QString::fromStdString(cli.checks[row].id));
+        QCOMPARE(w->verdictPanel()->basisText(int(cli.checks.size()) - 1), QString("record"));
+        QVERIFY(w->verdictPanel()->governingText().startsWith(
+            "Governing: " + QString::fromStdString(cli.governingCheck()->id)));
         // The surface tab says why it is empty, and stops saying so for the sine.
         QVERIFY(w->surfaceView()->notice().contains("no γc(A, f) surface"));
         w->excitationPanel()->findChild<QComboBox*>("excitationSource")->setCurrentIndex(0);

@@ -8,7 +8,9 @@
 #include "core/check/RecordAnalysis.h"
 #include "core/codes/CodeSet.h"
 #include "core/io/Project.h"
+#include "ui/BuildingPanel.h"
 #include "ui/CodesPanel.h"
+#include "ui/CriticalChart.h"
 #include "ui/ExcitationPanel.h"
 #include "ui/GridPanel.h"
 #include "ui/HeatMapView.h"
@@ -23,9 +25,11 @@
 #include "ui/VerdictPanel.h"
 
 #include <QAction>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLineSeries>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -129,6 +133,37 @@ private slots:
         QVERIFY(w->runAction()->isEnabled());
     }
 
+    // Before any run the A_crit(f) chart's code lines follow the code inputs at once (issue 30:
+    // it kept the previous ratios until the first Run).
+    void codeLinesFollowTheCodesBeforeAnyRun() {
+        ubcZone()->setCurrentText("3");
+        const Project p = w->project();
+        const double ratio = runCodes(p.building, p.codes).front().topRatio; // UBC 1976
+        auto* chart = w->findChild<CriticalChart*>();
+        QVERIFY(chart);
+        bool drawn = false;
+        for (QAbstractSeries* s : chart->chart()->series())
+            if (auto* l = qobject_cast<QLineSeries*>(s); l && l->count() > 0)
+                drawn = drawn || std::abs(l->at(0).y() - ratio) < 1e-12;
+        QVERIFY2(drawn, qPrintable(QString::number(ratio)));
+    }
+    // A change of system with T entered changes no result (it only picks the period formulas;
+    // K, R, q are the codes' own inputs), and the panel says so beside the field.
+    void systemSaysWhatItDrives() {
+        BuildingPanel* b = w->buildingPanel();
+        QVERIFY(w->project().building.period.has_value()); // the paper's T = 1.0 s
+        const std::vector<CodeResult> before = runCodes(w->project().building, w->project().codes);
+        QVERIFY(b->systemNote().contains("changes no result"));
+        for (QComboBox* c : b->findChildren<QComboBox*>())
+            if (c->toolTip().contains("period formula"))
+                c->setCurrentIndex((c->currentIndex() + 1) % c->count());
+        const std::vector<CodeResult> after = runCodes(w->project().building, w->project().codes);
+        for (std::size_t i = 0; i < before.size(); ++i)
+            QCOMPARE(after[i].topRatio, before[i].topRatio);
+        for (QCheckBox* c : b->findChildren<QCheckBox*>())
+            c->setChecked(true); // estimate T by each code's formula
+        QVERIFY(b->systemNote().contains("sets each code's period formula"));
+    }
     void codeOnlyChangeKeepsACritAndUpdatesVerdict() {
         runSmallSweep();
         const CodeVerdict before = w->lastCheck()->codes.front(); // UBC 1976

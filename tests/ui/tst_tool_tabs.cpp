@@ -20,9 +20,13 @@ class TestToolTabs : public QObject {
     Q_OBJECT
 private slots:
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
-    void recordsTabStartsOnTheDefaultVertical() {
+    // On its own the tab shows no record until one is opened (issue 30: it showed RSN68 UP
+    // through a horizontal floor filter for every project).
+    void recordsTabStartsEmpty() {
         RecordsTab tab;
-        QVERIFY(tab.preview()->record().has_value());
+        QVERIFY(!tab.preview()->record().has_value());
+        QVERIFY(tab.messageText().contains("No record"));
+        QVERIFY(tab.open(KINSTAB_SOURCE_DIR "/resources/records/RSN68_SFERN_PEL-UP.AT2"));
         QVERIFY(tab.preview()->record()->samples.size() >
                 1000); // RSN68 UP has 3,000 samples (SOURCES.md)
     }

@@ -37,6 +37,34 @@ PlanarCase TeachingParams::toPlanarCase() const {
     return c;
 }
 
+TeachingParams teachingParamsOf(const Slab1DCase& c, const std::optional<PlanarCase>& planar,
+                                double amplitude, double frequencyHz, TeachingParams base,
+                                std::string* notShown) {
+    base.amplitude = amplitude;
+    base.frequencyHz = frequencyHz;
+    base.mu = c.slab.mu;
+    base.wallWidthM = wallWidthFromTstar(c.tstar);
+    base.limit = c.slab.limit;
+    base.scale = c.scale;
+    std::string missing;
+    if (c.envelope.preset)
+        base.envelope = *c.envelope.preset;
+    else
+        missing = "the project's own envelope (alpha, beta): Teaching shows the '" +
+                  presetName(base.envelope) + "' preset";
+    base.model = planar ? TeachingModel::Planar : TeachingModel::Slab1D;
+    if (planar) {
+        base.fyHz = planar->fyHz;
+        base.ayRatio = planar->ayRatio;
+        base.theta = planar->slab.theta;
+        if (planar->vertical)
+            missing += std::string(missing.empty() ? "" : "; ") +
+                       "the vertical motion: Teaching's planar slab has gravity only";
+    }
+    if (notShown) *notShown = missing;
+    return base;
+}
+
 double TeachingParams::tstar() const {
     return tstarFromWallWidth(wallWidthM);
 }

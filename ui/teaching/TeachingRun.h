@@ -43,6 +43,14 @@ struct TeachingParams {
     bool operator==(const TeachingParams&) const = default;
 };
 
+// The Teaching parameters of one point (A, f) of a project's run: its model (planar when the
+// planar case ran), mu, t*, limit, scale, envelope preset and planar inputs; the rest of `base`
+// (presentation choices) kept. An envelope that is no preset keeps base's preset, and a planar
+// vertical motion is not animated (Teaching's planar slab has gravity only): *notShown says so.
+TeachingParams teachingParamsOf(const Slab1DCase& c, const std::optional<PlanarCase>& planar,
+                                double amplitude, double frequencyHz, TeachingParams base,
+                                std::string* notShown = nullptr);
+
 // The state the drawing shows: the kind of the last event at or before tau.
 enum class DisplayState { AtRest, Slip, Stick, Reversal, Collapse, Stable, LiftOff, Failed };
 DisplayState displayStateOf(EventKind k);
