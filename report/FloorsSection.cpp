@@ -4,6 +4,7 @@
 // acceleration per level against the ASCE 7-22 §13.3.1 and EN 1998-1 §4.3.5.2 demands, the
 // critical PGA per level and the verdicts at the slab's level.
 
+#include "core/assessment/RunAssessment.h"
 #include "report/CurveFigure.h"
 #include "report/ReportSections.h"
 
@@ -131,13 +132,8 @@ void trailTable(ReportDocument& doc, const FloorDemand& d) {
 std::optional<FloorAnalysis> computeReportFloors(const Project& p, SweepControl* control) {
     if (!p.floors || !p.record) return std::nullopt;
     FloorAnalysisInput in;
-    in.building = p.building;
-    in.codes = p.codes;
-    in.settings = *p.floors;
-    in.slab = p.slab;
-    in.search = p.critical;
     try {
-        in.ground = readGroundRecord(*p.record);
+        in = floorAnalysisInput(p, readGroundRecord(*p.record));
     } catch (const RecordError& e) {
         throw ProjectError("excitation.record.file = '" + p.record->file + "': " + e.what());
     }

@@ -156,21 +156,16 @@ void FloorsView::run() {
     if (isRunning()) return;
     const Project p = m_source();
     FloorAnalysisInput in;
-    in.building = p.building;
-    in.codes = p.codes;
-    in.settings = p.floors.value_or(FloorSettings{});
-    in.settings.stiffness = *stiffnessFromName(m_stiffness->currentText().toStdString());
-    in.settings.damping = m_damping->value();
-    in.settings.slabLevel =
-        m_slabLevel->value() > 0 ? std::optional<int>(m_slabLevel->value()) : std::nullopt;
-    in.slab = p.slab;
-    in.search = p.critical;
     try {
-        in.ground = readGround(m_record->text());
+        in = floorAnalysisInput(p, readGround(m_record->text()));
     } catch (const RecordError& e) {
         m_status->setText(tr("Cannot read the record: %1").arg(e.what()));
         return;
     }
+    in.settings.stiffness = *stiffnessFromName(m_stiffness->currentText().toStdString());
+    in.settings.damping = m_damping->value();
+    in.settings.slabLevel =
+        m_slabLevel->value() > 0 ? std::optional<int>(m_slabLevel->value()) : std::nullopt;
     if (const std::string e = validateFloorAnalysis(in); !e.empty()) {
         m_status->setText(tr("Cannot run: %1").arg(QString::fromStdString(e)));
         return;

@@ -62,13 +62,8 @@ int runFloors(const ArgList& argv) {
     const Args args(argv, flags, {"no-critical"});
     if (!args.has("project")) throw UsageError("missing required flag --project");
     const Project p = projectFromFlag(args);
-    FloorAnalysisInput in;
-    in.building = p.building;
-    in.codes = p.codes;
+    FloorAnalysisInput in = floorAnalysisInput(p, groundFrom(args, p));
     in.settings = settingsFrom(args, p);
-    in.slab = p.slab;
-    in.search = p.critical;
-    in.ground = groundFrom(args, p);
     in.critical = !args.has("no-critical");
     const auto start = std::chrono::steady_clock::now();
     FloorAnalysis a;

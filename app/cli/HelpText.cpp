@@ -244,8 +244,9 @@ std::string usageText() {
         s += "  " + std::string(c.name) + std::string(11 - std::string(c.name).size(), ' ') +
              c.summary + "\n";
     s += "\nLIST: comma-separated numbers or start:stop:step.\n"
-         "Exit codes: 0 success, 2 bad input (the message names the flag and value), 1 internal\n"
-         "failure. Every JSON output carries \"kinstab_version\". Manual: man kinstab-cli.\n";
+         "Exit codes: 0 success, 2 bad input (the message names the flag and value), 3 an output\n"
+         "could not be written or a result is not finite, 1 internal failure. Every JSON output\n"
+         "carries \"kinstab_version\". Manual: man kinstab-cli.\n";
     return s;
 }
 

@@ -24,13 +24,7 @@ AnalysisRequest checkRequest(const Project& p, const std::vector<CodeResult>& co
 // The floor analysis without the per-level searches, then the search of the slab's level alone.
 std::optional<FloorCheckParts> slabLevelFloors(const Project& p, const Accelerogram& ground,
                                                AnalysisControl& control) {
-    FloorAnalysisInput in;
-    in.building = p.building;
-    in.codes = p.codes;
-    in.settings = *p.floors;
-    in.slab = p.slab;
-    in.search = p.critical;
-    in.ground = ground;
+    FloorAnalysisInput in = floorAnalysisInput(p, ground);
     in.critical = false;
     const FloorAnalysis a = analyseFloors(in, &control.sweepControl());
     if (a.demands.empty()) return std::nullopt;
@@ -48,6 +42,17 @@ std::optional<FloorCheckParts> slabLevelFloors(const Project& p, const Accelerog
 }
 
 } // namespace
+
+FloorAnalysisInput floorAnalysisInput(const Project& p, const Accelerogram& ground) {
+    FloorAnalysisInput in;
+    in.building = p.building;
+    in.codes = p.codes;
+    in.settings = p.floors.value_or(FloorSettings{});
+    in.slab = p.slab;
+    in.search = p.critical;
+    in.ground = ground;
+    return in;
+}
 
 std::optional<FloorCheckParts> floorCheckParts(const FloorAnalysis& a, int stories) {
     const auto at = static_cast<std::size_t>(a.slabLevel - 1);

@@ -32,6 +32,10 @@ struct AssessmentRun {
 AssessmentRun runAssessment(const Project& p, const std::optional<PlanarCase>& planar,
                             AnalysisControl& control);
 
+// The floor analysis a project asks for under a ground record: its building, codes, floor
+// settings (defaults when none), slab case and search; every level searched.
+FloorAnalysisInput floorAnalysisInput(const Project& p, const Accelerogram& ground);
+
 // The floor check's parts from a floor analysis that searched every level (the report, the GUI).
 std::optional<FloorCheckParts> floorCheckParts(const FloorAnalysis& a, int stories);
 

@@ -4,6 +4,7 @@
 #include "core/base/TextInput.h"
 
 #include <cmath>
+#include <string_view>
 
 namespace kinstab {
 
@@ -63,6 +64,20 @@ ojson setJson(const Fragility& f) {
     return j;
 }
 
+// A text cell: quoted when it holds a comma, quote or line break, and a leading = + - @ (which a
+// spreadsheet would run as a formula) made plain text by a leading apostrophe. A number is
+// never passed here, so numbers stay numbers.
+std::string textCell(const std::string& s) {
+    std::string t = s;
+    if (!t.empty() && std::string_view("=+-@").find(t.front()) != std::string_view::npos)
+        t.insert(t.begin(), '\'');
+    if (t.find_first_of(",\"\r\n") == std::string::npos) return t;
+    std::string q = "\"";
+    for (char c : t)
+        q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+}
+
 std::string cell(const std::optional<double>& v) {
     return v && std::isfinite(*v) ? formatDouble(*v) : std::string();
 }
@@ -107,7 +122,7 @@ std::string extraCells(const ExtraColumns& x, const Fragility& f) {
     const StudyRow& p = f.parameters;
     std::string out;
     if (x.level) out += "," + (p.level ? std::to_string(*p.level) : std::string());
-    if (x.motion) out += "," + p.motion.value_or("");
+    if (x.motion) out += "," + textCell(p.motion.value_or(""));
     if (x.asGiven) out += "," + cell(f.collapsedAsGiven);
     if (x.flags)
         out += std::string(f.medianBeyondSearch ? ",true" : ",false") +
@@ -127,8 +142,8 @@ std::string fragilityCsv(const std::vector<Fragility>& sets) {
         auto opt = [](bool has, double v) { return has ? std::optional(v) : std::nullopt; };
         out += std::to_string(p.set) + "," + formatDouble(p.mu) + "," + formatDouble(p.tstar) +
                "," + formatDouble(p.limit) + "," + cell(p.floorPeriod) + "," +
-               cell(p.floorDamping) + "," + p.measure + "," + std::to_string(f.records) + "," +
-               std::to_string(f.collapsed) + "," +
+               cell(p.floorDamping) + "," + textCell(p.measure) + "," + std::to_string(f.records) +
+               "," + std::to_string(f.collapsed) + "," +
                cell(opt(f.fit.has_value(), f.fit ? f.fit->median : 0)) + "," +
                cell(opt(f.fit.has_value(), f.fit ? f.fit->beta : 0)) + "," + cell(f.medianLower) +
                "," + cell(f.medianUpper) + "," + cell(f.betaLower) + "," + cell(f.betaUpper) +

@@ -14,6 +14,7 @@ namespace kinstab {
 
 nlohmann::ordered_json fragilityJson(const std::vector<Fragility>& sets,
                                      const BootstrapSettings& b);
+// Text cells (measure, motion) quoted as RFC 4180 asks, a leading = + - @ neutralised.
 std::string fragilityCsv(const std::vector<Fragility>& sets);
 
 } // namespace kinstab

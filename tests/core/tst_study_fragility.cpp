@@ -12,10 +12,12 @@
 //    leaves the records at risk there (tst_kaplan_meier works the product by hand).
 
 #include "core/study/Fragility.h"
+#include "core/study/FragilityText.h"
 #include "core/study/LognormalFit.h"
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -180,6 +182,21 @@ private slots:
         QVERIFY(f.fit);
         QCOMPARE(f.betaAtBound, betaAtBound(f.fit->beta));
         QVERIFY2(f.betaAtBound, qPrintable(QString::number(f.fit->beta)));
+    }
+    // CSV text cells cannot break a row or run as a spreadsheet formula (issue 31: a shard could
+    // inject a line break and =HYPERLINK(...) through measure or motion).
+    void csvQuotesAndNeutralisesText() {
+        std::vector<StudyRow> rows = {row(0, 0.5, 2.0), row(1, 0.7, 2.0)};
+        for (StudyRow& r : rows) {
+            r.measure = "=HYPERLINK(\"x\",\"y\")";
+            r.motion = "a\nb";
+        }
+        const std::string csv = fragilityCsv({fragilityOf(rows, {0, 1, 0.9})});
+        QCOMPARE(std::count(csv.begin(), csv.end(), '\n'),
+                 std::ptrdiff_t(3)); // header, row, "a\nb"
+        QVERIFY(csv.find(",\"'=HYPERLINK(\"\"x\"\",\"\"y\"\")\",") != std::string::npos);
+        QVERIFY(csv.find(",\"a\nb\"") != std::string::npos);
+        QVERIFY(csv.find(",=") == std::string::npos);
     }
     void pointsCensoredBelowACollapseAreKaplanMeier() {
         // Collapses at 0.2, 0.4, 0.5, 0.8 g; censored at 0.3 and 0.6 g: F = 1/6, 3/8, 7/12, 1
