@@ -45,7 +45,9 @@ DesignCheckResult designCheck(const std::vector<CodeResult>& codes, const Slab1D
                               const CriticalSearch& search, const PointFunction& point,
                               std::optional<double> scanFrom = std::nullopt);
 
-std::string validateCriticalSearch(const CriticalSearch& s); // empty when fine
+// Empty when fine, else the message naming the field as `prefix` + from | max_amplitude |
+// scan_step | tolerance ("check." in a project; "" names Python's keywords).
+std::string validateCriticalSearch(const CriticalSearch& s, const std::string& prefix = "check.");
 
 // One code's verdict against a critical amplitude (nullopt: nothing collapsed up to
 // searchLimit); shared by the sine's check and the record's (core/check/RecordCheck.h).

@@ -3,6 +3,7 @@
 
 #include "core/base/InputLimits.h"
 #include "core/base/TextInput.h"
+#include "core/check/DesignCheck.h"
 #include "python/src/Arguments.h"
 
 namespace kinstab::python {
@@ -19,6 +20,9 @@ CriticalSearch searchFrom(double maxAmplitude, double scanStep, double tolerance
         badArgument("scan_step", s.scanStep, "must be > 0 and below --max-amplitude");
     if (!(s.tolerance > 0.0 && s.tolerance <= s.scanStep))
         badArgument("tolerance", s.tolerance, "must be > 0 and at most --scan-step");
+    // The search's own bounds (scan points, the tolerance double precision resolves), declared
+    // once in core and named by the keyword here: a ValueError, as the CLI's exit 2.
+    if (const std::string e = validateCriticalSearch(s, ""); !e.empty()) badArgument(e);
     return s;
 }
 

@@ -77,3 +77,12 @@ def test_codes_errors_name_the_field():
 def test_case_and_keywords_exclude_each_other():
     with pytest.raises(ValueError, match="either case= or case keywords"):
         kinstab.simulate(0.9, 1.0, case=kinstab.SlabCase(), mu=0.5)
+
+
+def test_search_bounds_are_value_errors():
+    """The search's own bounds (issue 30): too many scan points, or a tolerance finer than
+    double precision resolves, are a ValueError naming the keyword, as the CLI's exit 2."""
+    with pytest.raises(ValueError, match=r"scan_step = 1e-0?6 g: more than"):
+        kinstab.critical([1.0], scan_step=1e-6)
+    with pytest.raises(ValueError, match="tolerance = 1e-17 g: below what double precision"):
+        kinstab.critical([1.0], tolerance=1e-17)
