@@ -105,11 +105,9 @@ void comparisonTable(ReportDocument& doc, const Assessment& s) {
             const Comparison& x = c.comparisons[k];
             const bool governs = k == c.governingComparison;
             if (governs) t.boldRows.push_back(static_cast<int>(t.rows.size()));
-            t.rows.push_back(
-                {k == 0 ? qs(c.id) : QString(), qs(x.intensity), num(x.demand, 3),
-                 num(x.capacity, 3, QStringLiteral("none")),
-                 x.margin ? num(*x.margin, 2) : QStringLiteral("> ") + num(x.orderingMargin(), 2),
-                 governs ? qs(c.verdict) : QString()});
+            t.rows.push_back({k == 0 ? qs(c.id) : QString(), qs(x.intensity), num(x.demand, 3),
+                              num(x.capacity, 3, QStringLiteral("none")), qs(marginText(x)),
+                              governs ? qs(c.verdict) : QString()});
         }
     }
     doc.addTable(t);

@@ -42,8 +42,6 @@ void addSymbolTable(ReportDocument& doc, const Project& p, const ReportAnalysis&
 void addCheckSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 // Page 1: the one verdict and the excitation it rests on (SummarySection.cpp).
 void addSummary(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
-// True when the governing check of the assessment rests on the project's record (record or floors).
-bool recordGoverns(const Project& p, const ReportAnalysis& a);
 // The assessment's checks as a table, one line each; the governing row in bold.
 void addChecksTable(ReportDocument& doc, const Assessment& a);
 // "event-driven exact solver ..." or "numerically integrated planar model ..., tolerance ...":

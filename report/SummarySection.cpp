@@ -14,7 +14,7 @@ namespace kinstab::ui::report {
 namespace {
 
 QString marginCell(const Comparison& x) {
-    return x.margin ? num(*x.margin, 2) : QStringLiteral("> ") + num(x.orderingMargin(), 2);
+    return qs(marginText(x));
 }
 
 QString basisPhrase(CheckBasis b) {
@@ -110,11 +110,6 @@ void addChecksTable(ReportDocument& doc, const Assessment& a) {
                           marginCell(x), qs(c.verdict)});
     }
     doc.addTable(t);
-}
-
-bool recordGoverns(const Project& p, const ReportAnalysis& a) {
-    const Check* g = a.assessment.governingCheck();
-    return p.record && g && g->basis != CheckBasis::Sine && g->basis != CheckBasis::Planar;
 }
 
 void addSummary(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {

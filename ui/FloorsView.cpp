@@ -261,8 +261,7 @@ void FloorsView::showVerdicts() {
                          .arg(QString::fromStdString(x.capacityName))
                          .arg(x.capacity ? QString::number(*x.capacity, 'f', 3) + " g"
                                          : tr("none up to the limit"))
-                         .arg(x.margin ? QString::number(*x.margin, 'f', 2)
-                                       : "> " + QString::number(x.orderingMargin(), 'f', 2));
+                         .arg(QString::fromStdString(marginText(x)));
         lines << QStringLiteral("%1 — %2. %3")
                      .arg(QString::fromStdString(c.id), QString::fromStdString(c.verdict),
                           parts.join(QStringLiteral("; ")));

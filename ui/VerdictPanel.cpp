@@ -17,8 +17,8 @@ QString fixed(double x, int digits) {
     return QString::number(x, 'f', digits);
 }
 
-QString marginText(const Comparison& x) {
-    return x.margin ? fixed(*x.margin, 2) : QStringLiteral("> ") + fixed(x.orderingMargin(), 2);
+QString marginCell(const Comparison& x) {
+    return QString::fromStdString(marginText(x));
 }
 } // namespace
 
@@ -132,7 +132,7 @@ void VerdictPanel::setAssessment(const Assessment& a) {
         setRow(i,
                {QString::fromStdString(checkBasisName(c.basis)), m_codes.back() + level,
                 fixed(x.demand, 3), x.capacity ? fixed(*x.capacity, 3) : tr("none ≤ limit"),
-                marginText(x), QString::fromStdString(c.verdict)},
+                marginCell(x), QString::fromStdString(c.verdict)},
                tr("%1: %2\n%3 against %4 (%5)\nModel: %6\nExcitation: %7")
                    .arg(m_ids.back(), QString::fromStdString(c.codeTitle),
                         QString::fromStdString(x.demandName),
@@ -148,7 +148,7 @@ void VerdictPanel::setAssessment(const Assessment& a) {
     }
     const Check* g = a.governingCheck();
     m_note->setText(g ? tr("Governing: %1, margin %2 — %3.")
-                            .arg(QString::fromStdString(g->id), marginText(g->governing()),
+                            .arg(QString::fromStdString(g->id), marginCell(g->governing()),
                                  QString::fromStdString(g->verdict))
                       : tr("No check ran."));
     m_note->setToolTip(QString::fromStdString(a.governingReason));

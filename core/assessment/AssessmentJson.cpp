@@ -51,10 +51,6 @@ std::string fixed(double x, int digits) {
     return s.str();
 }
 
-std::string marginText(const Comparison& x) {
-    return x.margin ? fixed(*x.margin, 2) : "> " + fixed(x.orderingMargin(), 2);
-}
-
 } // namespace
 
 nlohmann::json assessmentJson(const Assessment& a) {

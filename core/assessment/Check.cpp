@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/assessment/Check.h"
 
+#include <iomanip>
+#include <locale>
+#include <sstream>
+
 namespace kinstab {
 
 std::string checkBasisName(CheckBasis b) {
@@ -24,6 +28,13 @@ std::string checkLevelName(CheckLevel l) {
 double Comparison::orderingMargin() const {
     if (margin) return *margin;
     return demand > 0 ? searchLimit / demand : searchLimit;
+}
+
+std::string marginText(const Comparison& x) {
+    std::ostringstream s;
+    s.imbue(std::locale::classic());
+    s << std::fixed << std::setprecision(2) << x.orderingMargin();
+    return x.margin ? s.str() : "> " + s.str();
 }
 
 bool Comparison::holds() const {

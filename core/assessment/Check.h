@@ -37,6 +37,9 @@ struct Comparison {
     bool holds() const;             // demand below capacity (or below the search limit)
 };
 
+// The margin as every front end prints it: "1.21", or "> 2.50" when no collapse was found.
+std::string marginText(const Comparison& x);
+
 struct Check {
     std::string id; // BASIS.CODE[.LEVEL]: "sine.ubc1976", "floors.asce7_22.mce_r"
     CheckBasis basis = CheckBasis::Sine;
