@@ -40,10 +40,9 @@ ExcitationPanel::ExcitationPanel(QWidget* parent)
     m_beta = addField("beta", tr("β:"), tr("1/s"),
                       tr("Rise rate of the envelope: larger β means a faster build-up. Must "
                          "exceed α."));
-    m_alpha->setCheck(rangeCheck(0, kMaxEnvelopeRate));
+    m_alpha->setCheck(rangeCheck(kAlphaInput.range));
     m_beta->setCheck([this](double b) {
-        if (!(b > 0) || b > kMaxEnvelopeRate)
-            return tr("must be > 0 and ≤ %1 (got %2)").arg(kMaxEnvelopeRate).arg(b);
+        if (const QString e = rangeCheck(kBetaInput.range)(b); !e.isEmpty()) return e;
         const auto a = m_alpha->value();
         if (a && b <= *a) return tr("must exceed α = %1 (got %2)").arg(*a).arg(b);
         return QString();

@@ -2,7 +2,7 @@
 #include "ui/ModelPanel.h"
 
 #include "core/excitation/FrequencyRange.h"
-#include "core/slab/SlabLimits.h"
+#include "core/slab/SlabInputs.h"
 #include "report/PlanarVertical.h"
 #include "ui/NumberField.h"
 #include "ui/RecordPreview.h"
@@ -54,15 +54,15 @@ void ModelPanel::buildPlanarRows() {
     m_fy = addField("fy", tr("f_&y:"), tr("Hz"),
                     tr("Frequency of the motion along the walls. The paper's Figs. 37–42 use "
                        "0.2, 0.5, 1, 2, 5 and 10 Hz; the critical amplitude rises with f_y."));
-    m_fy->setCheck(rangeCheck(0, kMaxFrequencyHz, false));
+    m_fy->setCheck(rangeCheck(kFyInput.range));
     m_ratio = addField("ayRatio", tr("A_y / A_x:"), QString(),
                        tr("Amplitude along the walls over the amplitude across them. The paper "
                           "takes 0.9, Pacoima Dam's ratio of horizontal peaks."));
-    m_ratio->setCheck(rangeCheck(kAyRatioRange));
+    m_ratio->setCheck(rangeCheck(kAyRatioInput.range));
     m_theta = addField("theta", tr("Θ (along):"), QString(),
                        tr("Along-wall limit: the slab falls when its slip along the walls exceeds "
                           "Θ = 2 wall length / wall width (half-widths). Default 20."));
-    m_theta->setCheck(rangeCheck(kSlipLimitRange));
+    m_theta->setCheck(rangeCheck(kThetaInput.range));
     m_normalization->addItem(tr("product (e × sine)"));
     m_normalization->addItem(tr("envelope (ch. VI)"));
     m_normalization->setToolTip(

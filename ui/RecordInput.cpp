@@ -28,7 +28,7 @@ RecordInput::RecordInput(QWidget* parent)
     m_message->setWordWrap(true);
     m_peak->setObjectName("recordPeak");
     m_peak->setOptional(tr("as recorded"));
-    m_peak->setCheck(rangeCheck(0, limits::kMaxAmplitudeG, false));
+    m_peak->setCheck(rangeCheck(kTargetPeakInput.range));
     m_peak->setFieldToolTip(tr("Peak acceleration the motion under the slab is scaled to (after "
                                "the floor filter). Empty: the record as it is."));
     auto* fileRow = new QHBoxLayout;

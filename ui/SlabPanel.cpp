@@ -2,7 +2,7 @@
 #include "ui/SlabPanel.h"
 
 #include "core/base/InputLimits.h"
-#include "core/slab/SlabLimits.h"
+#include "core/slab/SlabInputs.h"
 #include "ui/NumberField.h"
 
 #include <QComboBox>
@@ -27,22 +27,23 @@ SlabPanel::SlabPanel(QWidget* parent)
                        tr("Actual width of the wall the slab bears on (an 8-inch block wall is "
                           "7⅝ in). Sets the time scale t* = √(d / 2g) and the length scale d/2."));
     m_width->setLength(LengthScale::Detail, 1.0); // kept in metres, shown in mm or in
-    m_width->setCheck(rangeCheck(0, limits::kMaxWallWidthIn * 0.0254, false)); // in metres
+    const Range inches = kWallWidthInput.range;   // the field keeps metres
+    m_width->setCheck(rangeCheck(inches.lo * 0.0254, inches.hi * 0.0254));
     m_tstar = addField("tstar", tr("t*:"), tr("s"),
                        tr("Characteristic time t* = √(d / 2g): the time a block takes to fall "
                           "half its width under gravity. The paper uses 0.099 s."));
-    m_tstar->setCheck(rangeCheck(kTstarRange));
+    m_tstar->setCheck(rangeCheck(kTstarInput.range));
     form()->addRow(QString(), m_derived);
     m_limit = addField("limit", tr("&Bearing / (d/2):"), QString(),
                        tr("Bearing length over half the wall width. The slab falls when its "
                           "slip relative to the wall exceeds the bearing length; the paper "
                           "takes bearing = d/2, i.e. 1."));
-    m_limit->setCheck(rangeCheck(kSlipLimitRange));
+    m_limit->setCheck(rangeCheck(kLimitInput.range));
     m_mu = addField("mu", tr("Friction &μ:"), QString(),
                     tr("Coulomb friction coefficient between slab and wall after the mortar "
                        "joint has cracked. Masonry triplet tests give 0.55–0.66; the paper "
                        "uses 0.6. The slab cannot slip while |a| < μ g."));
-    m_mu->setCheck(rangeCheck(kMuRange));
+    m_mu->setCheck(rangeCheck(kMuInput.range));
     m_solver->addItem(tr("Exact (event-driven)"));
     m_solver->addItem(tr("Paper RK4 (H = T/16)"));
     m_solver->setToolTip(tr("Exact: closed-form motion between stick/slip events (default).\n"

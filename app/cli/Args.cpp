@@ -71,6 +71,24 @@ double Args::number(const std::string& flag, double fallback) const {
     return optionalNumber(flag).value_or(fallback);
 }
 
+std::optional<double> Args::optionalInput(const NumberInput& in) const {
+    const std::string flag = flagName(in).substr(2);
+    const std::optional<double> x = optionalNumber(flag);
+    if (x) refuse(checkInput(in, *x), flag);
+    return x;
+}
+
+double Args::input(const NumberInput& in) const {
+    return optionalInput(in).value_or(in.fallback);
+}
+
+void Args::refuse(const InputProblem& problem, const std::string& flag) const {
+    if (problem.empty()) return;
+    const std::string f = flag.empty() ? flagName(problem.key).substr(2) : flag;
+    const std::string shown = has(f) ? text(f) : formatDouble(problem.value);
+    throw UsageError("--" + f + " " + shown + ": " + problem.why);
+}
+
 double Args::requiredNumber(const std::string& flag) const {
     const auto v = optionalNumber(flag);
     if (!v) throw UsageError("missing required flag --" + flag);

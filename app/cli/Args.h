@@ -3,6 +3,8 @@
 // Command-line flags of one subcommand: --name value pairs, checked against the flags the
 // subcommand declares. Every problem is a UsageError naming the flag and the value (exit 2).
 
+#include "core/base/NumberInput.h"
+
 #include <map>
 #include <optional>
 #include <set>
@@ -30,6 +32,13 @@ public:
     double requiredNumber(const std::string& flag) const;
     int integer(const std::string& flag, int fallback) const;
     std::vector<double> list(const std::string& flag) const; // required LIST
+    // A declared input (core/base/NumberInput.h) under its flag: its default when absent, else
+    // a number in its range (UsageError "--mu 0.001: friction coefficient must be ...").
+    double input(const NumberInput& in) const;
+    std::optional<double> optionalInput(const NumberInput& in) const;
+    // Throws a UsageError for a problem core found in what the flags gave, naming the flag
+    // (flagName of the problem's key unless flag is given) and the value as typed.
+    void refuse(const InputProblem& problem, const std::string& flag = {}) const;
     // One of the allowed words, or the fallback when absent.
     std::string choice(const std::string& flag, const std::set<std::string>& allowed,
                        const std::string& fallback) const;

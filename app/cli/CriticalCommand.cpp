@@ -24,16 +24,10 @@ int runCritical(const ArgList& argv) {
     if (!e.empty()) throw UsageError("--" + e);
     const CriticalSearch search = criticalSearchFromFlags(args);
     for (double f : freqs)
-        if (const std::string fe = frequencyRangeError(f); !fe.empty())
-            throw UsageError("--frequencies " + args.text("frequencies") + ": " + fe);
+        args.refuse(checkInput(kFrequencyInput, f), "frequencies");
 
     if (isPlanar(args)) return runCriticalPlanar(args, freqs, search);
     const Slab1DCase c = slab1DCaseFromFlags(args);
-    // Without friction there is no amplitude below which the slab holds: no A_crit to find.
-    if (!(c.slab.mu > 0.0))
-        throw UsageError("--mu " + args.text("mu", "0") +
-                         ": A_crit needs friction (mu > 0); without it the slab slides at any "
-                         "amplitude");
     AnalysisRequest request;
     request.slab = c;
     request.criticalFrequencies = freqs;

@@ -38,19 +38,9 @@ FloorSettings settingsFrom(const Args& args, const Project& p) {
     FloorSettings s = p.floors.value_or(FloorSettings{});
     if (args.has("stiffness"))
         s.stiffness = *stiffnessFromName(args.choice("stiffness", {"uniform", "weight"}, ""));
-    if (args.has("damping")) {
-        s.damping = args.number("damping", s.damping);
-        if (!(s.damping >= 0.0 && s.damping < 1.0))
-            throw UsageError("--damping " + args.text("damping") +
-                             ": must be at least 0 and below 1");
-    }
-    if (args.has("slab-level")) {
-        s.slabLevel = args.integer("slab-level", 0);
-        if (*s.slabLevel < 1 || *s.slabLevel > p.building.stories)
-            throw UsageError("--slab-level " + args.text("slab-level") +
-                             ": must be between 1 and " + std::to_string(p.building.stories) +
-                             " (the roof)");
-    }
+    s.damping = args.optionalInput(kModalDampingInput).value_or(s.damping);
+    if (args.has("slab-level")) s.slabLevel = args.integer("slab-level", 0);
+    args.refuse(checkFloorSettings(s, p.building.stories)); // core's rules, named by the flag
     return s;
 }
 

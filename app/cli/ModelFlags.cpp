@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/cli/ModelFlags.h"
 
-#include "core/base/InputLimits.h"
-#include "core/base/TextInput.h"
+#include "core/slab/SlabInputs.h"
 
 namespace kinstab::cli {
 
@@ -47,44 +46,24 @@ Slab1DCase commonCaseFromFlags(const Args& args) {
             throw UsageError("--envelope and --alpha/--beta exclude each other");
         c.envelope =
             Envelope{args.requiredNumber("alpha"), args.requiredNumber("beta"), std::nullopt};
-        const std::string e = validateEnvelope(c.envelope.alpha, c.envelope.beta);
-        if (!e.empty()) throw UsageError("--alpha/--beta: " + e);
+        args.refuse(checkEnvelope(c.envelope.alpha, c.envelope.beta));
     } else {
         const std::string name = args.choice("envelope", {"fast", "moderate", "slow"}, "moderate");
         c.envelope = Envelope::fromPreset(*presetFromName(name));
     }
     if (args.has("tstar") && args.has("wall-width-in"))
         throw UsageError("--tstar and --wall-width-in exclude each other");
-    if (args.has("wall-width-in")) {
-        const double d = args.requiredNumber("wall-width-in");
-        if (d <= 0.0 || d > limits::kMaxWallWidthIn)
-            throw UsageError("--wall-width-in " + args.text("wall-width-in") +
-                             ": must be > 0 and at most " + formatDouble(limits::kMaxWallWidthIn));
-        c.tstar = tstarFromWallWidthInches(d);
-    } else {
-        c.tstar = args.number("tstar", 0.099);
-        if (c.tstar <= 0.0 || c.tstar > 100.0)
-            throw UsageError("--tstar " + args.text("tstar") + ": must be > 0 and at most 100 s");
-    }
-    c.slab.mu = args.number("mu", 0.6);
-    if (c.slab.mu < 0.0 || c.slab.mu > 10.0)
-        throw UsageError("--mu " + args.text("mu") +
-                         ": friction coefficient must be between 0 and 10");
-    c.slab.limit = args.number("limit", 1.0);
-    if (c.slab.limit <= 0.0 || c.slab.limit > 1e6)
-        throw UsageError("--limit " + args.text("limit") + ": must be > 0");
-    if (const auto d = args.optionalNumber("duration")) {
-        if (*d <= 0.0) throw UsageError("--duration " + args.text("duration") + ": must be > 0");
-        c.slab.duration = *d;
-    }
+    const std::optional<double> wall = args.optionalInput(kWallWidthInput);
+    c.tstar = wall ? tstarFromWallWidthInches(*wall) : args.input(kTstarInput);
+    c.slab.mu = args.input(kMuInput);
+    c.slab.limit = args.input(kLimitInput);
+    c.slab.duration = args.optionalInput(kDurationInput);
     c.scale = *tauScaleFromName(
         args.choice("scale", {"tau_max", "tau_rise", "tau_dur", "one"}, "tau_max"));
     c.solver = args.choice("solver", {"exact", "paper"}, "exact") == "exact" ? SolverKind::Exact
                                                                              : SolverKind::Paper;
-    c.paperStepsPerPeriod = args.number("paper-steps", 16);
-    if (c.paperStepsPerPeriod < 4.0 || c.paperStepsPerPeriod > 1e6)
-        throw UsageError("--paper-steps " + args.text("paper-steps") +
-                         ": must be between 4 and 1e6");
+    c.paperStepsPerPeriod = args.input(kPaperStepsInput);
+    args.refuse(checkCase(c)); // every rule is core's; this only names the flag
     return c;
 }
 

@@ -3,10 +3,10 @@
 
 #include "app/cli/ModelFlags.h"
 #include "core/codes/Building.h"
-#include "core/excitation/FrequencyRange.h"
 #include "core/excitation/RecordedMotion.h"
 #include "core/records/RecordReader.h"
 #include "core/slab/PlanarSettings.h"
+#include "core/slab/SlabInputs.h"
 
 namespace kinstab::cli {
 
@@ -38,25 +38,16 @@ PlanarCase planarCaseFromFlags(const Args& args, bool recordDriven) {
         if (args.has(f) && !recordDriven)
             throw UsageError(std::string("--") + f + ": not available with --model planar");
     PlanarCase c = planarCaseSharing(commonCaseFromFlags(args));
-    c.ayRatio = args.number("ay-ratio", 0.9);
-    if (c.ayRatio < 0.0 || c.ayRatio > 100.0)
-        throw UsageError("--ay-ratio " + args.text("ay-ratio") +
-                         ": A_y / A_x must be between 0 and 100");
+    c.ayRatio = args.input(kAyRatioInput);
     if (!args.has("fy") && !recordDriven)
         throw UsageError("--fy is required with --model planar (frequency along the walls, Hz; "
                          "the paper uses 0.2, 0.5, 1, 2, 5, 10)");
-    c.fyHz = args.number("fy", c.fyHz);
-    if (const std::string e = frequencyRangeError(c.fyHz); !e.empty())
-        throw UsageError("--fy " + args.text("fy") + ": " + e);
-    c.slab.theta = args.number("theta", 20.0);
-    if (c.slab.theta <= 0.0 || c.slab.theta > 1e6)
-        throw UsageError("--theta " + args.text("theta") +
-                         ": must be > 0 (2 wall length / wall width)");
+    c.fyHz = args.has("fy") ? args.input(kFyInput) : c.fyHz;
+    c.slab.theta = args.input(kThetaInput);
     c.normalization =
         *normalizationFromName(args.choice("normalization", {"product", "envelope"}, "product"));
     if (args.has("vertical")) c.vertical = verticalFromFile(args.text("vertical"), c.tstar);
-    const std::string e = validatePlanarCase(c);
-    if (!e.empty()) throw UsageError(e);
+    args.refuse(checkPlanarCase(c));
     return c;
 }
 

@@ -14,13 +14,7 @@ RecordReadOptions recordReadOptionsFromFlags(const Args& args) {
     RecordReadOptions o;
     o.format = *recordFormatFromName(args.choice(
         "record-format", {"auto", "at2", "cosmos", "csmip", "values", "time-accel"}, "auto"));
-    if (const auto dt = args.optionalNumber("record-dt")) {
-        if (!(*dt >= limits::kMinRecordDt) || *dt > limits::kMaxRecordDt)
-            throw UsageError("--record-dt " + args.text("record-dt") + ": must be " +
-                             formatDouble(limits::kMinRecordDt) + " to " +
-                             formatDouble(limits::kMaxRecordDt) + " s");
-        o.dt = *dt;
-    }
+    o.dt = args.optionalInput(kRecordDtInput);
     if (args.has("record-unit")) {
         o.unit = accelUnitFromName(args.text("record-unit"));
         if (!o.unit)
@@ -69,17 +63,8 @@ RecordExcitation recordExcitationFromFlags(const Args& args, const std::string& 
     if (args.has("amplitude") && args.has("scale-factor"))
         throw UsageError("--scale-factor " + args.text("scale-factor") +
                          ": --amplitude and --scale-factor exclude each other");
-    if (args.has("amplitude")) {
-        e.targetPeak = args.requiredNumber("amplitude");
-        if (!(*e.targetPeak > 0.0) || *e.targetPeak > limits::kMaxAmplitudeG)
-            throw UsageError("--amplitude " + args.text("amplitude") +
-                             ": target peak must be > 0 and at most " +
-                             formatDouble(limits::kMaxAmplitudeG) + " g");
-    }
-    e.scaleFactor = args.number("scale-factor", 1.0);
-    if (!(e.scaleFactor > 0.0) || e.scaleFactor > 1e6)
-        throw UsageError("--scale-factor " + args.text("scale-factor") +
-                         ": must be > 0 and at most 1e6");
+    e.targetPeak = args.optionalInput(kTargetPeakInput);
+    e.scaleFactor = args.input(kScaleFactorInput);
     return e;
 }
 

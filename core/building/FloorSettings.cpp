@@ -16,19 +16,18 @@ std::optional<StiffnessProfile> stiffnessFromName(const std::string& s) {
     return std::nullopt;
 }
 
-std::string validateFloorSettings(const FloorSettings& s, int stories) {
-    std::ostringstream m;
+InputProblem checkFloorSettings(const FloorSettings& s, int stories) {
     if (s.slabLevel && (*s.slabLevel < 1 || *s.slabLevel > stories))
-        m << "floors.slab_level = " << *s.slabLevel << ": must be between 1 and " << stories
-          << " (the roof)";
-    else if (!(s.damping >= 0.0 && s.damping < 1.0))
-        m << "floors.damping = " << s.damping << ": must be at least 0 and below 1";
-    else if (!(s.omega0 >= 1.0 && s.omega0 <= 5.0))
-        m << "floors.asce7_omega0 = " << s.omega0 << ": must be between 1 and 5";
-    else if (s.ec8ElementPeriod && !(*s.ec8ElementPeriod >= 0.0 && *s.ec8ElementPeriod <= 100.0))
-        m << "floors.ec8_element_period_s = " << *s.ec8ElementPeriod
-          << ": must be between 0 and 100 s";
-    return m.str();
+        return {"slab_level", static_cast<double>(*s.slabLevel), "",
+                "must be between 1 and " + std::to_string(stories) + " (the roof)"};
+    if (InputProblem p = checkInput(kModalDampingInput, s.damping); !p.empty()) return p;
+    if (InputProblem p = checkInput(kOmega0Input, s.omega0); !p.empty()) return p;
+    if (s.ec8ElementPeriod) return checkInput(kEc8ElementPeriodInput, *s.ec8ElementPeriod);
+    return {};
+}
+
+std::string validateFloorSettings(const FloorSettings& s, int stories) {
+    return describe(checkFloorSettings(s, stories), "floors.");
 }
 
 } // namespace kinstab

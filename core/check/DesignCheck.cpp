@@ -13,25 +13,7 @@
 namespace kinstab {
 
 std::string validateCriticalSearch(const CriticalSearch& s, const std::string& prefix) {
-    try {
-        requireRange(prefix + "from", s.from, 0.0, limits::kMaxAmplitudeG, "g");
-        requireAbove(prefix + "max_amplitude", s.to, s.from, limits::kMaxAmplitudeG, "g");
-        requireAbove(prefix + "scan_step", s.scanStep, 0.0, s.to, "g");
-        requireAbove(prefix + "tolerance", s.tolerance, 0.0, s.scanStep, "g");
-        // The search's own bounds (core/sweep/CriticalAmplitude.h), refused here as input
-        // rather than met later as an internal error on a worker thread.
-        if ((s.to - s.from) / s.scanStep > static_cast<double>(kMaxScanPoints))
-            throw InputError(prefix + "scan_step = " + formatDouble(s.scanStep) + " g: more than " +
-                             std::to_string(kMaxScanPoints) + " scan points up to " +
-                             formatDouble(s.to) + " g");
-        if (s.tolerance < smallestTolerance(s.to))
-            throw InputError(prefix + "tolerance = " + formatDouble(s.tolerance) +
-                             " g: below what double precision resolves at " + formatDouble(s.to) +
-                             " g (smallest " + formatDouble(smallestTolerance(s.to)) + " g)");
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return {};
+    return describe(checkCriticalSearch(s), prefix);
 }
 
 CodeVerdict judgeCode(const CodeResult& r, std::optional<double> aCrit, double searchLimit) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/excitation/Envelope.h"
 
+#include "core/base/TextInput.h"
+
 #include "core/numerics/RootFinding.h"
 
 #include <cmath>
@@ -148,15 +150,17 @@ std::string tauScaleName(TauScale s) {
     return "?";
 }
 
+InputProblem checkEnvelope(double alpha, double beta) {
+    if (InputProblem p = checkInput(kAlphaInput, alpha); !p.empty()) return p;
+    if (InputProblem p = checkInput(kBetaInput, beta); !p.empty()) return p;
+    if (!(beta > alpha))
+        return {"beta", beta, "1/s",
+                "envelope rise rate must exceed alpha = " + formatDouble(alpha)};
+    return {};
+}
+
 std::string validateEnvelope(double alpha, double beta) {
-    std::ostringstream s;
-    if (!std::isfinite(alpha) || alpha < 0.0)
-        s << "alpha = " << alpha << " 1/s: must be a finite number >= 0";
-    else if (!std::isfinite(beta) || beta <= alpha)
-        s << "beta = " << beta << " 1/s: must be finite and greater than alpha = " << alpha;
-    else if (beta > kMaxEnvelopeRate)
-        s << "beta = " << beta << " 1/s: must be at most " << kMaxEnvelopeRate;
-    return s.str();
+    return describe(checkEnvelope(alpha, beta));
 }
 
 } // namespace kinstab

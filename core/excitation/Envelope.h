@@ -3,6 +3,8 @@
 // The envelope e(t) = exp(-alpha t) - exp(-beta t) of the paper's floor acceleration
 // (Furgerson 1980, ch. IV) and its three presets.
 
+#include "core/base/NumberInput.h"
+
 #include <optional>
 #include <string>
 
@@ -42,10 +44,19 @@ std::optional<TauScale> tauScaleFromName(const std::string& name);
 std::string tauScaleName(TauScale s);
 
 // Largest β (and so α < β) of an envelope, 1/s: a rise time of 0.1 ms is no earthquake's.
-// validateEnvelope and the excitation panel read it.
 inline constexpr double kMaxEnvelopeRate = 1e4;
+// α, the decay of the envelope, 1/s: 1e-3 is an e-folding time of 17 minutes, longer than any
+// earthquake's strong motion (the fast preset's 0.01 is 100 s); a slower decay only lengthens
+// every run (α = 1e-9 runs for hours) without changing what a building feels.
+inline constexpr NumberInput kAlphaInput{
+    "alpha", "1/s", {1e-3, kMaxEnvelopeRate}, 0.15, "envelope decay rate"};
+// β, the rise of the envelope, 1/s; it must also exceed α (validateEnvelope).
+inline constexpr NumberInput kBetaInput{
+    "beta", "1/s", {1e-3, kMaxEnvelopeRate, true}, 0.40, "envelope rise rate"};
 
-// Validates alpha/beta; returns an error message naming the bad value, or empty.
+// Validates alpha/beta (each in its range, β > α): the problem names "alpha" or "beta".
+InputProblem checkEnvelope(double alpha, double beta);
+// The same as a message ("alpha = ... 1/s: ..."), or empty.
 std::string validateEnvelope(double alpha, double beta);
 
 } // namespace kinstab

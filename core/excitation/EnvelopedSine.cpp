@@ -252,18 +252,14 @@ double EnvelopedSine::computeSMax() const {
     return best;
 }
 
+InputProblem checkEnvelopedSine(double amplitude, double frequencyHz, double tstar) {
+    if (InputProblem p = checkInput(kAmplitudeInput, amplitude); !p.empty()) return p;
+    if (InputProblem p = checkInput(kFrequencyInput, frequencyHz); !p.empty()) return p;
+    return checkInput(kTstarInput, tstar);
+}
+
 std::string validateEnvelopedSine(double amplitude, double frequencyHz, double tstar) {
-    std::ostringstream s;
-    if (!std::isfinite(amplitude) || amplitude < 0.0 || amplitude > limits::kMaxAmplitudeG)
-        s << "amplitude = " << amplitude << " g: must be between 0 and "
-          << formatDouble(limits::kMaxAmplitudeG);
-    else if (!std::isfinite(frequencyHz) || frequencyHz < kMinFrequencyHz ||
-             frequencyHz > kMaxFrequencyHz)
-        s << "frequency = " << frequencyHz << " Hz: must be between " << kMinFrequencyHz << " and "
-          << kMaxFrequencyHz;
-    else if (!std::isfinite(tstar) || tstar <= 0.0 || tstar > 100.0)
-        s << "tstar = " << tstar << " s: must be > 0 and at most 100";
-    return s.str();
+    return describe(checkEnvelopedSine(amplitude, frequencyHz, tstar));
 }
 
 } // namespace kinstab

@@ -6,9 +6,11 @@
 //   omega = 2 pi f t*.
 // Its first and second integrals are elementary, so slip phases are integrated exactly.
 
+#include "core/base/InputLimits.h"
 #include "core/excitation/DecaySineIntegrals.h"
 #include "core/excitation/Envelope.h"
 #include "core/excitation/Excitation1D.h"
+#include "core/excitation/FrequencyRange.h"
 
 #include <optional>
 
@@ -78,7 +80,18 @@ private:
     DecaySineIntegrals integrals_;
 };
 
-// Validates the inputs of an enveloped sine; empty when fine, else a message naming the field.
+// The inputs of an enveloped sine, declared once (core/base/NumberInput.h). t* = √(d / 2g), s,
+// the time unit τ = t / t*: 1 ms is a wall 0.02 mm wide, 100 s a wall 200 km wide (the paper's
+// 8-inch wall gives 0.099 s); below 1 ms t*² nears the double range's floor in the solvers'
+// event searches. The frequency's range has its reasons in core/excitation/FrequencyRange.h.
+inline constexpr NumberInput kAmplitudeInput{
+    "amplitude", "g", {0.0, limits::kMaxAmplitudeG}, 1.0, "amplitude"};
+inline constexpr NumberInput kFrequencyInput{
+    "frequency", "Hz", {kMinFrequencyHz, kMaxFrequencyHz}, 1.0, "frequency"};
+inline constexpr NumberInput kTstarInput{"tstar", "s", {1e-3, 100.0}, 0.099, "t* = sqrt(d / 2g)"};
+
+// The first input out of its range, or nothing; validateEnvelopedSine says it in words.
+InputProblem checkEnvelopedSine(double amplitude, double frequencyHz, double tstar);
 std::string validateEnvelopedSine(double amplitude, double frequencyHz, double tstar);
 
 } // namespace kinstab

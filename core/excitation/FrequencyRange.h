@@ -13,19 +13,9 @@
 // the end of the first half-period (moderate: 2.7e-33), so every intermediate stays well inside
 // that range.
 
-#include <string>
-
 namespace kinstab {
 
 inline constexpr double kMinFrequencyHz = 1e-3;
 inline constexpr double kMaxFrequencyHz = 1000.0;
-
-// Empty when hz is in range, else why not, naming the limits (for a message after the flag or
-// field name).
-inline std::string frequencyRangeError(double hz) {
-    if (hz >= kMinFrequencyHz && hz <= kMaxFrequencyHz) return {};
-    return "must be at least 0.001 Hz (the smallest frequency the model computes) and at most "
-           "1000 Hz";
-}
 
 } // namespace kinstab

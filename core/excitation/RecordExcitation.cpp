@@ -19,16 +19,16 @@ std::string fieldError(const std::string& field, double value, const std::string
 
 std::string validateRecordExcitation(const RecordExcitation& e) {
     if (e.file.empty()) return "excitation.record.file: missing (the accelerogram file)";
-    if (e.read.dt && !(*e.read.dt > 0.0 && *e.read.dt <= limits::kMaxRecordDt))
-        return fieldError("dt", *e.read.dt,
-                          "must be > 0 and at most " + formatDouble(limits::kMaxRecordDt) + " s");
+    if (e.read.dt)
+        if (const InputProblem p = checkInput(kRecordDtInput, *e.read.dt); !p.empty())
+            return describe(p, "excitation.record.");
     if (e.read.format == RecordFormat::Values && !e.read.dt)
         return "excitation.record.dt: missing (format 'values' has no time column)";
-    if (e.targetPeak && !(*e.targetPeak > 0.0 && *e.targetPeak <= limits::kMaxAmplitudeG))
-        return fieldError("target_peak_g", *e.targetPeak,
-                          "must be > 0 and at most " + formatDouble(limits::kMaxAmplitudeG) + " g");
-    if (!(e.scaleFactor > 0.0 && e.scaleFactor <= 1e6))
-        return fieldError("scale_factor", e.scaleFactor, "must be > 0 and at most 1e6");
+    if (e.targetPeak)
+        if (const InputProblem p = checkInput(kTargetPeakInput, *e.targetPeak); !p.empty())
+            return describe(p, "excitation.record.");
+    if (const InputProblem p = checkInput(kScaleFactorInput, e.scaleFactor); !p.empty())
+        return describe(p, "excitation.record.");
     if (e.floor) {
         const std::string f = validateFloorFilter(*e.floor);
         if (!f.empty()) {

@@ -6,6 +6,8 @@
 // feels. The scaling applies to the driving motion, i.e. after the floor filter: its peak is what
 // the slab sees.
 
+#include "core/base/InputLimits.h"
+#include "core/base/NumberInput.h"
 #include "core/excitation/FloorFilter.h"
 #include "core/records/Accelerogram.h"
 #include "core/records/RecordReader.h"
@@ -14,6 +16,17 @@
 #include <string>
 
 namespace kinstab {
+
+// A record's inputs, declared once. The sample interval of a headerless file (limits::
+// kMinRecordDt to kMaxRecordDt: the readers refuse any other), the peak the driving motion is
+// scaled to, or the factor it is multiplied by. The command line spells them --record-dt,
+// --amplitude and --scale-factor.
+inline constexpr NumberInput kRecordDtInput{
+    "dt", "s", {limits::kMinRecordDt, limits::kMaxRecordDt}, 0.01, "sample interval", "record-dt"};
+inline constexpr NumberInput kTargetPeakInput{
+    "target_peak_g", "g", {0.0, limits::kMaxAmplitudeG, true}, 1.0, "target peak", "amplitude"};
+inline constexpr NumberInput kScaleFactorInput{
+    "scale_factor", "", {0.0, 1e6, true}, 1.0, "scale factor"};
 
 struct RecordExcitation {
     std::string file;                       // path of the accelerogram (absolute once loaded)

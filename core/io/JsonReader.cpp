@@ -98,6 +98,19 @@ double JsonReader::number(const std::string& key, double fallback) const {
     return optionalNumber(key).value_or(fallback);
 }
 
+std::optional<double> JsonReader::optionalInput(const NumberInput& in,
+                                                const std::string& key) const {
+    const std::string k = key.empty() ? std::string(in.key) : key;
+    const std::optional<double> x = optionalNumber(k);
+    if (x)
+        if (const InputProblem p = checkInput(in, *x); !p.empty()) fail(k, valueAndWhy(p));
+    return x;
+}
+
+double JsonReader::input(const NumberInput& in, const std::string& key) const {
+    return optionalInput(in, key).value_or(in.fallback);
+}
+
 double JsonReader::requiredNumber(const std::string& key) const {
     const auto v = optionalNumber(key);
     if (!v) fail(key, "missing (a number is required)");

@@ -4,6 +4,8 @@
 // JsonFieldError naming the field by its path ("building.height: expected a number, got
 // \"abc\""). Absent and null keys are the same thing.
 
+#include "core/base/NumberInput.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
@@ -49,6 +51,10 @@ public:
     std::optional<JsonReader> optionalObject(const std::string& key) const;
     JsonReader object(const std::string& key) const;
     const nlohmann::json& raw(const std::string& key) const;
+    // A declared input (core/base/NumberInput.h) under its key, or under key when the file
+    // names it otherwise: its default when absent, else a number in its range.
+    double input(const NumberInput& in, const std::string& key = {}) const;
+    std::optional<double> optionalInput(const NumberInput& in, const std::string& key = {}) const;
 
     [[noreturn]] void fail(const std::string& key, const std::string& message) const;
 

@@ -9,6 +9,7 @@
 #include "core/io/JsonReader.h"
 #include "core/io/MotionJson.h"
 #include "core/io/PlanarJson.h"
+#include "core/slab/SlabInputs.h"
 
 #include <cmath>
 #include <filesystem>
@@ -51,11 +52,8 @@ std::string validateProject(const Project& p) {
     std::string e = validateBuilding(p.building);
     if (e.empty()) e = validateCodes(p.codes);
     if (e.empty() && !(e = validateCase(p.slab)).empty()) e = "slab: " + e;
-    if (e.empty() && p.wallWidthIn &&
-        (!std::isfinite(*p.wallWidthIn) || *p.wallWidthIn <= 0.0 ||
-         *p.wallWidthIn > limits::kMaxWallWidthIn))
-        e = "slab.wall_width_in = " + formatDouble(*p.wallWidthIn) + ": must be > 0 and at most " +
-            formatDouble(limits::kMaxWallWidthIn);
+    if (e.empty() && p.wallWidthIn)
+        e = describe(checkInput(kWallWidthInput, *p.wallWidthIn), "slab.");
     if (e.empty() && (!p.grid.amplitudes.empty() || !p.grid.frequencies.empty()) &&
         !(e = validateGrid(p.grid)).empty())
         e = "grid: " + e;
@@ -107,23 +105,16 @@ void slabFrom(const JsonReader& r, Project& p) {
     c.envelope = envelopeFrom(r);
     if (r.has("tstar") && r.has("wall_width_in"))
         r.fail("tstar", "tstar and wall_width_in exclude each other");
-    if (r.has("wall_width_in")) {
-        p.wallWidthIn = r.requiredNumber("wall_width_in");
-        if (*p.wallWidthIn <= 0.0 || *p.wallWidthIn > limits::kMaxWallWidthIn)
-            r.fail("wall_width_in", formatDouble(*p.wallWidthIn) + " in: must be > 0 and at most " +
-                                        formatDouble(limits::kMaxWallWidthIn));
-        c.tstar = tstarFromWallWidthInches(*p.wallWidthIn);
-    } else {
-        c.tstar = r.number("tstar", c.tstar);
-    }
-    c.slab.mu = r.number("mu", c.slab.mu);
-    c.slab.limit = r.number("limit", c.slab.limit);
-    c.slab.duration = r.optionalNumber("duration");
+    p.wallWidthIn = r.optionalInput(kWallWidthInput);
+    c.tstar = p.wallWidthIn ? tstarFromWallWidthInches(*p.wallWidthIn) : r.input(kTstarInput);
+    c.slab.mu = r.input(kMuInput);
+    c.slab.limit = r.input(kLimitInput);
+    c.slab.duration = r.optionalInput(kDurationInput);
     const std::string solver = r.text("solver", "exact");
     if (solver != "exact" && solver != "paper")
         r.fail("solver", quotedToken(solver) + " must be exact or paper");
     c.solver = solver == "exact" ? SolverKind::Exact : SolverKind::Paper;
-    c.paperStepsPerPeriod = r.number("paper_steps", c.paperStepsPerPeriod);
+    c.paperStepsPerPeriod = r.input(kPaperStepsInput);
     const std::string scale = r.text("scale", "tau_max");
     const auto s = tauScaleFromName(scale);
     if (!s) r.fail("scale", quotedToken(scale) + " must be tau_max, tau_rise, tau_dur or one");

@@ -10,6 +10,7 @@
 #include "core/io/FloorsJson.h"
 #include "core/io/JsonReader.h"
 #include "core/slab/Slab1DCase.h"
+#include "core/slab/SlabInputs.h"
 #include "core/study/StudyCase.h"
 
 #include <fnmatch.h>
@@ -156,6 +157,17 @@ std::vector<double> positiveList(const JsonReader& r, const std::string& key, do
     return v;
 }
 
+// A list of a declared input (core/base/NumberInput.h): each value in the input's range.
+std::vector<double> inputList(const JsonReader& r, const NumberInput& in,
+                              std::vector<double> fallback) {
+    const std::string key(in.key);
+    const std::vector<double> v = positiveList(r, key, in.range.hi, std::move(fallback));
+    for (std::size_t i = 0; i < v.size(); ++i)
+        if (const InputProblem e = checkInput(in, v[i]); !e.empty())
+            badValue(r, key + "[" + std::to_string(i) + "]", formatDouble(v[i]), e.why);
+    return v;
+}
+
 void readFloors(const JsonReader& p, StudySpec& s) {
     s.floors = {std::nullopt};
     const auto f = p.optionalObject("floor_filter");
@@ -234,18 +246,16 @@ void readParameters(const JsonReader& top, StudySpec& s) {
     static const json empty = json::object();
     const JsonReader none(empty, top.field("parameters"));
     const JsonReader& r = p ? *p : none;
-    s.mu = positiveList(r, "mu", 10.0, {0.6});
+    s.mu = inputList(r, kMuInput, {kMuInput.fallback});
     if (r.has("tstar") && r.has("wall_width_in"))
         r.fail("tstar", "tstar and wall_width_in exclude each other");
-    s.tstar = positiveList(r, "tstar", 10.0, {0.099});
+    s.tstar = inputList(r, kTstarInput, {kTstarInput.fallback});
     if (r.has("wall_width_in")) {
         s.tstar.clear();
-        for (double d : positiveList(r, "wall_width_in", 1000.0, {}))
+        for (double d : inputList(r, kWallWidthInput, {}))
             s.tstar.push_back(tstarFromWallWidthInches(d));
     }
-    s.limit = r.number("limit", s.limit);
-    if (!(s.limit > 0.0 && s.limit <= 1e3))
-        badValue(r, "limit", formatDouble(s.limit), "must be > 0 and at most 1000");
+    s.limit = r.input(kLimitInput);
     readFloors(r, s);
     readLevels(r, s);
     // Levels without a floor filter: the levels alone drive the slab (not the ground as well).
@@ -260,8 +270,11 @@ void readSearch(const JsonReader& top, StudySpec& s) {
         s.search.scanStep = r->number("scan_step_g", s.search.scanStep);
         s.search.tolerance = r->number("tolerance_g", s.search.tolerance);
     }
-    if (const std::string e = validateCriticalSearch(s.search); !e.empty())
-        throw StudyError(top.field("search") + ": " + e);
+    // The search's rules are core's (checkCriticalSearch); the spec spells its keys with _g.
+    if (const InputProblem e = checkCriticalSearch(s.search); !e.empty()) {
+        const std::string key = e.key == "max_amplitude" ? "max_g" : e.key + "_g";
+        throw StudyError(describeAs(e, top.field("search") + "." + key));
+    }
 }
 
 } // namespace

@@ -3,7 +3,7 @@
 
 #include "core/excitation/EnvelopedSine.h"
 #include "core/excitation/FrequencyRange.h"
-#include "core/slab/SlabLimits.h"
+#include "core/slab/SlabInputs.h"
 
 #include <cmath>
 #include <sstream>
@@ -20,23 +20,22 @@ std::optional<PlanarNormalization> normalizationFromName(const std::string& name
     return std::nullopt;
 }
 
+InputProblem checkPlanarCase(const PlanarCase& c) {
+    if (InputProblem e = checkEnvelope(c.envelope.alpha, c.envelope.beta); !e.empty()) return e;
+    if (InputProblem e = checkPlanarParams(c.slab); !e.empty()) return e;
+    if (InputProblem e = checkInput(kTstarInput, c.tstar); !e.empty()) return e;
+    if (InputProblem e = checkInput(kAyRatioInput, c.ayRatio); !e.empty()) return e;
+    if (InputProblem e = checkInput(kFyInput, c.fyHz); !e.empty()) return e;
+    if (!(c.solver.relTol >= 1e-14 && c.solver.relTol <= 1e-2))
+        return {"rel_tol", c.solver.relTol, "",
+                "relative tolerance must be between 1e-14 and 1e-2"};
+    if (!(c.solver.absTol > 0.0 && c.solver.absTol <= 1e-2))
+        return {"abs_tol", c.solver.absTol, "", "absolute tolerance must be > 0 and at most 1e-2"};
+    return {};
+}
+
 std::string validatePlanarCase(const PlanarCase& c) {
-    std::string e = validateEnvelope(c.envelope.alpha, c.envelope.beta);
-    if (e.empty()) e = validatePlanarParams(c.slab);
-    if (!e.empty()) return e;
-    std::ostringstream s;
-    if (!kTstarRange.contains(c.tstar))
-        s << "tstar = " << c.tstar << " s: must be > 0 and at most " << kTstarRange.hi;
-    else if (!kAyRatioRange.contains(c.ayRatio))
-        s << "ay ratio = " << c.ayRatio << ": A_y / A_x must be between " << kAyRatioRange.lo
-          << " and " << kAyRatioRange.hi;
-    else if (!std::isfinite(c.fyHz) || c.fyHz <= 0.0 || c.fyHz > kMaxFrequencyHz)
-        s << "fy = " << c.fyHz << " Hz: must be > 0 and at most " << kMaxFrequencyHz;
-    else if (!(c.solver.relTol >= 1e-14 && c.solver.relTol <= 1e-2))
-        s << "relative tolerance = " << c.solver.relTol << ": must be between 1e-14 and 1e-2";
-    else if (!(c.solver.absTol > 0.0 && c.solver.absTol <= 1e-2))
-        s << "absolute tolerance = " << c.solver.absTol << ": must be > 0 and at most 1e-2";
-    return s.str();
+    return describe(checkPlanarCase(c));
 }
 
 namespace {

@@ -38,6 +38,7 @@ struct PlanarCase {
     double tauRef() const { return envelope.tauRef(scale, tstar); }
 };
 
+InputProblem checkPlanarCase(const PlanarCase& c);   // the first input out of range, or nothing
 std::string validatePlanarCase(const PlanarCase& c); // empty when fine
 
 // The planar case with what it shares with the 1-DOF one (envelope, t*, scale, mu, limit,

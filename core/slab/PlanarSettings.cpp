@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/PlanarSettings.h"
 
+#include "core/base/InputError.h"
 #include "core/codes/Building.h"
-#include "core/codes/CodeResult.h"
-#include "core/excitation/FrequencyRange.h"
 #include "core/excitation/RecordedMotion.h"
+#include "core/slab/SlabInputs.h"
 
 namespace kinstab {
 
@@ -27,14 +27,13 @@ std::optional<VerticalSource> verticalSourceFromName(const std::string& name) {
 }
 
 std::string validatePlanarSettings(const PlanarSettings& s) {
-    try {
-        // The same ranges as kinstab-cli's --fy, --ay-ratio and --theta (app/cli/PlanarFlags.cpp).
-        requireRange("planar.fy_hz", s.fyHz, kMinFrequencyHz, kMaxFrequencyHz, "Hz");
-        requireRange("planar.ay_ratio", s.ayRatio, 0.0, 100.0);
-        requireAbove("planar.theta", s.theta, 0.0, 1e6);
-    } catch (const InputError& e) {
-        return e.what();
-    }
+    // The planar inputs' own declarations (core/slab/SlabInputs.h); the file calls fy fy_hz.
+    if (const InputProblem p = checkInput(kFyInput, s.fyHz); !p.empty())
+        return describeAs(p, "planar.fy_hz");
+    if (const InputProblem p = checkInput(kAyRatioInput, s.ayRatio); !p.empty())
+        return describe(p, "planar.");
+    if (const InputProblem p = checkInput(kThetaInput, s.theta); !p.empty())
+        return describe(p, "planar.");
     if (s.vertical == VerticalSource::File && s.verticalPath.empty())
         return "planar.vertical.file = '': name the vertical record file";
     return {};

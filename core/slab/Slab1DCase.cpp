@@ -5,7 +5,7 @@
 #include "core/excitation/EnvelopedSine.h"
 #include "core/slab/ExactSolver.h"
 #include "core/slab/FiniteResult.h"
-#include "core/slab/SlabLimits.h"
+#include "core/slab/SlabInputs.h"
 
 #include <cmath>
 #include <numbers>
@@ -24,18 +24,15 @@ double tstarFromWallWidthInches(double inches) {
     return tstarFromWallWidth(inches * 0.0254);
 }
 
+InputProblem checkCase(const Slab1DCase& c) {
+    if (InputProblem e = checkEnvelope(c.envelope.alpha, c.envelope.beta); !e.empty()) return e;
+    if (InputProblem e = checkSlabParams(c.slab); !e.empty()) return e;
+    if (InputProblem e = checkInput(kTstarInput, c.tstar); !e.empty()) return e;
+    return checkInput(kPaperStepsInput, c.paperStepsPerPeriod);
+}
+
 std::string validateCase(const Slab1DCase& c) {
-    std::string e = validateEnvelope(c.envelope.alpha, c.envelope.beta);
-    if (!e.empty()) return e;
-    e = validateSlabParams(c.slab);
-    if (!e.empty()) return e;
-    std::ostringstream s;
-    if (!kTstarRange.contains(c.tstar))
-        s << "tstar = " << c.tstar << " s: must be > 0 and at most " << kTstarRange.hi;
-    else if (!std::isfinite(c.paperStepsPerPeriod) || c.paperStepsPerPeriod < 4.0 ||
-             c.paperStepsPerPeriod > 1e6)
-        s << "paper steps per period = " << c.paperStepsPerPeriod << ": must be between 4 and 1e6";
-    return s.str();
+    return describe(checkCase(c));
 }
 
 SlabResult runSlab1D(const Slab1DCase& c, double amplitude, double frequencyHz,

@@ -28,6 +28,8 @@ struct Slab1DCase {
 double tstarFromWallWidth(double wallWidthMetres);
 double tstarFromWallWidthInches(double inches);
 
+// The first input out of its range, named by its key (core/slab/SlabInputs.h), or nothing.
+InputProblem checkCase(const Slab1DCase& c);
 std::string validateCase(const Slab1DCase& c); // empty when fine
 
 // A result whose numbers are all finite, or a Failed one (see FiniteResult.h); never throws

@@ -1,20 +1,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/SlabModel2D.h"
 
-#include "core/slab/SlabLimits.h"
+#include "core/slab/SlabInputs.h"
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
 namespace kinstab {
 
+InputProblem checkPlanarParams(const PlanarParams& p) {
+    if (InputProblem e = checkSlabParams(p); !e.empty()) return e;
+    return checkInput(kThetaInput, p.theta);
+}
+
 std::string validatePlanarParams(const PlanarParams& p) {
-    std::string e = validateSlabParams(p);
-    if (!e.empty()) return e;
-    std::ostringstream s;
-    if (!kSlipLimitRange.contains(p.theta))
-        s << "theta = " << p.theta << ": along-wall limit (2 wall length / wall width) must be > 0";
-    return s.str();
+    return describe(checkPlanarParams(p));
 }
 
 namespace {

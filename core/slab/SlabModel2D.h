@@ -23,6 +23,7 @@ namespace kinstab {
 struct PlanarParams : SlabParams {
     double theta = 20.0; // along the walls: collapse when |dy| > theta = 2 wall length / wall width
 };
+InputProblem checkPlanarParams(const PlanarParams& p);   // checkSlabParams and Θ
 std::string validatePlanarParams(const PlanarParams& p); // empty when fine
 
 struct Vec2 {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/SlabTypes.h"
-#include "core/slab/SlabLimits.h"
+#include "core/slab/SlabInputs.h"
 
 #include <cmath>
 #include <sstream>
@@ -53,16 +53,15 @@ std::string eventKindName(EventKind k) {
     return "?";
 }
 
+InputProblem checkSlabParams(const SlabParams& p) {
+    if (InputProblem e = checkInput(kMuInput, p.mu); !e.empty()) return e;
+    if (InputProblem e = checkInput(kLimitInput, p.limit); !e.empty()) return e;
+    if (p.duration) return checkInput(kDurationInput, *p.duration);
+    return {};
+}
+
 std::string validateSlabParams(const SlabParams& p) {
-    std::ostringstream s;
-    if (!kMuRange.contains(p.mu))
-        s << "mu = " << p.mu << ": friction coefficient must be between " << kMuRange.lo << " and "
-          << kMuRange.hi;
-    else if (!kSlipLimitRange.contains(p.limit))
-        s << "limit = " << p.limit << ": bearing limit (bearing / (d/2)) must be > 0";
-    else if (p.duration && (!std::isfinite(*p.duration) || *p.duration <= 0.0))
-        s << "duration = " << *p.duration << ": tau_out must be a positive number";
-    return s.str();
+    return describe(checkSlabParams(p));
 }
 
 } // namespace kinstab

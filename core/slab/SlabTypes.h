@@ -3,6 +3,8 @@
 // Inputs and results of one run of a slab model (docs/theory.md §4): value types shared by all
 // solvers.
 
+#include "core/base/NumberInput.h"
+
 #include <limits>
 #include <optional>
 #include <string>
@@ -42,6 +44,8 @@ struct SlabParams {
     double limit = 1.0;             // bearing length / (d/2): collapse when |delta| > limit
     std::optional<double> duration; // tau_out: a finite earthquake
 };
+// The first input out of its range (μ, limit, duration), or nothing.
+InputProblem checkSlabParams(const SlabParams& p);
 std::string validateSlabParams(const SlabParams& p); // empty when fine
 
 // What a solver did, so that error can be reported against work (docs/theory.md §6).

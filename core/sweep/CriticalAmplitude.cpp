@@ -2,16 +2,46 @@
 #include "core/sweep/CriticalAmplitude.h"
 
 #include "core/base/InternalError.h"
+#include "core/base/TextInput.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 namespace kinstab {
 
 double smallestTolerance(double maxAmplitude) {
     return 4.0 * std::numeric_limits<double>::epsilon() * std::abs(maxAmplitude);
+}
+
+InputProblem checkCriticalSearch(const CriticalSearch& s) {
+    for (const auto& [in, x] : {std::pair{&kSearchFromInput, s.from},
+                                {&kMaxAmplitudeInput, s.to},
+                                {&kScanStepInput, s.scanStep},
+                                {&kToleranceInput, s.tolerance}})
+        if (InputProblem p = checkInput(*in, x); !p.empty()) return p;
+    if (!(s.to > s.from))
+        return {"max_amplitude", s.to, "g",
+                "must exceed the scan's start, " + formatDouble(s.from) + " g"};
+    if (s.scanStep > s.to - s.from)
+        return {"scan_step", s.scanStep, "g",
+                "must be at most the searched range, " + formatDouble(s.to - s.from) + " g"};
+    const double finestStep = (s.to - s.from) / static_cast<double>(kMaxScanPoints);
+    if (s.scanStep < finestStep)
+        return {"scan_step", s.scanStep, "g",
+                "at most " + std::to_string(kMaxScanPoints) +
+                    " scan points; the smallest step up to " + formatDouble(s.to) + " g is " +
+                    formatDouble(finestStep) + " g"};
+    if (s.tolerance > s.scanStep)
+        return {"tolerance", s.tolerance, "g",
+                "must be at most the scan step, " + formatDouble(s.scanStep) + " g"};
+    if (s.tolerance < smallestTolerance(s.to))
+        return {"tolerance", s.tolerance, "g",
+                "below what double precision resolves at " + formatDouble(s.to) +
+                    " g (the smallest is " + formatDouble(smallestTolerance(s.to)) + " g)"};
+    return {};
 }
 
 CriticalResult criticalAmplitude(const PointFunction& point, double frequencyHz, double mu,

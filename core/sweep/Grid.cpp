@@ -3,7 +3,7 @@
 
 #include "core/base/InputLimits.h"
 #include "core/base/TextInput.h"
-#include "core/excitation/FrequencyRange.h"
+#include "core/excitation/EnvelopedSine.h"
 
 #include <cmath>
 #include <optional>
@@ -91,13 +91,13 @@ ParsedList parseList(const std::string& text) {
 std::string validateGrid(const SweepGrid& g) {
     if (g.amplitudes.empty()) return "amplitudes: the grid is empty";
     if (g.frequencies.empty()) return "frequencies: the grid is empty";
+    // Each point is an enveloped sine's amplitude and frequency (core/excitation/EnvelopedSine.h).
     for (double a : g.amplitudes)
-        if (!std::isfinite(a) || a < 0.0 || a > limits::kMaxAmplitudeG)
-            return "amplitudes: " + formatDouble(a) + " g is out of range (0 to " +
-                   formatDouble(limits::kMaxAmplitudeG) + ")";
+        if (const InputProblem p = checkInput(kAmplitudeInput, a); !p.empty())
+            return "amplitudes: " + valueAndWhy(p);
     for (double f : g.frequencies)
-        if (!std::isfinite(f) || !frequencyRangeError(f).empty())
-            return "frequencies: " + formatDouble(f) + " Hz " + frequencyRangeError(f);
+        if (const InputProblem p = checkInput(kFrequencyInput, f); !p.empty())
+            return "frequencies: " + valueAndWhy(p);
     // Each axis may be long; the product is what a sweep computes and stores.
     if (g.amplitudes.size() > limits::kMaxGridPoints / g.frequencies.size())
         return "amplitudes: " + std::to_string(g.amplitudes.size()) + " amplitudes x " +

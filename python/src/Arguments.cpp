@@ -25,6 +25,16 @@ double finite(const std::string& keyword, double value) {
     return value;
 }
 
+void refuse(const InputProblem& problem) {
+    if (!problem.empty()) badArgument(problem.key, problem.value, problem.why);
+}
+
+double keyword(const NumberInput& in, double value) {
+    finite(std::string(in.key), value);
+    refuse(checkInput(in, value));
+    return value;
+}
+
 std::string choice(const std::string& keyword, const std::string& value,
                    const std::string& allowedBarSeparated) {
     const std::string bars = "|" + allowedBarSeparated + "|";

@@ -83,9 +83,9 @@ void bindSlabCase(py::module_& m) {
 frequency. Checked when made: a bad value raises ValueError naming the keyword.)")
         .def(py::init(&makeSlabCase), py::kw_only(), py::arg("envelope") = "moderate",
              py::arg("tstar") = py::none(), py::arg("wall_width_in") = py::none(),
-             py::arg("mu") = 0.6, py::arg("limit") = 1.0, py::arg("duration") = py::none(),
-             py::arg("scale") = "tau_max", py::arg("solver") = "exact",
-             py::arg("paper_steps") = 16.0)
+             py::arg("mu") = kMuInput.fallback, py::arg("limit") = kLimitInput.fallback,
+             py::arg("duration") = py::none(), py::arg("scale") = "tau_max",
+             py::arg("solver") = "exact", py::arg("paper_steps") = kPaperStepsInput.fallback)
         .def_readonly("envelope", &Slab1DCase::envelope)
         .def_readonly("tstar", &Slab1DCase::tstar, "s")
         .def_property_readonly("mu", [](const Slab1DCase& c) { return c.slab.mu; })
@@ -108,7 +108,7 @@ void bindPlanarCase(py::module_& m) {
 1-DOF case's envelope, t*, mu, limit, duration and scale, plus the motion along the walls
 (A_y = ay_ratio A_x at fy Hz), the along-wall limit theta and an optional vertical record.)")
         .def(py::init(&makePlanarCase), py::arg("common"), py::kw_only(), py::arg("fy"),
-             py::arg("ay_ratio") = 0.9, py::arg("theta") = 20.0,
+             py::arg("ay_ratio") = kAyRatioInput.fallback, py::arg("theta") = kThetaInput.fallback,
              py::arg("normalization") = "product", py::arg("vertical") = py::none())
         .def_readonly("fy", &PlanarCase::fyHz, "Hz")
         .def_readonly("ay_ratio", &PlanarCase::ayRatio)

@@ -42,7 +42,9 @@ py::array_t<double> critical(const py::object& model, const py::object& frequenc
 
 void bindCritical(py::module_& m) {
     m.def("_critical", &critical, py::arg("case"), py::arg("frequencies"),
-          py::arg("max_amplitude") = 5.0, py::arg("scan_step") = 0.01, py::arg("tolerance") = 1e-6);
+          py::arg("max_amplitude") = kMaxAmplitudeInput.fallback,
+          py::arg("scan_step") = kScanStepInput.fallback,
+          py::arg("tolerance") = kToleranceInput.fallback);
 }
 
 } // namespace kinstab::python

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "python/src/PlanarArguments.h"
 #include "core/codes/Building.h"
-#include "core/excitation/FrequencyRange.h"
 
 #include "core/excitation/RecordedMotion.h"
 #include "core/records/RecordReader.h"
 #include "core/slab/PlanarSettings.h"
+#include "core/slab/SlabInputs.h"
 #include "python/src/Arguments.h"
 
 namespace kinstab::python {
@@ -30,19 +30,13 @@ PlanarCase planarCaseFrom(const Slab1DCase& common, const PlanarArguments& a) {
     if (common.solver == SolverKind::Paper)
         badArgument("solver='paper': the paper's RK4 solver is for the 1-DOF model only");
     PlanarCase c = planarCaseSharing(common);
-    c.ayRatio = finite("ay_ratio", a.ayRatio);
-    if (!(c.ayRatio >= 0.0 && c.ayRatio <= 100.0))
-        badArgument("ay_ratio", c.ayRatio, "A_y / A_x must be between 0 and 100");
-    c.fyHz = finite("fy", a.fy);
-    if (const std::string e = frequencyRangeError(c.fyHz); !e.empty()) badArgument("fy", c.fyHz, e);
-    c.slab.theta = finite("theta", a.theta);
-    if (!(c.slab.theta > 0.0 && c.slab.theta <= 1e6))
-        badArgument("theta", c.slab.theta, "must be > 0 (2 wall length / wall width)");
+    c.ayRatio = keyword(kAyRatioInput, a.ayRatio);
+    c.fyHz = keyword(kFyInput, a.fy);
+    c.slab.theta = keyword(kThetaInput, a.theta);
     c.normalization =
         *normalizationFromName(choice("normalization", a.normalization, "envelope|product"));
     if (a.vertical) c.vertical = verticalFromFile(*a.vertical, c.tstar);
-    const std::string e = validatePlanarCase(c);
-    if (!e.empty()) badArgument(e);
+    refuse(checkPlanarCase(c));
     return c;
 }
 

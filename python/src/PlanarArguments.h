@@ -4,6 +4,7 @@
 // kinstab-cli checks --model planar's flags (app/cli/PlanarFlags.cpp).
 
 #include "core/slab/PlanarCase.h"
+#include "core/slab/SlabInputs.h"
 
 #include <optional>
 #include <string>
@@ -12,8 +13,8 @@ namespace kinstab::python {
 
 struct PlanarArguments {
     double fy = 1.0;
-    double ayRatio = 0.9;
-    double theta = 20.0;
+    double ayRatio = kAyRatioInput.fallback;
+    double theta = kThetaInput.fallback;
     std::string normalization = "product";
     std::optional<std::string> vertical; // a record file of the upward acceleration
 };

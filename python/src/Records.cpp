@@ -31,10 +31,7 @@ RecordReadOptions readOptions(const std::string& format, std::optional<double> d
     RecordReadOptions o;
     o.format =
         *recordFormatFromName(choice("format", format, "at2|auto|cosmos|csmip|time-accel|values"));
-    if (dt) {
-        if (!(*dt > 0.0 && *dt <= 10.0)) badArgument("dt", *dt, "must be > 0 and at most 10 s");
-        o.dt = *dt;
-    }
+    if (dt) o.dt = keyword(kRecordDtInput, *dt);
     if (unit) {
         o.unit = accelUnitFromName(*unit);
         if (!o.unit)
@@ -130,17 +127,8 @@ py::dict recordRun(const Slab1DCase& c, const std::string& path, std::optional<d
     if (floorPeriod) in.record.floor = floorParams(*floorPeriod, damping, std::nullopt);
     if (amplitude && scaleFactor)
         badArgument("scale_factor", *scaleFactor, "amplitude and scale_factor exclude each other");
-    if (amplitude) {
-        finite("amplitude", *amplitude);
-        if (!(*amplitude > 0.0 && *amplitude <= limits::kMaxAmplitudeG))
-            badArgument("amplitude", *amplitude,
-                        "target peak must be > 0 and at most " +
-                            formatDouble(limits::kMaxAmplitudeG) + " g");
-        in.record.targetPeak = amplitude;
-    }
-    in.record.scaleFactor = finite("scale_factor", scaleFactor.value_or(1.0));
-    if (!(in.record.scaleFactor > 0.0 && in.record.scaleFactor <= 1e6))
-        badArgument("scale_factor", in.record.scaleFactor, "must be > 0 and at most 1e6");
+    if (amplitude) in.record.targetPeak = keyword(kTargetPeakInput, *amplitude);
+    in.record.scaleFactor = keyword(kScaleFactorInput, scaleFactor.value_or(1.0));
     in.critical = critical;
     in.search = searchFrom(maxAmplitude, scanStep, tolerance);
     if (historyStep) {
@@ -189,8 +177,9 @@ void bindRecords(py::module_& m) {
     m.def("_simulate_record", &recordRun, py::arg("case"), py::arg("path"),
           py::arg("amplitude") = py::none(), py::arg("scale_factor") = py::none(),
           py::arg("floor_period") = py::none(), py::arg("damping") = 0.02,
-          py::arg("critical") = false, py::arg("max_amplitude") = 5.0, py::arg("scan_step") = 0.01,
-          py::arg("tolerance") = 1e-6, py::arg("events") = false,
+          py::arg("critical") = false, py::arg("max_amplitude") = kMaxAmplitudeInput.fallback,
+          py::arg("scan_step") = kScanStepInput.fallback,
+          py::arg("tolerance") = kToleranceInput.fallback, py::arg("events") = false,
           py::arg("history_step") = py::none());
 }
 

@@ -28,13 +28,8 @@ namespace kinstab::python {
 namespace {
 
 void checkAmplitudeFrequency(double amplitude, double frequency) {
-    finite("amplitude", amplitude);
-    finite("frequency", frequency);
-    if (!(amplitude >= 0.0 && amplitude <= limits::kMaxAmplitudeG))
-        badArgument("amplitude", amplitude,
-                    "must be between 0 and " + formatDouble(limits::kMaxAmplitudeG) + " g");
-    if (const std::string e = frequencyRangeError(frequency); !e.empty())
-        badArgument("frequency", frequency, e);
+    keyword(kAmplitudeInput, amplitude);
+    keyword(kFrequencyInput, frequency);
 }
 
 SlabRun simulate(const Slab1DCase& c, double amplitude, double frequency, bool events, bool history,

@@ -4,6 +4,7 @@
 // (app/cli/ModelFlags.cpp): same limits, same messages, keyword for flag.
 
 #include "core/slab/Slab1DCase.h"
+#include "core/slab/SlabInputs.h"
 
 #include <optional>
 #include <string>
@@ -14,12 +15,12 @@ struct SlabCaseArguments {
     Envelope envelope = Envelope::fromPreset(EnvelopePreset::Moderate);
     std::optional<double> tstar;
     std::optional<double> wallWidthIn;
-    double mu = 0.6;
-    double limit = 1.0;
+    double mu = kMuInput.fallback;
+    double limit = kLimitInput.fallback;
     std::optional<double> duration;
     std::string scale = "tau_max";
     std::string solver = "exact";
-    double paperSteps = 16;
+    double paperSteps = kPaperStepsInput.fallback;
 };
 
 // Throws ValueError naming the keyword and value.

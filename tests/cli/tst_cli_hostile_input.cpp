@@ -152,7 +152,8 @@ private slots:
         QVERIFY(!QFile::exists(dir.filePath("r.pdf")));
     }
     void nonsenseFlags() {
-        refused(cli({"critical", "--frequencies", "1", "--mu", "0"}), "--mu 0: A_crit needs");
+        refused(cli({"critical", "--frequencies", "1", "--mu", "0"}),
+                "--mu 0: friction coefficient must be between 0.01 and 10");
         refused(cli({"report", "--project", kExample, "-o", ""}),
                 "-o \"\": the file name is empty");
         // 20.16 s of run (tau_end of this case) every 1e-7: 2e8 rows; it once took 24 GB.

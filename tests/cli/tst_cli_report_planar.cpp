@@ -112,8 +112,9 @@ private slots:
     void badPlanarField_data() {
         QTest::addColumn<QByteArray>("planar");
         QTest::addColumn<QString>("message");
-        QTest::newRow("negative f_y") << QByteArray(R"({"fy_hz": -1})")
-                                      << "planar.fy_hz = -1 Hz: must be between 0.001 and 1000";
+        QTest::newRow("negative f_y")
+            << QByteArray(R"({"fy_hz": -1})")
+            << "planar.fy_hz = -1 Hz: frequency along the walls must be between 0.001 and 1000 Hz";
         QTest::newRow("missing vertical file")
             << QByteArray(R"({"vertical": {"file": "/nonexistent/UP.AT2"}})")
             << "planar.vertical = '/nonexistent/UP.AT2'";

@@ -174,6 +174,32 @@ private slots:
         const QByteArray err = refusal(study("{\"path\": \"" + kElc + "\"}", rest));
         QVERIFY2(err.contains(named), err);
     }
+    // Issue 31: the search's and the parameters' rules are core's declarations, named by the
+    // spec's own keys (max_g, not check.max_amplitude; a tiny max_g blames max_g, not the step).
+    void badSearchAndParametersNameTheSpecKey_data() {
+        QTest::addColumn<QByteArray>("spec");
+        QTest::addColumn<QByteArray>("named");
+        const QByteArray head = "{\"format\": \"kinstab-study\", \"version\": 1, \"records\": "
+                                "[{\"path\": \"" +
+                                kElc + "\"}], ";
+        QTest::newRow("max_g -1") << head + "\"search\": {\"max_g\": -1}}"
+                                  << QByteArray("search.max_g = -1 g: largest amplitude searched");
+        QTest::newRow("max_g 1e-300")
+            << head + "\"search\": {\"max_g\": 1e-300}}" << QByteArray("search.max_g = 1e-300 g:");
+        QTest::newRow("a million scan points")
+            << head + "\"search\": {\"max_g\": 1000, \"scan_step_g\": 0.001}}"
+            << QByteArray("search.scan_step_g = 0.001 g: at most 100000 scan points");
+        QTest::newRow("tstar 1e-300") << head + "\"parameters\": {\"tstar\": [1e-300]}}"
+                                      << QByteArray("parameters.tstar[0] = 1e-300: t* = sqrt");
+        QTest::newRow("mu 1e-300") << head + "\"parameters\": {\"mu\": [0.6, 1e-300]}}"
+                                   << QByteArray("parameters.mu[1] = 1e-300: friction coefficient");
+    }
+    void badSearchAndParametersNameTheSpecKey() {
+        QFETCH(QByteArray, spec);
+        QFETCH(QByteArray, named);
+        const QByteArray err = refusal(spec);
+        QVERIFY2(err.contains(named), err);
+    }
     void fittedSineIsTheCriticalCommandsEnvelopedSine() {
         const auto rows = runStudy(study("{\"path\": \"" + kElc + "\"}",
                                          "\"parameters\": {\"mu\": [0.5], \"motion\": "

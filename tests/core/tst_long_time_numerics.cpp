@@ -110,8 +110,8 @@ private slots:
     void frequencyLimitRefused() {
         QVERIFY(validateEnvelopedSine(1.0, kMinFrequencyHz, 0.099).empty());
         QVERIFY(QString::fromStdString(validateEnvelopedSine(1.0, 1e-4, 0.099)).contains("0.001"));
-        QVERIFY(!frequencyRangeError(0.999e-3).empty());
-        QVERIFY(frequencyRangeError(1000.0).empty());
+        QVERIFY(!checkInput(kFrequencyInput, 0.999e-3).empty());
+        QVERIFY(checkInput(kFrequencyInput, 1000.0).empty());
     }
     void bisectionBelowOneUlpEnds() {
         // A tolerance below double resolution (1e-17 g at A ~ 1) cannot loop: the search stops

@@ -95,16 +95,20 @@ private slots:
     void badField_data() {
         QTest::addColumn<QByteArray>("planar");
         QTest::addColumn<QString>("message");
-        QTest::newRow("negative f_y") << QByteArray(R"({"fy_hz": -1})")
-                                      << "planar.fy_hz = -1 Hz: must be between 0.001 and 1000";
-        QTest::newRow("zero f_y") << QByteArray(R"({"fy_hz": 0})")
-                                  << "planar.fy_hz = 0 Hz: must be between 0.001 and 1000";
+        QTest::newRow("negative f_y")
+            << QByteArray(R"({"fy_hz": -1})")
+            << "planar.fy_hz = -1 Hz: frequency along the walls must be between 0.001 and 1000 Hz";
+        QTest::newRow("zero f_y")
+            << QByteArray(R"({"fy_hz": 0})")
+            << "planar.fy_hz = 0 Hz: frequency along the walls must be between 0.001 and 1000 Hz";
         QTest::newRow("f_y not a number")
             << QByteArray(R"({"fy_hz": "fast"})") << "planar.fy_hz: expected a number";
-        QTest::newRow("negative ratio") << QByteArray(R"({"ay_ratio": -0.5})")
-                                        << "planar.ay_ratio = -0.5: must be between 0 and 100";
-        QTest::newRow("zero theta")
-            << QByteArray(R"({"theta": 0})") << "planar.theta = 0: must be > 0";
+        QTest::newRow("negative ratio")
+            << QByteArray(R"({"ay_ratio": -0.5})")
+            << "planar.ay_ratio = -0.5: A_y / A_x must be between 0 and 100";
+        QTest::newRow("zero theta") << QByteArray(R"({"theta": 0})")
+                                    << "planar.theta = 0: along-wall limit (2 wall length / wall "
+                                       "width) must be between 0.001";
         QTest::newRow("unknown normalization")
             << QByteArray(R"({"normalization": "peak"})")
             << "planar.normalization: 'peak' must be product or envelope";

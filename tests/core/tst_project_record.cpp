@@ -127,6 +127,12 @@ private slots:
         QTest::newRow("dt negative") << "dt"
                                      << "-0.01"
                                      << "excitation.record.dt = -0.01";
+        // Issue 30: below the readers' 1e-4 s the value was accepted and refused later against
+        // the file; the one declaration (kRecordDtInput) names dt.
+        QTest::newRow("dt below 0.1 ms") << "dt"
+                                         << "1e-5"
+                                         << "excitation.record.dt = 1e-05 s: sample interval "
+                                            "must be between 1e-04 and 10 s";
         QTest::newRow("unit") << "unit"
                               << R"("furlong")"
                               << "excitation.record.unit: 'furlong'";
@@ -183,7 +189,7 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(ProjectError,
                                  saveProject(p, (tempDir("save") / "p.json").string()));
         QVERIFY(QString::fromStdString(validateProject(p))
-                    .startsWith("excitation.record.target_peak_g = 0: must be > 0"));
+                    .startsWith("excitation.record.target_peak_g = 0 g: target peak must be > 0"));
     }
 };
 

@@ -160,13 +160,13 @@ private slots:
         QTest::addColumn<QString>("reason");
         QTest::newRow("negative mu") << "mu"
                                      << "-0.2"
-                                     << "must be ≥ 0 "; // μ = 0 runs (validateSlabParams)
+                                     << "must be ≥ 0.01 "; // kMuInput (core/slab/SlabInputs.h)
         QTest::newRow("mu not a number") << "mu"
                                          << "abc"
                                          << "is not a number";
         QTest::newRow("zero t*") << "tstar"
                                  << "0"
-                                 << "must be >";
+                                 << "must be ≥ 0.001";
         QTest::newRow("empty bearing") << "limit"
                                        << ""
                                        << "required";

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The slab, model and grid panels accept exactly what the run's validators accept: each limit
-// is written once in core (core/slab/SlabLimits.h, core/base/InputLimits.h,
+// is written once in core (core/slab/SlabInputs.h, core/base/InputLimits.h,
 // core/excitation/FrequencyRange.h). The values sit just inside and just outside those ranges;
 // before the limits were shared the panels refused mu = 0 and A = 500 g, which a run accepts.
 
@@ -43,11 +43,13 @@ private slots:
 
     void slabFields() {
         SlabPanel panel;
-        for (double mu : {0.0, 10.0, 10.5, -0.1})
+        for (double mu : {0.0, 0.005, 0.01, 10.0, 10.5, -0.1})
             agree(panel, "mu", mu, slabAccepts(mu, 1.0));
-        for (double limit : {0.0, 1e6, 2e6})
+        for (double limit : {0.0, 1e-4, 1e-3, 1e6, 2e6})
             agree(panel, "limit", limit, slabAccepts(0.6, limit));
-        QVERIFY(slabAccepts(0.0, 1.0)); // the row that used to disagree
+        // mu = 0.005 is below the slipperiest bearing (core/slab/SlabInputs.h): refused by both.
+        QVERIFY(!slabAccepts(0.005, 1.0));
+        QVERIFY(slabAccepts(0.01, 1.0));
     }
 
     void modelFields() {
