@@ -21,6 +21,10 @@ void checkPoint(const std::vector<HazardPoint>& p, std::size_t i,
     if (!std::isfinite(q.imG) || !(q.imG > 0.0))
         throw HazardError(where(i) + ": intensity " + number(q.imG) +
                           " g must be a finite number > 0");
+    if (q.imG < kMinHazardIntensityG || q.imG > limits::kMaxAmplitudeG)
+        throw HazardError(where(i) + ": intensity " + number(q.imG) + " g is outside " +
+                          number(kMinHazardIntensityG) + " to " + number(limits::kMaxAmplitudeG) +
+                          " g: not an intensity in g");
     if (!std::isfinite(q.annualRate) || !(q.annualRate > 0.0))
         throw HazardError(where(i) + ": annual rate " + number(q.annualRate) +
                           " must be a finite number > 0");

@@ -21,6 +21,12 @@ struct HazardError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// Intensities of a hazard curve lie within 1e-6 g (a thousand times below the smallest any hazard
+// source tabulates) and limits::kMaxAmplitudeG: beyond, a value is in other units than g. The
+// range also keeps every median the risk targets search (ln x -+ 108 beta, beta <= 5) a finite,
+// normal double.
+inline constexpr double kMinHazardIntensityG = 1e-6;
+
 struct HazardPoint {
     double imG = 0;        // g
     double annualRate = 0; // of exceeding imG, per year

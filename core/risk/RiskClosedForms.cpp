@@ -63,6 +63,9 @@ FirstOrderForm firstOrderForm(const HazardCurve& c, const CollapseFragility& f) 
     r.lambdaAtMedian = hazardRateAt(c, f.medianG);
     r.k0 = r.lambdaAtMedian * std::pow(f.medianG, r.k);
     r.lambdaC = r.lambdaAtMedian * std::exp(0.5 * r.k * r.k * f.beta * f.beta);
+    if (!std::isfinite(r.k0) || !std::isfinite(r.lambdaC))
+        r.why = "with the local slope k = " + formatDouble(r.k) + " and beta " +
+                formatDouble(f.beta) + " the form overflows double precision";
     return r;
 }
 
@@ -101,6 +104,8 @@ SecondOrderForm secondOrderForm(const HazardCurve& c, const CollapseFragility& f
         return r;
     }
     r.lambdaC = *rate;
+    if (!std::isfinite(r.k0) || !std::isfinite(r.lambdaC))
+        r.why = "the fitted k0, k1, k2 (a curve far from second order) overflow double precision";
     return r;
 }
 

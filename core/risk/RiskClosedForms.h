@@ -31,7 +31,7 @@ double firstOrderRiskRate(double k0, double k, const CollapseFragility& f);
 std::optional<double> secondOrderRiskRate(double k0, double k1, double k2,
                                           const CollapseFragility& f);
 
-// A form that does not apply says why (and its numbers stay 0).
+// A form that does not apply (or overflows) says why, and its numbers are not to be read.
 struct FirstOrderForm {
     std::string why;               // empty: the form applies
     double k = 0, k0 = 0;          // lambda(x) = k0 x^-k near theta, x in g

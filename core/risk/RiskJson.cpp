@@ -17,9 +17,11 @@ const char* const kRiskIntegrationRule =
 
 namespace {
 
-// The ratio of a closed form to the integral, or null when the integral underflowed to 0.
+// The ratio of a closed form to the integral, or null when the integral underflowed to 0 (or the
+// ratio overflows).
 ojson ratio(double x, double lambdaC) {
-    return lambdaC > 0.0 ? ojson(x / lambdaC) : ojson();
+    const double r = x / lambdaC;
+    return lambdaC > 0.0 && std::isfinite(r) ? ojson(r) : ojson();
 }
 
 ojson integrationJson(const HazardCurve& c, const RiskIntegral& i) {

@@ -237,6 +237,9 @@ private slots:
                                   << "h.txt:4: annual rate nan must be a finite number > 0";
         QTest::newRow("negative rate") << QString::fromStdString(pga + "0.1,0.01\n0.2,-1e-3\n")
                                        << "h.txt:4: annual rate -0.001 must be a finite number > 0";
+        QTest::newRow("intensity in other units")
+            << QString::fromStdString(pga + "0.1,0.01\n9810,0.001\n")
+            << "h.txt:4: intensity 9810 g is outside 1e-06 to 1000 g: not an intensity in g";
         QTest::newRow("zero intensity") << QString::fromStdString(pga + "0,0.01\n0.2,1e-3\n")
                                         << "h.txt:3: intensity 0 g must be a finite number > 0";
         QTest::newRow("decimal comma")

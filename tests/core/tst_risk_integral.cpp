@@ -240,7 +240,7 @@ private slots:
         // target)^(1/k).
         const double want = std::pow(k0 * std::exp(k * k * beta * beta / 2) / target, 1.0 / k);
         const double lo = want * std::exp(-k * beta * beta - 12 * beta);
-        const double hi = want * std::exp(12 * beta);
+        const double hi = want * std::exp(10 * beta); // within 1000 g
         const HazardCurve c = tabulate([&](double x) { return k0 * std::pow(x, -k); }, lo, hi, 30);
         const RiskTargetedMedian t = riskTargetedMedian(c, beta, target);
         QVERIFY2(t.medianG, t.why.c_str());
@@ -290,16 +290,30 @@ private slots:
         QVERIFY(!secondOrderForm(c, {100.0, 0.4}).why.empty());
     }
 
+    void closedFormsSayWhyTheyOverflow() {
+        // A steep top (1e-4 to 1e-10 between 1 and 1.2 g) and beta 5: the secant's k = 18.4 and
+        // exp(k^2 beta^2 / 2) = exp(4232) is beyond double precision; the integral is finite.
+        const std::vector<HazardPoint> p = {{0.5, 1e-3}, {1.0, 1e-4}, {1.2, 1e-10}};
+        const HazardCurve c = hazardCurve({}, p, "steep", [](std::size_t) { return ""; });
+        const CollapseFragility f{1.0, 5.0};
+        QVERIFY(std::isfinite(riskIntegral(c, f).lambdaC));
+        const FirstOrderForm first = firstOrderForm(c, f);
+        QVERIFY2(first.why.find("overflows") != std::string::npos, first.why.c_str());
+        const SecondOrderForm second = secondOrderForm(c, f);
+        QVERIFY(!second.why.empty() || std::isfinite(second.lambdaC));
+    }
+
     void bootstrapPercentiles() {
         // lambda_C of five resamples on a power law (each k0 theta^-k exp(k^2 beta^2 / 2) by the
-        // first test) and one unfitted resample counted as 0: sorted {0, l(2.0), l(1.5), l(1.0),
-        // l(0.8), l(0.6)}; type-7 quantiles at positions 0.25, 2.5 and 4.75 of 0..5.
+        // first test; the curve 1e-3 to 500 g reaches 10 beta beyond each) and one unfitted
+        // resample counted as 0: sorted {0, l(2.0), l(1.5), l(1.0), l(0.8), l(0.6)}; type-7
+        // quantiles at positions 0.25, 2.5 and 4.75 of 0..5.
         const double k0 = 1e-4, k = 3, beta = 0.4;
         const auto l = [&](double theta) {
             return k0 * std::pow(theta, -k) * std::exp(k * k * beta * beta / 2);
         };
         const HazardCurve c =
-            tabulate([&](double x) { return k0 * std::pow(x, -k); }, 1e-3, 1e3, 60);
+            tabulate([&](double x) { return k0 * std::pow(x, -k); }, 1e-3, 500, 60);
         std::vector<std::optional<LognormalFit>> fits;
         for (double theta : {1.0, 0.6, 2.0, 1.5, 0.8})
             fits.push_back(LognormalFit{theta, beta, 0.0});
