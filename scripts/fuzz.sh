@@ -9,7 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build="${FUZZ_BUILD:-build-fuzz}"
 seconds="${FUZZ_SECONDS:-30}"
-readers=(at2 cosmos csmip plaintext project friction_csv)
+readers=(at2 cosmos csmip plaintext project friction_csv hazard)
 if [ ! -f "$build/CMakeCache.txt" ]; then
   CC=clang CXX=clang++ BUILD_DIR="$build" BUILD_TYPE=RelWithDebInfo bash scripts/build.sh \
     -DKINSTAB_FUZZ=ON "$@"
@@ -28,6 +28,7 @@ seed csmip resources/records/*.V2
 seed plaintext resources/records/*.acc resources/records/*.AT2 resources/records/*.V2
 seed project resources/examples/*.json
 seed friction_csv resources/data/furgerson1980/*.csv
+seed hazard resources/examples/hazard-*.csv
 
 export ASAN_OPTIONS=detect_leaks=0:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1

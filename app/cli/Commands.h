@@ -24,6 +24,7 @@ int runFloors(const ArgList& args);
 int runStudyCommand(const ArgList& args); // study (StudyCommand.cpp)
 int runMerge(const ArgList& args);
 int runFragility(const ArgList& args);
+int runRisk(const ArgList& args);
 
 class Args;
 // simulate --record FILE (SimulateRecord.cpp), called by runSimulate.

@@ -214,6 +214,29 @@ const char* kFragility =
     "  --level P                    two-sided confidence level of the bounds [0.9]\n"
     "  -o FILE                      output file [stdout]\n";
 
+const char* kRisk =
+    "usage: kinstab-cli risk --hazard FILE [--hazard-format auto|openquake|usgs|csv]\n"
+    "                        [--site LON,LAT] (--results FILE.jsonl [--set K] | --median G\n"
+    "                        --beta B | --beta B) [--years N] [--target-rate R] [--im G]\n"
+    "  --hazard FILE                the site's hazard curve: OpenQuake hazard_curve CSV, USGS\n"
+    "                               hazard JSON or a CSV im_g,annual_rate\n"
+    "  --hazard-format F            auto|openquake|usgs|csv [auto: from the file's text]\n"
+    "  --site LON,LAT               OpenQuake: the site's row, degrees [the first row]\n"
+    "  --results FILE               study results (JSONL): the fragility of each parameter set\n"
+    "  --set K                      only parameter set K of the results, with bootstrap\n"
+    "                               percentiles [every set]\n"
+    "  --median G                   a fragility's median, g (with --beta)\n"
+    "  --beta B                     its dispersion; alone: the risk-targeted median for B\n"
+    "  --measure M                  the fragility's measure: pga, sa(1s/5%), SA(1.0) [none]\n"
+    "  --years N                    years of the probability of collapse [50]\n"
+    "  --target-rate R              annual rate of collapse aimed at, per year\n"
+    "                               [2.0101e-4: 1 % in 50 years, ASCE 7-22 ch. 21]\n"
+    "  --im G                       an intensity, g (e.g. the site's MCE_R): P(collapse) there\n"
+    "                               against the 10 % target\n"
+    "  --bootstrap N                bootstrap resamples over records: percentiles [1000]\n"
+    "  --seed S                     bootstrap seed [1]\n"
+    "  -o FILE                      output file [stdout]\n";
+
 } // namespace
 
 const std::vector<CommandHelp>& commandHelps() {
@@ -232,6 +255,7 @@ const std::vector<CommandHelp>& commandHelps() {
         {"study", "critical intensities of a record suite x parameters (JSONL)", kStudy},
         {"merge", "merge the shards of a study into one results file", kMerge},
         {"fragility", "lognormal collapse fragility from study results", kFragility},
+        {"risk", "annual rate and probability of collapse from a hazard curve", kRisk},
     };
     return t;
 }

@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
         {"bench", runBench},       {"precision", runPrecision}, {"record", runRecord},
         {"codes", runCodes},       {"check", runCheck},         {"friction", runFriction},
         {"report", runReport},     {"floors", runFloors},       {"study", runStudyCommand},
-        {"merge", runMerge},       {"fragility", runFragility},
+        {"merge", runMerge},       {"fragility", runFragility}, {"risk", runRisk},
     };
     const std::string first = argc < 2 ? std::string() : argv[1];
     if (argc < 2 || first == "--help" || first == "-h") {

@@ -29,6 +29,13 @@ inline constexpr std::uintmax_t kMaxRecordFileBytes = 256u * 1024u * 1024u;
 inline constexpr std::uintmax_t kMaxProjectFileBytes = 16u * 1024u * 1024u;
 inline constexpr std::uintmax_t kMaxCsvFileBytes = 64u * 1024u * 1024u;
 
+// Points of one hazard curve (core/risk). OpenQuake and the USGS tabulate 20 to 100 intensities;
+// 10,000 is finer than any hazard calculation and keeps every integral over the curve instant.
+inline constexpr std::size_t kMaxHazardPoints = 10'000;
+// Bytes of a hazard file. An OpenQuake file holds one row per site: 64 MB is some 100,000 sites
+// of 50 intensities, a regional run; one site's curve is a few kilobytes.
+inline constexpr std::uintmax_t kMaxHazardFileBytes = 64u * 1024u * 1024u;
+
 // Nesting of arrays and objects in a JSON document. A project nests four levels deep; 64
 // leaves room for any future layout and keeps every recursive walk of the document shallow.
 inline constexpr int kMaxJsonDepth = 64;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/Fragility.h"
 
+#include "core/numerics/Quantile.h"
 #include "core/study/KaplanMeier.h"
 
 #include <algorithm>
@@ -23,18 +24,6 @@ CensoredSample sampleOf(const std::vector<const StudyRow*>& rows) {
             s.censored.push_back(r->limitIntensity);
     }
     return s;
-}
-
-// The q-quantile of sorted values, linear between order statistics.
-double quantile(const std::vector<double>& sorted, double q) {
-    const double pos = q * static_cast<double>(sorted.size() - 1);
-    const auto i = static_cast<std::size_t>(std::floor(pos));
-    const std::size_t j = std::min(i + 1, sorted.size() - 1);
-    const double w = pos - static_cast<double>(i);
-    // An infinite value (an unfitted resample's median) is reached, never interpolated into NaN.
-    if (w == 0.0 || sorted[i] == sorted[j]) return sorted[i];
-    if (std::isinf(sorted[j])) return sorted[j];
-    return sorted[i] + w * (sorted[j] - sorted[i]);
 }
 
 // One fit per resample; none where the resample cannot be fitted.
@@ -98,18 +87,52 @@ std::vector<FragilityPoint> empiricalPoints(const std::vector<const StudyRow*>& 
 
 constexpr int kCurvePoints = 41;
 
+// Mean and standard deviation (divisor n - 1) of v, not empty.
+std::pair<double, std::optional<double>> meanAndDeviation(const std::vector<double>& v) {
+    double mean = 0.0;
+    for (double x : v)
+        mean += x / static_cast<double>(v.size());
+    if (v.size() < 2) return {mean, std::nullopt};
+    double sum = 0.0;
+    for (double x : v)
+        sum += (x - mean) * (x - mean);
+    return {mean, std::sqrt(sum / static_cast<double>(v.size() - 1))};
+}
+
+RecordStatistics recordStatistics(const std::vector<const StudyRow*>& rows) {
+    RecordStatistics s;
+    std::vector<double> x, ln;
+    for (const StudyRow* r : rows)
+        if (r->criticalIntensity && *r->criticalIntensity > 0.0) {
+            x.push_back(*r->criticalIntensity);
+            ln.push_back(std::log(*r->criticalIntensity));
+        }
+    s.collapsed = x.size();
+    s.censored = rows.size() - x.size();
+    if (x.empty()) return s;
+    std::tie(s.meanG, s.stdG) = meanAndDeviation(x);
+    std::tie(s.meanLn, s.stdLn) = meanAndDeviation(ln);
+    std::sort(x.begin(), x.end());
+    s.medianG = quantile(x, 0.5);
+    return s;
+}
+
+// The rows the fit and the bootstrap use, in case order: a fitted_sine row without a fit is no
+// record surviving the search, so it is left out.
+std::vector<const StudyRow*> fittedRows(const std::vector<StudyRow>& rows) {
+    std::vector<const StudyRow*> ptrs;
+    for (const StudyRow& r : rows)
+        if (r.noFit.empty()) ptrs.push_back(&r);
+    std::sort(ptrs.begin(), ptrs.end(), [](auto* x, auto* y) { return x->index < y->index; });
+    return ptrs;
+}
+
 } // namespace
 
 Fragility fragilityOf(const std::vector<StudyRow>& rows, const BootstrapSettings& b) {
-    std::vector<const StudyRow*> ptrs;
+    const std::vector<const StudyRow*> ptrs = fittedRows(rows);
     Fragility f;
-    // A fitted_sine row without a fit is no record surviving the search: it is left out.
-    for (const StudyRow& r : rows)
-        if (r.noFit.empty())
-            ptrs.push_back(&r);
-        else
-            ++f.withoutFit;
-    std::sort(ptrs.begin(), ptrs.end(), [](auto* x, auto* y) { return x->index < y->index; });
+    f.withoutFit = rows.size() - ptrs.size();
     if (ptrs.empty()) {
         if (!rows.empty()) f.parameters = rows.front();
         f.noFit = "no record has an envelope fit";
@@ -124,6 +147,7 @@ Fragility fragilityOf(const std::vector<StudyRow>& rows, const BootstrapSettings
     }
     f.points = empiricalPoints(ptrs);
     f.collapsed = f.points.size();
+    f.statistics = recordStatistics(ptrs);
     f.fit = fitLognormal(sampleOf(ptrs), &f.noFit);
     f.resamples = b.resamples;
     if (!f.fit) return f;
@@ -143,6 +167,13 @@ Fragility fragilityOf(const std::vector<StudyRow>& rows, const BootstrapSettings
         std::count_if(fits.begin(), fits.end(), [](const auto& x) { return x.has_value(); }));
     if (!fits.empty()) addBounds(f, fits, b.level);
     return f;
+}
+
+std::vector<std::optional<LognormalFit>> fragilityResamples(const std::vector<StudyRow>& rows,
+                                                            const BootstrapSettings& b) {
+    const std::vector<const StudyRow*> ptrs = fittedRows(rows);
+    if (ptrs.empty()) return {};
+    return bootstrapFits(ptrs, b);
 }
 
 std::vector<Fragility> studyFragility(const std::vector<StudyRow>& rows,

@@ -27,6 +27,15 @@ struct FragilityCurvePoint {
     std::optional<double> lower, upper; // pointwise bootstrap bounds; none without a bootstrap
 };
 
+// What SLAMMER-style record-suite summaries give beside a fitted fragility: the spread of the
+// critical intensity over the records that collapse (the censored ones have none, and are
+// counted). Standard deviations with divisor n - 1 (none below two collapses).
+struct RecordStatistics {
+    std::size_t collapsed = 0, censored = 0;
+    std::optional<double> meanG, medianG, stdG; // of the critical intensities, g
+    std::optional<double> meanLn, stdLn;        // of their natural logarithms (ln g)
+};
+
 struct Fragility {
     StudyRow parameters; // the set's first row: mu, t*, floor, measure
     std::size_t records = 0, collapsed = 0;
@@ -47,6 +56,7 @@ struct Fragility {
     std::size_t resamples = 0, fitted = 0; // bootstrap resamples asked for and fitted
     std::vector<FragilityPoint> points;
     std::vector<FragilityCurvePoint> curve;
+    RecordStatistics statistics;
 };
 
 struct BootstrapSettings {
@@ -57,6 +67,11 @@ struct BootstrapSettings {
 
 // rows: one parameter set's rows (any order). Deterministic for a given seed.
 Fragility fragilityOf(const std::vector<StudyRow>& rows, const BootstrapSettings& b);
+// The bootstrap's resampled fits in resample order, none where a resample cannot be fitted: the
+// resamples whose percentiles are fragilityOf's bounds (the same rows, seed and order), for what
+// is computed from each fit (core/risk). Empty when no row has an envelope fit.
+std::vector<std::optional<LognormalFit>> fragilityResamples(const std::vector<StudyRow>& rows,
+                                                            const BootstrapSettings& b);
 // Groups rows by parameter set, in set order.
 std::vector<Fragility> studyFragility(const std::vector<StudyRow>& rows,
                                       const BootstrapSettings& b);

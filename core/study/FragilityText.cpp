@@ -17,18 +17,22 @@ ojson orNull(const std::optional<double>& v) {
     return v && std::isfinite(*v) ? ojson(*v) : ojson();
 }
 
+// Over the records that collapse; the censored ones counted.
+ojson recordStatisticsJson(const RecordStatistics& s) {
+    return {{"collapsed", s.collapsed},
+            {"censored", s.censored},
+            {"critical_im_mean_g", orNull(s.meanG)},
+            {"critical_im_median_g", orNull(s.medianG)},
+            {"critical_im_std_g", orNull(s.stdG)},
+            {"ln_critical_im_mean", orNull(s.meanLn)},
+            {"ln_critical_im_std", orNull(s.stdLn)}};
+}
+
 ojson setJson(const Fragility& f) {
-    const StudyRow& p = f.parameters;
-    ojson j = {{"set", p.set},
-               {"mu", p.mu},
-               {"tstar", p.tstar},
-               {"limit", p.limit},
-               {"floor_period_s", orNull(p.floorPeriod)},
-               {"floor_damping", orNull(p.floorDamping)}};
-    if (p.level) j["level"] = *p.level;
-    if (p.motion) j["motion"] = *p.motion;
+    ojson j = fragilityParametersJson(f.parameters);
     j["records"] = f.records;
     j["collapsed"] = f.collapsed;
+    j["record_statistics"] = recordStatisticsJson(f.statistics);
     if (f.withoutFit > 0) j["records_without_fit"] = f.withoutFit;
     if (f.collapsedAsGiven) j["collapsed_as_given_fraction"] = *f.collapsedAsGiven;
     if (f.fit) {
@@ -83,6 +87,18 @@ std::string cell(const std::optional<double>& v) {
 }
 
 } // namespace
+
+ojson fragilityParametersJson(const StudyRow& p) {
+    ojson j = {{"set", p.set},
+               {"mu", p.mu},
+               {"tstar", p.tstar},
+               {"limit", p.limit},
+               {"floor_period_s", orNull(p.floorPeriod)},
+               {"floor_damping", orNull(p.floorDamping)}};
+    if (p.level) j["level"] = *p.level;
+    if (p.motion) j["motion"] = *p.motion;
+    return j;
+}
 
 ojson fragilityJson(const std::vector<Fragility>& sets, const BootstrapSettings& b) {
     ojson all = ojson::array();

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass
-from typing import Optional, Sequence, Union
+from typing import Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -212,3 +212,48 @@ def assess(path: str) -> dict:
     The same dictionary as ``kinstab-cli check --project PATH``'s ``"assessment"``; a bad field
     raises ValueError naming it."""
     return json.loads(_core._assess_json(str(path)))
+
+
+def risk(
+    hazard: str,
+    *,
+    hazard_format: str = "auto",
+    site: Optional[Tuple[float, float]] = None,
+    results: Optional[str] = None,
+    set: Optional[int] = None,
+    median: Optional[float] = None,
+    beta: Optional[float] = None,
+    measure: Optional[str] = None,
+    years: float = 50.0,
+    target_rate: Optional[float] = None,
+    im: Optional[float] = None,
+    bootstrap: int = 1000,
+    seed: int = 1,
+) -> dict:
+    """The annual rate of the slab falling, lambda_c = integral of P(C|x) |d lambda(x)|, and its
+    probability in ``years`` from a site's hazard curve (docs/studies.md, "Risk").
+
+    ``hazard``: an OpenQuake hazard_curve CSV (``site=(lon, lat)`` picks its row), a USGS hazard
+    JSON or a CSV ``im_g,annual_rate``. The fragility: ``median`` (g) and ``beta``; ``beta``
+    alone for the risk-targeted median at ``target_rate`` (default 1 % in 50 years,
+    -ln(0.99)/50 per year); or ``results``, a study's JSONL, for every parameter set (or only
+    ``set``) with ``bootstrap`` percentiles. ``measure`` ("pga", "sa(1s/5%)") is checked against
+    the hazard file's; ``im`` (g) gives P(collapse) there against 10 %. Returns the same dict as
+    ``kinstab-cli risk``'s JSON; a bad argument or file raises ValueError naming it."""
+    return json.loads(_core._risk_json(
+        str(hazard), hazard_format, site, None if results is None else str(results), set,
+        median, beta, measure, years, target_rate, im, bootstrap, seed))
+
+
+def read_hazard(
+    path: str,
+    *,
+    hazard_format: str = "auto",
+    site: Optional[Tuple[float, float]] = None,
+    measure: Optional[str] = None,
+) -> dict:
+    """A hazard curve as kinstab reads it: ``im_g`` and ``annual_rate`` (NumPy arrays; an
+    OpenQuake PoE in T years read as -ln(1 - PoE)/T), ``intensity_measure``, ``format``,
+    ``source`` and ``zero_rate_points_dropped``. ``measure`` picks a USGS file's curve and is
+    checked against the file's; a bad file raises ValueError naming the file and line."""
+    return _core._read_hazard(str(path), hazard_format, site, measure)

@@ -173,6 +173,27 @@ def _simulate_record(
 ) -> dict: ...
 def _codes_json(building: str, codes: str) -> str: ...
 def _assess_json(path: str) -> str: ...
+def _risk_json(
+    hazard: str,
+    hazard_format: str,
+    site: Optional[tuple[float, float]],
+    results: Optional[str],
+    set: Optional[int],
+    median: Optional[float],
+    beta: Optional[float],
+    measure: Optional[str],
+    years: float,
+    target_rate: Optional[float],
+    im: Optional[float],
+    bootstrap: int,
+    seed: int,
+) -> str: ...
+def _read_hazard(
+    path: str,
+    hazard_format: str = "auto",
+    site: Optional[tuple[float, float]] = None,
+    measure: Optional[str] = None,
+) -> dict: ...
 def _calibrate_json(
     data: str,
     bearing_area: Optional[float] = None,

@@ -15,5 +15,6 @@ void bindCodes(pybind11::module_& m);    // codes: the building-code force ratio
 void bindFriction(pybind11::module_& m); // calibrate: the friction law of ch. III
 void bindStudy(pybind11::module_& m);    // study_case_count, study_rows (the Dask driver)
 void bindAssess(pybind11::module_& m);   // assess: a project's assessment
+void bindRisk(pybind11::module_& m);     // _risk_json, _read_hazard: collapse risk
 
 } // namespace kinstab::python

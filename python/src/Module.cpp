@@ -16,4 +16,5 @@ PYBIND11_MODULE(_core, m) {
     kinstab::python::bindFriction(m);
     kinstab::python::bindStudy(m);
     kinstab::python::bindAssess(m);
+    kinstab::python::bindRisk(m);
 }

@@ -52,7 +52,7 @@ private slots:
         QCOMPARE(overviewCommands(),
                  QStringList({"simulate", "surface", "critical", "codes", "check", "report",
                               "record", "friction", "precision", "bench", "floors", "study",
-                              "merge", "fragility"}));
+                              "merge", "fragility", "risk"}));
         QCOMPARE(cli({"-h"}).code, 0);
         QCOMPARE(cli({}).code, 2); // no command is bad input, with the overview on stdout
     }
@@ -124,6 +124,14 @@ private slots:
             "critical", "--frequencies", "5", "--max-amplitude", "2", "--scan-step", "0.1"};
         QTest::newRow("codes") << QStringList{"codes", "--project", kExample};
         QTest::newRow("check") << QStringList{"check", "--project", kExample};
+        QTest::newRow("risk") << QStringList{
+            "risk",
+            "--hazard",
+            KINSTAB_SOURCE_DIR "/resources/examples/hazard-second-order.csv",
+            "--median",
+            "1",
+            "--beta",
+            "0.5"};
     }
     void jsonNamesTheVersion() {
         QFETCH(QStringList, args);

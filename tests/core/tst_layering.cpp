@@ -19,10 +19,11 @@ namespace fs = std::filesystem;
 namespace {
 
 // Bottom floor first. io/ reads and writes every file, the study file and the project's study
-// included; assessment/ composes a project's checks from everything below, so it sits on top.
+// included; risk/ reads hazard files and integrates a study's fragilities against them;
+// assessment/ composes a project's checks from everything below, so it sits on top.
 const std::vector<std::string> kCoreFloors = {
-    "base",  "numerics", "records",  "codes",    "friction", "excitation", "slab",      "precision",
-    "sweep", "check",    "building", "analysis", "study",    "io",         "assessment"};
+    "base",  "numerics", "records",  "codes",    "friction", "excitation", "slab", "precision",
+    "sweep", "check",    "building", "analysis", "study",    "io",         "risk", "assessment"};
 
 struct Finding {
     std::vector<std::string> upward;     // "core/a/X.h includes core/b/Y.h (floor b above a)"

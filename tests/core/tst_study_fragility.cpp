@@ -165,6 +165,29 @@ private slots:
         QCOMPARE(f.searchTop, 3.0);
         QCOMPARE(f.medianBeyondSearch, f.fit->median > 3.0);
     }
+    void recordStatisticsOverTheCollapses() {
+        // Collapses at 0.4, 0.5, 0.8 g, one record censored: mean 1.7/3 = 0.566667 g, median
+        // 0.5 g, std sqrt(((0.4-m)^2 + (0.5-m)^2 + (0.8-m)^2) / 2) = sqrt(0.086667 / 2) = 0.208167
+        // g; ln: mean (ln 0.4 + ln 0.5 + ln 0.8) / 3 = ln(0.16) / 3 = -0.610860, deviations
+        // -0.305430, -0.082286, 0.387717, squares summing to 0.250383: std sqrt(0.250383 / 2) =
+        // 0.353824 (by hand).
+        const std::vector<StudyRow> rows = {row(0, 0.8, 2), row(1, 0.4, 2), row(2, 0, 2),
+                                            row(3, 0.5, 2)};
+        const RecordStatistics s = fragilityOf(rows, {0, 1, 0.9}).statistics;
+        QCOMPARE(s.collapsed, std::size_t(3));
+        QCOMPARE(s.censored, std::size_t(1));
+        QCOMPARE_LE(std::abs(*s.meanG - 1.7 / 3), 1e-15);
+        QCOMPARE(*s.medianG, 0.5);
+        QCOMPARE_LE(std::abs(*s.stdG - 0.208167), 1e-6);
+        QCOMPARE_LE(std::abs(*s.meanLn - std::log(0.16) / 3), 1e-15);
+        QCOMPARE_LE(std::abs(*s.stdLn - 0.353824), 1e-6);
+        // One collapse: no deviation; none: nothing but the counts.
+        const RecordStatistics one =
+            fragilityOf({row(0, 0.8, 2), row(1, 0, 2)}, {0, 1, 0.9}).statistics;
+        QVERIFY(one.meanG && !one.stdG && !one.stdLn);
+        const RecordStatistics none = fragilityOf({row(0, 0, 2)}, {0, 1, 0.9}).statistics;
+        QVERIFY(!none.meanG && none.censored == 1);
+    }
     void noBootstrapNoBounds() {
         std::vector<StudyRow> rows;
         const double crit[] = {0.42, 0.55, 0.58, 0.71, 0.93};
