@@ -107,7 +107,11 @@ void addRecords(const JsonReader& r, const std::string& baseDir, StudySpec& s) {
         badValue(r, "path", quotedToken(given), "no such file or folder");
     if (files.empty()) badValue(r, "path", quotedToken(given), "no record file matches");
     for (const fs::path& f : files) {
-        s.records.push_back({f.string(), labelFor(f, path, given), scale});
+        StudyRecord record;
+        record.file = f.string();
+        record.label = labelFor(f, path, given);
+        record.scale = scale;
+        s.records.push_back(std::move(record));
         if (s.records.size() > kMaxStudyRecords)
             r.fail("path", "more than the limit of " + std::to_string(kMaxStudyRecords) +
                                " records in one study");
