@@ -29,6 +29,12 @@ inline constexpr std::uintmax_t kMaxRecordFileBytes = 256u * 1024u * 1024u;
 inline constexpr std::uintmax_t kMaxProjectFileBytes = 16u * 1024u * 1024u;
 inline constexpr std::uintmax_t kMaxCsvFileBytes = 64u * 1024u * 1024u;
 
+// Bytes of one row of study results (JSONL). A row is about 400 bytes; its longest text is the
+// record's path as the study file writes it (at most PATH_MAX, 4096 bytes). 64 KiB leaves room
+// for any row kinstab writes, yet a file without line breaks (/dev/zero, a binary file) is
+// refused after 64 KiB instead of being held whole.
+inline constexpr std::size_t kMaxResultsRowBytes = 64u * 1024u;
+
 // Nesting of arrays and objects in a JSON document. A project nests four levels deep; 64
 // leaves room for any future layout and keeps every recursive walk of the document shallow.
 inline constexpr int kMaxJsonDepth = 64;

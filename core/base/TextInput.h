@@ -12,7 +12,8 @@
 namespace kinstab {
 
 // The bytes of a file, or an error ("cannot open the file", "larger than the limit of N
-// MB"). Reads at most maxBytes + 1 bytes, so /dev/zero or a FIFO cannot exhaust memory.
+// MB"). Reads at most maxBytes + one chunk, and reserves memory only for a regular file's
+// known size, so /dev/zero or a FIFO cannot exhaust memory.
 struct FileText {
     std::string text;
     std::string error; // empty when fine
