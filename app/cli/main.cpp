@@ -4,12 +4,15 @@
 // delivered: an output could not be written (full disk, full or closed stdout, no permission;
 // any file that was there before is left as it was) or a result was not finite or a search reached
 // its bound (kinstab::InternalError, "internal error: ..."); 1 any other failure.
+// SIGINT, SIGTERM and SIGHUP remove the temporary file of an output being written and end the
+// process with the signal (core/io/SignalCleanup.h).
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/HelpText.h"
 #include "core/base/InternalError.h"
 #include "core/io/AtomicFile.h"
+#include "core/io/SignalCleanup.h"
 
 #include <exception>
 #include <functional>
@@ -46,6 +49,7 @@ int main(int argc, char** argv) {
             return 0;
         }
     }
+    kinstab::removeTemporariesOnSignals();
     try {
         const int code = it->second(ArgList(argv + 2, argv + argc));
         kinstab::flushStandardOutput(); // a full stdout is a failed run, not a silent loss
