@@ -250,8 +250,9 @@ std::string usageText() {
              c.summary + "\n";
     s += "\nLIST: comma-separated numbers or start:stop:step.\n"
          "Exit codes: 0 success, 2 bad input (the message names the flag and value), 3 an output\n"
-         "could not be written or a result is not finite, 1 internal failure. Every JSON output\n"
-         "carries \"kinstab_version\". Manual: man kinstab-cli.\n";
+         "could not be written (full disk, closed stdout), 4 the model gave no finite result,\n"
+         "1 a bug in kinstab. Every JSON output carries \"kinstab_version\".\n"
+         "Manual: man kinstab-cli.\n";
     return s;
 }
 
