@@ -13,6 +13,9 @@ FileText readTextFile(const std::string& path, std::uintmax_t maxBytes) {
     const std::string limit = maxBytes >= (1u << 20) ? std::to_string(maxBytes >> 20) + " MB"
                                                      : std::to_string(maxBytes) + " bytes";
     const std::string tooLarge = "larger than the limit of " + limit + " for this kind of file";
+    // A path is handed to the system as a C string: a NUL would cut it short and open another
+    // file than the one named.
+    if (path.find('\0') != std::string::npos) return {{}, "the path contains a NUL character"};
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) return {{}, "is a folder, not a file"};
     const bool regular = std::filesystem::is_regular_file(path, ec);
@@ -106,6 +109,13 @@ std::string elided(std::string_view text, std::size_t maxChars) {
 
 std::string quotedToken(std::string_view token) {
     return "'" + elided(token, limits::kMaxQuotedChars) + "'";
+}
+
+std::string nulShown(std::string_view text) {
+    std::string s;
+    for (char c : text)
+        s += c == '\0' ? std::string("\\0") : std::string(1, c);
+    return s;
 }
 
 std::optional<double> parseDouble(std::string_view token) {
