@@ -15,10 +15,11 @@ namespace {
 // and its folder, a --list file, the C library's own.
 constexpr std::size_t kReservedDescriptors = 24;
 
-// A buffer per shard: 64 KiB each up to 1024 shards, then 64 MiB shared (4 KiB at least).
+// A buffer per shard: 64 KiB each up to 64 shards, then 4 MiB shared (4 KiB at least; a
+// merge of 1000 shards took 150 MB with 64 KiB each, 26 MB with std::ifstream's 8 KiB).
 std::size_t chunkFor(std::size_t shards) {
-    if (shards <= 1024) return 64u * 1024u;
-    return std::max<std::size_t>(4096, (64u << 20) / shards);
+    if (shards <= 64) return 64u * 1024u;
+    return std::max<std::size_t>(4096, (4u << 20) / shards);
 }
 
 } // namespace
