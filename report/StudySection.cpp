@@ -8,6 +8,7 @@
 #include "core/io/StudySpecJson.h"
 #include "core/records/RecordReader.h"
 #include "core/study/Fragility.h"
+#include "core/study/StudyRecords.h"
 #include "core/study/StudyResults.h"
 #include "core/study/StudyRowsMatch.h"
 #include "core/study/StudyRunner.h"
@@ -35,7 +36,7 @@ constexpr std::size_t kMaxReportStudyCases = 500;
 
 const QColor kFit(40, 90, 160), kBound(120, 150, 200), kPoint(200, 40, 40);
 
-std::vector<StudyRow> rowsOfRun(const StudySpec& spec) {
+std::vector<StudyRow> rowsOfRun(StudySpec spec) {
     const std::size_t cases = studyCaseCount(spec);
     if (cases > kMaxReportStudyCases)
         throw ReportError("study: " + std::to_string(cases) +
@@ -44,7 +45,7 @@ std::vector<StudyRow> rowsOfRun(const StudySpec& spec) {
                           "); run `kinstab-cli study` and name its output in study.results");
     std::vector<StudyRow> rows;
     try {
-        checkStudyRecords(spec);
+        loadStudyRecords(spec);
         runStudy(spec, {}, [&rows](const std::string& block) {
             std::istringstream in(block);
             for (std::string line; std::getline(in, line);)
@@ -66,8 +67,14 @@ std::vector<StudyRow> studyRows(const ProjectStudy& ps, const StudySpec& spec) {
     } catch (const StudyRowError& e) {
         throw ReportError("study.results = '" + ps.results + "': " + e.what());
     }
+    StudySpec hashed = spec; // the rows' fingerprint is checked against the records' bytes
+    try {
+        hashStudyRecords(hashed);
+    } catch (const StudyError& e) {
+        throw ReportError("study.spec = '" + ps.spec + "': " + e.what());
+    }
     const std::string dir = QFileInfo(qs(ps.spec)).absolutePath().toStdString();
-    if (const std::string m = studyRowsMismatch(spec, dir, rows); !m.empty())
+    if (const std::string m = studyRowsMismatch(hashed, dir, rows); !m.empty())
         throw ReportError("study.results = '" + ps.results + "': not the results of " + ps.spec +
                           " (" + m + "); run the study again or remove study.results");
     return rows;

@@ -7,6 +7,7 @@
 #include "core/io/StudySpecJson.h"
 #include "core/study/CpuAffinity.h"
 #include "core/study/FragilityText.h"
+#include "core/study/StudyRecords.h"
 #include "core/study/StudyRunner.h"
 #include "ui/FragilityChart.h"
 #include "ui/StaleFrame.h"
@@ -424,8 +425,8 @@ namespace {
 std::shared_ptr<StudyTab::Outcome> runWorker(const std::string& json, SweepControl* control) {
     auto o = std::make_shared<StudyTab::Outcome>();
     try {
-        const StudySpec spec = studyFromJsonText(json, "");
-        checkStudyRecords(spec);
+        StudySpec spec = studyFromJsonText(json, "");
+        loadStudyRecords(spec); // each record read once, for every case of the study
         StudyRunOptions options;
         options.threads = allowedCpuCount();
         options.control = control;

@@ -3,6 +3,7 @@
 // read back; made the project's by "Use in project"; results marked stale when the fields change.
 
 #include "core/io/StudySpecJson.h"
+#include "core/study/StudyRecords.h"
 #include "core/study/StudyResults.h"
 #include "core/study/StudyRowsMatch.h"
 #include "ui/FragilityChart.h"
@@ -126,8 +127,9 @@ std::shared_ptr<StudyTab::Outcome> readStudyResults(const QString& specPath,
     auto o = std::make_shared<StudyTab::Outcome>();
     o->file = rowsPath;
     try {
-        const StudySpec spec = loadStudy(specPath.toStdString());
-        std::string text; // kept for export and "Use in project": the file is read once
+        StudySpec spec = loadStudy(specPath.toStdString());
+        hashStudyRecords(spec); // the rows' fingerprint is checked against the records' bytes
+        std::string text;       // kept for export and "Use in project": the file is read once
         std::vector<StudyRow> rows = readStudyRows(rowsPath.toStdString(), &text);
         const std::string dir = QFileInfo(specPath).absolutePath().toStdString();
         if (const std::string m = studyRowsMismatch(spec, dir, rows); !m.empty()) {

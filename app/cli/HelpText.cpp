@@ -192,16 +192,21 @@ const char* kFloors =
 
 const char* kStudy =
     "usage: kinstab-cli study --spec FILE.json [-o FILE.jsonl] [--shard K/N] [--threads N]\n"
+    "                         [--resume]\n"
     "       kinstab-cli study --spec FILE.json --count\n"
     "  --spec FILE                  the study: records x parameters (docs/studies.md)\n"
     "  -o FILE                      JSONL results, one row per case [stdout]\n"
     "  --shard K/N                  run only the cases whose index % N == K - 1 [1/1]\n"
     "  --threads N                  worker threads [the CPUs of this process's affinity]\n"
+    "  --resume                     continue from the complete rows an interrupted run of\n"
+    "                               this shard left in -o's temporary file; keep it if this\n"
+    "                               run is interrupted too (needs -o FILE)\n"
     "  --count                      print the number of cases and stop\n";
 
 const char* kMerge =
     "usage: kinstab-cli merge SHARD.jsonl... [--list FILE] -o FILE.jsonl\n"
-    "  SHARD                        shard results of kinstab-cli study, any order\n"
+    "  SHARD                        shard results of kinstab-cli study, any order, any\n"
+    "                               number; refused when they are of different studies\n"
     "  --list FILE                  a file naming more shards, one per line\n"
     "  -o FILE                      the merged results, as one unsharded run writes them\n";
 
@@ -269,8 +274,9 @@ std::string usageText() {
              c.summary + "\n";
     s += "\nLIST: comma-separated numbers or start:stop:step.\n"
          "Exit codes: 0 success, 2 bad input (the message names the flag and value), 3 an output\n"
-         "could not be written or a result is not finite, 1 internal failure. Every JSON output\n"
-         "carries \"kinstab_version\". Manual: man kinstab-cli.\n";
+         "could not be written (full disk, closed stdout), 4 the model gave no finite result,\n"
+         "1 a bug in kinstab. Every JSON output carries \"kinstab_version\".\n"
+         "Manual: man kinstab-cli.\n";
     return s;
 }
 

@@ -7,6 +7,8 @@
 #include "core/base/TextInput.h"
 #include "core/study/StudyResults.h"
 
+#include <sys/resource.h>
+
 #include <sstream>
 
 namespace kinstab::cli {
@@ -22,6 +24,16 @@ void addListed(const std::string& list, std::vector<std::string>& shards) {
     std::istringstream in{f.text};
     while (std::getline(in, line))
         if (!line.empty()) shards.push_back(line);
+}
+
+// Every shard's descriptor held at once where the hard open-file limit allows (a job array's
+// shards outnumber the usual soft limit of 1024); beyond it the merge reads shards in turn
+// (core/study/ShardPool.h).
+void raiseOpenFileLimit() {
+    rlimit limit{};
+    if (::getrlimit(RLIMIT_NOFILE, &limit) != 0 || limit.rlim_cur >= limit.rlim_max) return;
+    limit.rlim_cur = limit.rlim_max;
+    ::setrlimit(RLIMIT_NOFILE, &limit);
 }
 
 } // namespace
@@ -49,6 +61,7 @@ int runMerge(const ArgList& argv) {
     if (shards.empty()) throw UsageError("no shards to merge: name the shard files");
     if (!output) throw UsageError("missing required flag -o (use - for stdout)");
     checkOutputPath("o", *output);
+    raiseOpenFileLimit();
     // Rows go to a temporary file renamed into place at the end: a refused merge leaves no file.
     StreamedOutput out(*output);
     try {

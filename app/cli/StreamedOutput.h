@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Output that is written a block at a time (study rows), so that memory does not grow with its
-// size, yet still appears whole or not at all: the blocks go to a temporary file beside the
-// target, which is renamed over it only when the last block is in (as core/io/AtomicFile.h does
-// for whole texts). "-" or no file: standard output, block by block.
+// Output written a block at a time (study rows, merges), so that memory does not grow with its
+// size: to standard output for "-", else through core's atomic writer (core/io/AtomicFile.h),
+// so the file appears whole at commit() or not at all.
 
+#include "core/io/AtomicFile.h"
+
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -13,17 +15,14 @@ namespace kinstab::cli {
 class StreamedOutput {
 public:
     explicit StreamedOutput(const std::string& path); // throws WriteError
-    ~StreamedOutput();                                // removes an uncommitted temporary file
-    StreamedOutput(const StreamedOutput&) = delete;
-    StreamedOutput& operator=(const StreamedOutput&) = delete;
+    // study --resume: writes on after the complete rows of an adopted temporary file.
+    explicit StreamedOutput(std::unique_ptr<AtomicFileWriter> resumed);
 
     void write(std::string_view bytes); // throws WriteError
-    void commit();                      // fsync and rename into place; throws WriteError
+    void commit();                      // throws WriteError
 
 private:
-    std::string path_, temp_;
-    int fd_ = -1;
-    unsigned mode_ = 0644; // of the finished file
+    std::unique_ptr<AtomicFileWriter> file_; // none: standard output
 };
 
 } // namespace kinstab::cli

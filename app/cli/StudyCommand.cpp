@@ -7,8 +7,10 @@
 #include "app/cli/StreamedOutput.h"
 #include "core/base/TextInput.h"
 #include "core/io/AtomicFile.h"
+#include "core/io/StudyResume.h"
 #include "core/io/StudySpecJson.h"
 #include "core/study/CpuAffinity.h"
+#include "core/study/StudyRecords.h"
 #include "core/study/StudyRunner.h"
 
 #include <iostream>
@@ -34,16 +36,34 @@ Shard shardOf(const Args& args) {
     return *s;
 }
 
+// --resume: the output's temporary file as an interrupted run of this shard left it, or a new
+// one; either is kept when this run is interrupted too.
+StreamedOutput resumableOutput(const StudySpec& spec, StudyRunOptions& options,
+                               const std::string& path) {
+    ResumedShard r = resumeShard(spec, options.shard, path);
+    if (!r.writer)
+        return StreamedOutput(
+            std::make_unique<AtomicFileWriter>(path, AtomicFileWriter::Unfinished::Keep));
+    options.done = r.done;
+    std::cerr << "kinstab-cli study: resuming " << path << " from " << r.writer->temporary() << ": "
+              << r.done << " of " << shardCaseCount(spec, options.shard)
+              << " cases of the shard done\n";
+    return StreamedOutput(std::move(r.writer));
+}
+
 } // namespace
 
 int runStudyCommand(const ArgList& argv) {
-    const Args args(argv, {"spec", "o", "shard", "threads"}, {"count"});
+    const Args args(argv, {"spec", "o", "shard", "threads"}, {"count", "resume"});
     const std::string specPath = args.text("spec");
     if (specPath.empty()) throw UsageError("missing required flag --spec");
     StudyRunOptions options;
     options.shard = shardOf(args);
     options.threads = threadCount(args);
-    if (const auto o = args.optionalText("o")) checkOutputPath("o", *o);
+    const std::string output = args.text("o", "-");
+    if (args.has("o")) checkOutputPath("o", output);
+    if (args.has("resume") && output == "-")
+        throw UsageError("--resume needs -o FILE: it continues from that file's temporary file");
     StudySpec spec;
     try {
         spec = loadStudy(specPath);
@@ -51,11 +71,12 @@ int runStudyCommand(const ArgList& argv) {
             writeStandardOutput(std::to_string(studyCaseCount(spec)) + "\n");
             return 0;
         }
-        checkStudyRecords(spec);
+        loadStudyRecords(spec); // each record read once, for every case of the study
     } catch (const StudyError& e) {
         throw UsageError("--spec " + specPath + ": " + e.what());
     }
-    StreamedOutput out(args.text("o", "-"));
+    StreamedOutput out =
+        args.has("resume") ? resumableOutput(spec, options, output) : StreamedOutput(output);
     runStudy(spec, options, [&out](const std::string& rows) { out.write(rows); });
     out.commit();
     return 0;

@@ -1,23 +1,40 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // kinstab-cli: batch work, scripting and automated checks (docs/user-guide.md, "The command line").
-// Exit codes: 0 success; 2 bad input (the message names the flag and value); 3 no result could be
-// delivered: an output could not be written (full disk, full or closed stdout, no permission;
-// any file that was there before is left as it was) or a result was not finite or a search reached
-// its bound (kinstab::InternalError, "internal error: ..."); 1 any other failure.
+// Exit codes: app/cli/ExitCode.h. SIGINT, SIGTERM and SIGHUP remove the temporary file of an
+// output being written and end the process with the signal (core/io/SignalCleanup.h).
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "app/cli/ExitCode.h"
 #include "app/cli/HelpText.h"
-#include "core/base/InternalError.h"
 #include "core/io/AtomicFile.h"
+#include "core/io/SignalCleanup.h"
 
 #include <exception>
 #include <functional>
 #include <iostream>
 #include <map>
 
+namespace {
+
+using namespace kinstab::cli;
+
+int runCommand(const std::function<int(const ArgList&)>& command, const char* name,
+               const ArgList& args) {
+    try {
+        const int code = command(args);
+        kinstab::flushStandardOutput(); // a full stdout is a failed run, not a silent loss
+        return code;
+    } catch (const std::exception& e) {
+        const Failure f = failureOf(e);
+        std::cerr << "kinstab-cli " << name << ": " << f.prefix << e.what() << "\n";
+        return f.code;
+    }
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
-    using namespace kinstab::cli;
     const std::map<std::string, std::function<int(const ArgList&)>> commands = {
         {"simulate", runSimulate}, {"surface", runSurface},     {"critical", runCritical},
         {"bench", runBench},       {"precision", runPrecision}, {"record", runRecord},
@@ -46,21 +63,6 @@ int main(int argc, char** argv) {
             return 0;
         }
     }
-    try {
-        const int code = it->second(ArgList(argv + 2, argv + argc));
-        kinstab::flushStandardOutput(); // a full stdout is a failed run, not a silent loss
-        return code;
-    } catch (const kinstab::WriteError& e) {
-        std::cerr << "kinstab-cli " << argv[1] << ": error: " << e.what() << "\n";
-        return 3;
-    } catch (const UsageError& e) {
-        std::cerr << "kinstab-cli " << argv[1] << ": error: " << e.what() << "\n";
-        return 2;
-    } catch (const kinstab::InternalError& e) {
-        std::cerr << "kinstab-cli " << argv[1] << ": internal error: " << e.what() << "\n";
-        return 3;
-    } catch (const std::exception& e) {
-        std::cerr << "kinstab-cli " << argv[1] << ": internal error: " << e.what() << "\n";
-        return 1;
-    }
+    kinstab::removeTemporariesOnSignals();
+    return runCommand(it->second, argv[1], ArgList(argv + 2, argv + argc));
 }

@@ -35,6 +35,11 @@ inline constexpr std::size_t kMaxHazardPoints = 10'000;
 // Bytes of a hazard file. An OpenQuake file holds one row per site: 64 MB is some 100,000 sites
 // of 50 intensities, a regional run; one site's curve is a few kilobytes.
 inline constexpr std::uintmax_t kMaxHazardFileBytes = 64u * 1024u * 1024u;
+// Bytes of one row of study results (JSONL). A row is about 400 bytes; its longest text is the
+// record's path as the study file writes it (at most PATH_MAX, 4096 bytes). 64 KiB leaves room
+// for any row kinstab writes, yet a file without line breaks (/dev/zero, a binary file) is
+// refused after 64 KiB instead of being held whole.
+inline constexpr std::size_t kMaxResultsRowBytes = 64u * 1024u;
 
 // Nesting of arrays and objects in a JSON document. A project nests four levels deep; 64
 // leaves room for any future layout and keeps every recursive walk of the document shallow.

@@ -12,7 +12,8 @@
 namespace kinstab {
 
 // The bytes of a file, or an error ("cannot open the file", "larger than the limit of N
-// MB"). Reads at most maxBytes + 1 bytes, so /dev/zero or a FIFO cannot exhaust memory.
+// MB", "the path contains a NUL character"). Reads at most maxBytes + one chunk, and reserves
+// memory only for a regular file's known size, so /dev/zero or a FIFO cannot exhaust memory.
 struct FileText {
     std::string text;
     std::string error; // empty when fine
@@ -30,6 +31,9 @@ std::string utf8FromLegacy(std::string_view text);
 std::string elided(std::string_view text, std::size_t maxChars);
 // A token for an error message: elided to limits::kMaxQuotedChars and in single quotes.
 std::string quotedToken(std::string_view token);
+// The text with each NUL character shown as \0: an exception's message is a C string, which a
+// NUL in a path (refused, but named) would end where it stands.
+std::string nulShown(std::string_view text);
 
 // A whole token as a finite or infinite double, in the C locale's syntax whatever the
 // process locale ("1.5", "-2e-3"); a leading '+' is allowed. Nothing on any other text.

@@ -140,6 +140,12 @@ std::string JsonReader::text(const std::string& key, const std::string& fallback
     return optionalText(key).value_or(fallback);
 }
 
+std::string JsonReader::pathText(const std::string& key, const std::string& fallback) const {
+    std::string t = text(key, fallback);
+    if (t.find('\0') != std::string::npos) fail(key, "the path contains a NUL character");
+    return t;
+}
+
 bool JsonReader::boolean(const std::string& key, bool fallback) const {
     if (!has(key)) return fallback;
     const nlohmann::json& v = j_->at(key);

@@ -45,6 +45,9 @@ public:
     int integer(const std::string& key, int fallback) const;
     std::optional<std::string> optionalText(const std::string& key) const;
     std::string text(const std::string& key, const std::string& fallback) const;
+    // A file's path: text without a NUL character, which would cut the path short when it is
+    // handed to the system (another file than the one named would be read).
+    std::string pathText(const std::string& key, const std::string& fallback) const;
     bool boolean(const std::string& key, bool fallback) const;
     // An array of numbers, or a LIST string ("0.7:1.15:0.05" or "1,2,3").
     std::vector<double> numbers(const std::string& key) const;

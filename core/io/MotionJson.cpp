@@ -66,9 +66,9 @@ RecordReadOptions readOptionsFrom(const JsonReader& r) {
 
 RecordExcitation recordFrom(const JsonReader& r, const std::string& baseDir) {
     RecordExcitation e;
-    const auto file = r.optionalText("file");
-    if (!file || file->empty()) r.fail("file", "missing (the accelerogram file)");
-    e.file = pathFromProject(*file, baseDir);
+    const std::string file = r.pathText("file", "");
+    if (file.empty()) r.fail("file", "missing (the accelerogram file)");
+    e.file = pathFromProject(file, baseDir);
     e.read = readOptionsFrom(r);
     e.targetPeak = r.optionalNumber("target_peak_g");
     e.scaleFactor = r.number("scale_factor", 1.0);

@@ -26,7 +26,7 @@ void verticalFrom(const JsonReader& r, PlanarSettings& s, const std::string& bas
     if (v.is_object()) {
         const JsonReader o(v, r.field("vertical"));
         s.vertical = VerticalSource::File;
-        s.verticalPath = o.text("file", "");
+        s.verticalPath = o.pathText("file", "");
         if (s.verticalPath.empty()) o.fail("file", "'': name the vertical record file");
         s.verticalPath = pathFromProject(s.verticalPath, baseDir);
         return;

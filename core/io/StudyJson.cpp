@@ -15,7 +15,7 @@ namespace {
 constexpr std::size_t kMaxStudyPathChars = 4096;
 
 std::string pathFrom(const JsonReader& r, const std::string& key, const std::string& baseDir) {
-    const std::string text = r.text(key, "");
+    const std::string text = r.pathText(key, "");
     if (text.size() > kMaxStudyPathChars)
         r.fail(key, std::to_string(text.size()) + " characters, more than the limit of " +
                         std::to_string(kMaxStudyPathChars));

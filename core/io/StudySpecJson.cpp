@@ -40,6 +40,8 @@ std::vector<std::string> patterns(const JsonReader& r, const std::string& key,
     std::vector<std::string> out;
     for (const json& p : a) {
         if (!p.is_string()) r.fail(key, "expected an array of file-name patterns");
+        if (p.get<std::string>().find('\0') != std::string::npos)
+            r.fail(key, "a pattern contains a NUL character");
         out.push_back(p.get<std::string>());
     }
     return out;
@@ -59,19 +61,49 @@ std::string labelFor(const fs::path& file, const fs::path& folder, const std::st
     return (written / file.lexically_relative(folder)).lexically_normal().generic_string();
 }
 
+// Whether `file` (canonical) lies in `folder` (canonical).
+bool inside(const fs::path& file, const fs::path& folder) {
+    const fs::path rel = file.lexically_relative(folder);
+    return !rel.empty() && *rel.begin() != "..";
+}
+
+// A folder entry whose name matched: a regular file, or a symlink to one in the same folder
+// (a link out of the folder or one that cannot be followed is refused, naming it).
+bool isRecordFile(const fs::directory_entry& entry, const fs::path& folder, const JsonReader& r) {
+    std::error_code ec;
+    if (!fs::is_symlink(entry.symlink_status(ec))) return entry.is_regular_file(ec);
+    const fs::path to = fs::canonical(entry.path(), ec);
+    const std::string name = quotedToken(entry.path().filename().string());
+    if (ec)
+        badValue(r, "path", name,
+                 "a symlink that cannot be followed (" + ec.message() + "); exclude it");
+    if (!inside(to, folder))
+        badValue(r, "path", name,
+                 "a symlink out of the folder, to " + to.string() +
+                     "; name that file or its folder in the study, or exclude the link");
+    return fs::is_regular_file(to, ec);
+}
+
 // A folder's files whose names match include and none of exclude, sorted by name so that
-// every machine expands the same folder to the same list.
+// every machine expands the same folder to the same list. An excluded entry is never looked
+// at (a self-looping symlink among them does no harm).
 std::vector<fs::path> folderFiles(const fs::path& dir, const JsonReader& r) {
     const auto include = patterns(r, "include", "*");
     const auto exclude = patterns(r, "exclude", "");
+    std::error_code ec;
+    const fs::path real = fs::canonical(dir, ec);
+    fs::directory_iterator it(dir, ec);
+    if (ec) badValue(r, "path", quotedToken(dir.string()), "cannot be listed: " + ec.message());
     std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(dir)) {
-        const std::string name = entry.path().filename().string();
-        if (!entry.is_regular_file() || !matchesAny(include, name) || matchesAny(exclude, name))
-            continue;
-        files.push_back(entry.path());
+    // One pass per folder entry (bounded by the folder), at most kMaxStudyRecords + 1 kept.
+    for (; it != fs::directory_iterator(); it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (!matchesAny(include, name) || matchesAny(exclude, name)) continue;
+        if (!isRecordFile(*it, real, r)) continue;
+        files.push_back(it->path());
         if (files.size() > kMaxStudyRecords) break;
     }
+    if (ec) badValue(r, "path", quotedToken(dir.string()), "cannot be listed: " + ec.message());
     std::sort(files.begin(), files.end());
     return files;
 }
@@ -93,7 +125,7 @@ double recordScale(const JsonReader& r) {
 void addRecords(const JsonReader& r, const std::string& baseDir, StudySpec& s) {
     const double scale = recordScale(r);
     s.asGiven = s.asGiven || r.has("scale");
-    const std::string given = r.text("path", "");
+    const std::string given = r.pathText("path", "");
     if (given.empty()) r.fail("path", "missing: a record file or a folder of records");
     fs::path path(given);
     if (path.is_relative() && !baseDir.empty()) path = fs::path(baseDir) / path;
@@ -108,7 +140,11 @@ void addRecords(const JsonReader& r, const std::string& baseDir, StudySpec& s) {
         badValue(r, "path", quotedToken(given), "no such file or folder");
     if (files.empty()) badValue(r, "path", quotedToken(given), "no record file matches");
     for (const fs::path& f : files) {
-        s.records.push_back({f.string(), labelFor(f, path, given), scale});
+        StudyRecord record;
+        record.file = f.string();
+        record.label = labelFor(f, path, given);
+        record.scale = scale;
+        s.records.push_back(std::move(record));
         if (s.records.size() > kMaxStudyRecords)
             r.fail("path", "more than the limit of " + std::to_string(kMaxStudyRecords) +
                                " records in one study");

@@ -88,7 +88,7 @@ SignedPeak Accelerogram::peak() const {
 }
 
 RecordError::RecordError(const std::string& file, int line, const std::string& message)
-    : std::runtime_error(file + ":" + std::to_string(line) + ": " + message), file_(file),
+    : std::runtime_error(nulShown(file) + ":" + std::to_string(line) + ": " + message), file_(file),
       line_(line), message_(message) {}
 
 void validateAccelerogram(const Accelerogram& a) {

@@ -47,6 +47,7 @@ StudyRow studyRowInputs(const StudySpec& s, const StudyCase& c) {
     StudyRow row;
     row.index = c.index;
     row.cases = studyCaseCount(s);
+    row.study = s.fingerprint;
     row.set = c.set;
     row.record = c.record->label;
     row.mu = c.mu;

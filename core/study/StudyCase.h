@@ -28,9 +28,9 @@ struct StudyCase {
 std::size_t studyCaseCount(const StudySpec& s);
 std::size_t studyParameterSets(const StudySpec& s);
 StudyCase studyCase(const StudySpec& s, std::size_t index); // index < studyCaseCount
-// The inputs a case's row carries (index, set, record, mu, t*, limit, floor filter or level,
-// motion when the study names motions, measure): what a run writes and what a results file
-// is checked against (core/study/StudyRowsMatch.h).
+// The inputs a case's row carries (index, the study's fingerprint, set, record, mu, t*, limit,
+// floor filter or level, motion when the study names motions, measure): what a run writes and
+// what a results file is checked against (core/study/StudyRowsMatch.h).
 StudyRow studyRowInputs(const StudySpec& s, const StudyCase& c);
 
 // A shard K of N (1-based) takes every case whose index % N == K - 1: round-robin spreads the

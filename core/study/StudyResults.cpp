@@ -1,15 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/StudyResults.h"
 
+#include "core/base/InputLimits.h"
+#include "core/base/LineReader.h"
 #include "core/base/TextInput.h"
+#include "core/study/ShardPool.h"
 #include "core/study/StudySpec.h"
 
-#include <filesystem>
-#include <fstream>
+#include <sys/stat.h>
+
 #include <memory>
 #include <queue>
 #include <set>
-#include <sstream>
 #include <utility>
 
 namespace kinstab {
@@ -19,163 +21,141 @@ namespace {
 // A results file is at most one row of ~1 kB (long record paths) per case of the largest study.
 constexpr std::uintmax_t kMaxResultsBytes = 1024ull * kMaxStudyCases;
 
-struct Line {
-    std::string text;
-    StudyRow row;
-    std::string where; // FILE:LINE
-};
-
-// Calls f(Line) for every line of the text of file `path`; throws StudyRowError naming
-// FILE:LINE.
-template <class F> void forEachRow(std::string_view text, const std::string& path, F&& f) {
-    std::istringstream in{std::string(withoutBom(text))};
-    std::string line;
-    for (long n = 1; std::getline(in, line); ++n) {
-        const std::string where = path + ":" + std::to_string(n);
-        try {
-            f(Line{line, parseStudyRow(line), where});
-        } catch (const StudyRowError& e) {
-            throw StudyRowError(where + ": " + e.what());
-        }
+std::unique_ptr<LineReader> openResults(const std::string& path, std::size_t chunk) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
+        static_cast<std::uintmax_t>(st.st_size) > kMaxResultsBytes)
+        throw StudyRowError(path + ": larger than the limit of " +
+                            std::to_string(kMaxResultsBytes) + " bytes");
+    try {
+        return std::make_unique<LineReader>(path, limits::kMaxResultsRowBytes, chunk);
+    } catch (const LineReadError& e) {
+        throw StudyRowError(path + ": " + e.what());
     }
 }
 
 } // namespace
 
-std::vector<StudyRow> readStudyRows(const std::string& path, std::string* text) {
-    FileText file = readTextFile(path, kMaxResultsBytes);
-    if (!file.error.empty()) throw StudyRowError(path + ": " + file.error);
-    std::vector<StudyRow> rows;
-    std::set<std::size_t> seen, doneSets;
-    forEachRow(file.text, path, [&](Line l) {
-        if (!rows.empty() && rows.back().set != l.row.set) doneSets.insert(rows.back().set);
-        if (doneSets.count(l.row.set))
-            throw StudyRowError(l.where + ": a row of parameter set " + std::to_string(l.row.set) +
-                                " after rows of another set: a results file keeps each set's "
-                                "rows together (merge the shards with kinstab-cli merge)");
-        // One study's rows: the same size and intensity measure, each case once.
-        if (!rows.empty() &&
-            (l.row.cases != rows.front().cases || l.row.measure != rows.front().measure))
-            throw StudyRowError(l.where + ": a row of another study than line 1's");
-        if (!seen.insert(l.row.index).second)
-            throw StudyRowError(l.where + ": case " + std::to_string(l.row.index) +
-                                " appears twice");
-        rows.push_back(std::move(l.row));
-    });
-    if (rows.empty()) throw StudyRowError(path + ": no rows");
-    if (text) *text = std::move(file.text);
-    return rows;
+StudyRowReader::StudyRowReader(const std::string& path, std::size_t chunk)
+    : path_(path), file_(openResults(path, chunk)) {}
+
+StudyRowReader::~StudyRowReader() = default;
+
+bool StudyRowReader::next() {
+    const std::size_t before = line_.row.index;
+    try {
+        if (!file_->next(line_.text)) return false;
+    } catch (const LineReadError& e) {
+        throw StudyRowError(path_ + ": " + e.what());
+    }
+    const long number = file_->lineNumber();
+    line_.where = path_ + ":" + std::to_string(number);
+    if (number == 1) line_.text = std::string(withoutBom(line_.text));
+    try {
+        line_.row = parseStudyRow(line_.text);
+    } catch (const StudyRowError& e) {
+        throw StudyRowError(line_.where + ": " + e.what());
+    }
+    // Of another study before out of order: rows of two studies are named as such.
+    if (number == 1) first_ = line_;
+    requireSameStudy(line_, first_);
+    if (number > 1 && line_.row.index == before)
+        throw StudyRowError(line_.where + ": case " + std::to_string(before) + " appears twice");
+    if (number > 1 && line_.row.index < before)
+        throw StudyRowError(line_.where + ": case " + std::to_string(line_.row.index) +
+                            " is not after case " + std::to_string(before) +
+                            ": a shard is in case order");
+    return true;
+}
+
+LineReader& StudyRowReader::file() {
+    return *file_;
+}
+
+void requireSameStudy(const StudyLine& l, const StudyLine& first) {
+    const StudyRow &a = l.row, &b = first.row;
+    if (a.study == b.study && a.cases == b.cases && a.measure == b.measure) return;
+    throw StudyRowError(l.where + ": a row of another study than " + first.where + "'s: study " +
+                        a.study + " of " + std::to_string(a.cases) + " cases (" + a.measure +
+                        "), not " + b.study + " of " + std::to_string(b.cases) + " cases (" +
+                        b.measure + "); rows of two different studies are not one result");
 }
 
 namespace {
 
-// One shard being merged: its file and the line in hand.
-class ShardReader {
-public:
-    explicit ShardReader(const std::string& path) : path_(path), in_(path, std::ios::binary) {
-        std::error_code ec;
-        const auto size = std::filesystem::file_size(path, ec);
-        if (!in_ || ec) throw StudyRowError(path + ": cannot be read");
-        if (size > kMaxResultsBytes)
-            throw StudyRowError(path + ": larger than the limit of " +
-                                std::to_string(kMaxResultsBytes) + " bytes");
-    }
-    // The next line; false at the end of the file. Throws StudyRowError naming FILE:LINE.
-    bool next() {
-        if (!std::getline(in_, line_.text)) {
-            // The end of the file, or a read that failed (an I/O error, memory): never the same.
-            if (in_.bad() || !in_.eof())
-                throw StudyRowError(path_ + ":" + std::to_string(number_ + 1) +
-                                    ": cannot be read (a read error, not the end of the file)");
-            return false;
-        }
-        ++number_;
-        line_.where = path_ + ":" + std::to_string(number_);
-        if (number_ == 1) line_.text = std::string(withoutBom(line_.text));
-        const std::size_t before = line_.row.index;
-        try {
-            line_.row = parseStudyRow(line_.text);
-        } catch (const StudyRowError& e) {
-            throw StudyRowError(line_.where + ": " + e.what());
-        }
-        if (number_ > 1 && line_.row.index == before)
-            throw StudyRowError(line_.where + ": case " + std::to_string(before) +
-                                " appears twice");
-        if (number_ > 1 && line_.row.index < before)
-            throw StudyRowError(line_.where + ": case " + std::to_string(line_.row.index) +
-                                " is not after case " + std::to_string(before) +
-                                ": a shard is in case order");
-        return true;
-    }
-    const Line& line() const { return line_; }
-
-private:
-    std::string path_;
-    std::ifstream in_;
-    Line line_;
-    long number_ = 0;
-};
-
-} // namespace
-
-void forEachStudySet(const std::string& path,
-                     const std::function<void(std::vector<StudyRow>&&)>& onSet) {
-    ShardReader file(path);
-    std::vector<StudyRow> set;
-    std::set<std::size_t> done; // sets already handed on: each set's rows stand together
-    std::size_t cases = 0;
-    std::string measure;
+// Calls onRow for every row of the file, in case order and of line 1's study (StudyRowReader),
+// each parameter set's rows together.
+template <class F> void forEachRow(const std::string& path, F&& onRow) {
+    StudyRowReader file(path);
     bool any = false;
+    std::set<std::size_t> done; // sets already passed: each set's rows stand together
+    std::size_t set = 0;
+    // One pass per line: bounded by the file's lines (at most its bytes).
     while (file.next()) {
-        const Line& l = file.line();
-        if (!any) {
-            cases = l.row.cases;
-            measure = l.row.measure;
-            any = true;
-        } else if (l.row.cases != cases || l.row.measure != measure) {
-            throw StudyRowError(l.where + ": a row of another study than line 1's");
-        }
-        if (!set.empty() && set.front().set != l.row.set) {
-            done.insert(set.front().set);
-            onSet(std::exchange(set, {}));
+        const StudyLine& l = file.line();
+        any = true;
+        if (l.row.set != set) {
+            done.insert(set);
+            set = l.row.set;
         }
         if (done.count(l.row.set))
             throw StudyRowError(l.where + ": a row of parameter set " + std::to_string(l.row.set) +
                                 " after rows of another set: a results file keeps each set's "
                                 "rows together (merge the shards with kinstab-cli merge)");
-        set.push_back(l.row);
+        onRow(l);
     }
     if (!any) throw StudyRowError(path + ": no rows");
+}
+
+} // namespace
+
+std::vector<StudyRow> readStudyRows(const std::string& path, std::string* text) {
+    std::vector<StudyRow> rows;
+    std::string kept;
+    forEachRow(path, [&](const StudyLine& l) {
+        rows.push_back(l.row);
+        if (text) kept += l.text + "\n";
+    });
+    if (text) *text = std::move(kept);
+    return rows;
+}
+
+void forEachStudySet(const std::string& path,
+                     const std::function<void(std::vector<StudyRow>&&)>& onSet) {
+    std::vector<StudyRow> set;
+    forEachRow(path, [&](const StudyLine& l) {
+        if (!set.empty() && set.front().set != l.row.set) onSet(std::exchange(set, {}));
+        set.push_back(l.row);
+    });
     onSet(std::move(set));
 }
 
 void mergeStudyShards(const std::vector<std::string>& paths,
                       const std::function<void(std::string_view)>& sink) {
-    std::vector<std::unique_ptr<ShardReader>> shards;
+    ShardPool shards(paths);
     // The shards whose line in hand comes next: smallest case first, then the shard named first.
     using Entry = std::pair<std::size_t, std::size_t>; // case index, shard
     std::priority_queue<Entry, std::vector<Entry>, std::greater<>> heap;
-    for (const std::string& path : paths) {
-        shards.push_back(std::make_unique<ShardReader>(path));
-        if (shards.back()->next()) heap.push({shards.back()->line().row.index, shards.size() - 1});
-    }
+    for (std::size_t k = 0; k < paths.size(); ++k)
+        if (shards.next(k)) heap.push({shards.line(k).row.index, k});
     if (heap.empty()) throw StudyRowError("no rows in the shards");
-    const Line& first = shards[heap.top().second]->line();
-    const std::size_t cases = first.row.cases;
-    const std::string firstWhere = first.where;
+    const StudyLine first = shards.line(heap.top().second);
     std::size_t expected = 0;
     std::string block;
     // Each pass takes one line off the heap: bounded by the lines of the shards.
     while (!heap.empty()) {
         const auto [index, k] = heap.top();
         heap.pop();
-        const Line& l = shards[k]->line();
-        if (l.row.cases != cases)
-            throw StudyRowError(l.where + ": a study of " + std::to_string(l.row.cases) +
-                                " cases, but " + firstWhere + " is of " + std::to_string(cases));
+        const StudyLine& l = shards.line(k);
+        requireSameStudy(l, first);
         if (index < expected)
             throw StudyRowError(l.where + ": case " + std::to_string(index) + " appears twice");
-        if (index > expected) break; // case `expected` is in none of the shards
+        if (index > expected) {
+            // Case `expected` is in no line in hand; before saying it is in none of the shards,
+            // the rest of every shard is read: a shard out of case order is named at its line.
+            shards.readToEnd();
+            break;
+        }
         block += l.text;
         block += '\n';
         ++expected;
@@ -183,11 +163,11 @@ void mergeStudyShards(const std::vector<std::string>& paths,
             sink(block);
             block.clear();
         }
-        if (shards[k]->next()) heap.push({shards[k]->line().row.index, k});
+        if (shards.next(k)) heap.push({shards.line(k).row.index, k});
     }
-    if (expected != cases)
-        throw StudyRowError("case " + std::to_string(expected) + " of " + std::to_string(cases) +
-                            " is in none of the shards");
+    if (expected != first.row.cases)
+        throw StudyRowError("case " + std::to_string(expected) + " of " +
+                            std::to_string(first.row.cases) + " is in none of the shards");
     sink(block);
 }
 

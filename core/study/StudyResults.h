@@ -7,16 +7,49 @@
 
 #include "core/study/StudyRow.h"
 
+#include <cstddef>
 #include <functional>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace kinstab {
 
+class LineReader;
+
+struct StudyLine {
+    std::string text;
+    StudyRow row;
+    std::string where; // FILE:LINE
+};
+
+// The rows of one results file, one line in hand: each line at most limits::kMaxResultsRowBytes
+// (core/base/InputLimits.h), a read error told apart from the end of the file, every row
+// validated (parseStudyRow), of line 1's study, and in case order with no case twice. Throws
+// StudyRowError naming FILE or FILE:LINE.
+class StudyRowReader {
+public:
+    explicit StudyRowReader(const std::string& path, std::size_t chunk = 1 << 16);
+    ~StudyRowReader();
+    bool next(); // false at the end of the file
+    const StudyLine& line() const { return line_; }
+    LineReader& file();
+
+private:
+    std::string path_;
+    std::unique_ptr<LineReader> file_;
+    StudyLine line_, first_;
+};
+
+// Throws StudyRowError naming both lines and both fingerprints when l is of another study
+// (fingerprint, size or intensity measure) than first.
+void requireSameStudy(const StudyLine& l, const StudyLine& first);
+
 // Throws StudyRowError "FILE:LINE: message" for a line that is not a study row, a row of another
-// study (size or intensity measure) than the first, or a case given twice. Blank lines are not
-// allowed either: a study file is written whole.
+// study (fingerprint, size or intensity measure) than the first, a case given twice or out of
+// case order, or a parameter set's rows apart. Blank lines are not allowed either: a study file
+// is written whole.
 // text: the file's text as read, when asked (one read for rows kept and shown).
 std::vector<StudyRow> readStudyRows(const std::string& path, std::string* text = nullptr);
 
@@ -29,8 +62,10 @@ void forEachStudySet(const std::string& path,
 
 // Hands sink the lines of the shards in case order, a block at a time. Throws StudyRowError
 // naming the file and line of a row that is broken, repeated, out of case order in its shard or
-// of a study of another size, and the first missing case when the shards do not cover the
-// study; what sink has received by then is not the whole study.
+// of another study (both fingerprints named), and the first missing case when the shards do not
+// cover the study; what sink has received by then is not the whole study. Any number of shards:
+// those beyond the open-file limit are read with their descriptors released in turn
+// (core/study/ShardPool.h).
 void mergeStudyShards(const std::vector<std::string>& paths,
                       const std::function<void(std::string_view)>& sink);
 

@@ -2,8 +2,11 @@
 #include "core/study/StudyRow.h"
 
 #include "core/base/TextInput.h"
+#include "core/study/StudyFingerprint.h"
 
 #include <nlohmann/json.hpp>
+
+#include <cmath>
 
 namespace kinstab {
 
@@ -17,12 +20,24 @@ ojson orNull(const std::optional<double>& v) {
 double number(const nlohmann::json& j, const char* key) {
     if (!j.contains(key) || !j[key].is_number())
         throw StudyRowError(std::string("\"") + key + "\": expected a number");
-    return j[key].get<double>();
+    const double x = j[key].get<double>();
+    if (!std::isfinite(x)) throw StudyRowError(std::string("\"") + key + "\": not finite");
+    return x;
 }
 
-std::optional<double> optionalNumber(const nlohmann::json& j, const char* key) {
+// Every number of a row but the counts is a physical quantity > 0: a friction coefficient,
+// t*, a limit, a period, damping, an intensity or a scale. Zero or less is a broken row.
+double positive(const nlohmann::json& j, const char* key) {
+    const double x = number(j, key);
+    if (!(x > 0.0))
+        throw StudyRowError(std::string("\"") + key + "\" = " + formatDouble(x) +
+                            ": expected a number > 0");
+    return x;
+}
+
+std::optional<double> optionalPositive(const nlohmann::json& j, const char* key) {
     if (!j.contains(key) || j[key].is_null()) return std::nullopt;
-    return number(j, key);
+    return positive(j, key);
 }
 
 std::size_t count(const nlohmann::json& j, const char* key) {
@@ -60,6 +75,7 @@ std::string studyDriverText(const StudyRow& r) {
 std::string studyRowLine(const StudyRow& r) {
     ojson j = {{"case", r.index},
                {"cases", r.cases},
+               {"study", r.study},
                {"set", r.set},
                {"record", r.record},
                {"mu", r.mu},
@@ -87,41 +103,72 @@ std::string studyRowLine(const StudyRow& r) {
     return j.dump();
 }
 
-StudyRow parseStudyRow(const std::string& line) {
-    const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
-    if (j.is_discarded() || !j.is_object()) throw StudyRowError("not a JSON object");
-    StudyRow r;
+namespace {
+
+// The case's inputs: what the study file says about it.
+void parseInputs(const nlohmann::json& j, StudyRow& r) {
     r.index = count(j, "case");
     r.cases = count(j, "cases");
+    if (r.index >= r.cases) throw StudyRowError("\"case\": not below \"cases\"");
+    r.study = text(j, "study");
+    if (!isStudyFingerprint(r.study))
+        throw StudyRowError("\"study\" = " + quotedToken(r.study) +
+                            ": expected the study's fingerprint (" +
+                            std::to_string(kStudyFingerprintDigits) + " hex digits)");
     r.set = count(j, "set");
+    if (r.set > r.index) throw StudyRowError("\"set\": above \"case\"");
     r.record = text(j, "record");
-    r.mu = number(j, "mu");
-    r.tstar = number(j, "tstar");
-    r.limit = number(j, "limit");
-    r.floorPeriod = optionalNumber(j, "floor_period_s");
-    r.floorDamping = optionalNumber(j, "floor_damping");
+    if (r.record.empty()) throw StudyRowError("\"record\": empty");
+    r.mu = positive(j, "mu");
+    r.tstar = positive(j, "tstar");
+    r.limit = positive(j, "limit");
+    r.floorPeriod = optionalPositive(j, "floor_period_s");
+    r.floorDamping = optionalPositive(j, "floor_damping");
+    if (r.floorPeriod.has_value() != r.floorDamping.has_value())
+        throw StudyRowError("\"floor_period_s\" and \"floor_damping\": one without the other");
     r.measure = text(j, "measure");
-    r.recordIntensity = number(j, "record_im_g");
-    r.criticalIntensity = optionalNumber(j, "critical_im_g");
-    r.criticalPeak = optionalNumber(j, "critical_peak_g");
-    r.limitIntensity = number(j, "limit_im_g");
-    r.runs = static_cast<long>(count(j, "runs"));
+    if (r.measure.empty()) throw StudyRowError("\"measure\": empty");
     if (j.contains("level")) {
         const std::size_t level = count(j, "level");
         if (level < 1 || level > 1000) throw StudyRowError("\"level\": expected 1 to 1000");
         r.level = static_cast<int>(level);
     }
     r.motion = optionalText(j, "motion");
+    if (r.motion && r.motion != "record" && r.motion != "fitted_sine")
+        throw StudyRowError("\"motion\" = " + quotedToken(*r.motion) +
+                            ": expected \"record\" or \"fitted_sine\"");
+}
+
+// The case's result: intensities > 0, a critical one (with its peak) at most the search limit.
+void parseResult(const nlohmann::json& j, StudyRow& r) {
+    r.recordIntensity = positive(j, "record_im_g");
+    r.criticalIntensity = optionalPositive(j, "critical_im_g");
+    r.criticalPeak = optionalPositive(j, "critical_peak_g");
+    if (r.criticalIntensity.has_value() != r.criticalPeak.has_value())
+        throw StudyRowError("\"critical_im_g\" and \"critical_peak_g\": one without the other");
+    r.limitIntensity = positive(j, "limit_im_g");
+    if (r.criticalIntensity && *r.criticalIntensity > r.limitIntensity)
+        throw StudyRowError("\"critical_im_g\" = " + formatDouble(*r.criticalIntensity) +
+                            ": above \"limit_im_g\" = " + formatDouble(r.limitIntensity));
+    r.runs = static_cast<long>(count(j, "runs"));
     r.noFit = optionalText(j, "no_fit").value_or("");
-    r.scale = optionalNumber(j, "scale");
-    if (r.scale) {
-        r.imAsGiven = number(j, "im_as_given_g");
-        if (!j.contains("collapses_as_given") || !j["collapses_as_given"].is_boolean())
-            throw StudyRowError("\"collapses_as_given\": expected true or false");
-        r.collapsesAsGiven = j["collapses_as_given"].get<bool>();
-        r.margin = optionalNumber(j, "margin");
-    }
-    if (r.index >= r.cases) throw StudyRowError("\"case\": not below \"cases\"");
+    r.scale = optionalPositive(j, "scale");
+    if (!r.scale) return;
+    r.imAsGiven = positive(j, "im_as_given_g");
+    if (!j.contains("collapses_as_given") || !j["collapses_as_given"].is_boolean())
+        throw StudyRowError("\"collapses_as_given\": expected true or false");
+    r.collapsesAsGiven = j["collapses_as_given"].get<bool>();
+    r.margin = optionalPositive(j, "margin");
+}
+
+} // namespace
+
+StudyRow parseStudyRow(const std::string& line) {
+    const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+    if (j.is_discarded() || !j.is_object()) throw StudyRowError("not a JSON object");
+    StudyRow r;
+    parseInputs(j, r);
+    parseResult(j, r);
     return r;
 }
 

@@ -13,6 +13,7 @@ namespace kinstab {
 
 struct StudyRow {
     std::size_t index = 0, cases = 0, set = 0;
+    std::string study;  // the study's fingerprint (core/study/StudyFingerprint.h)
     std::string record; // label: the path relative to the study file
     double mu = 0, tstar = 0, limit = 0;
     std::optional<double> floorPeriod, floorDamping;
@@ -40,7 +41,8 @@ std::string studyRowLine(const StudyRow& r); // one line, no newline
 // What drives the slab in words, for tables and legends: "ground", "floor T = 1 s, ζ = 0.02" or
 // "level 8", with ", fitted sine" when the case runs the motion's enveloped-sine surrogate.
 std::string studyDriverText(const StudyRow& r);
-// Throws StudyRowError saying which key is missing or wrong.
+// Throws StudyRowError saying which key is missing or wrong: of the wrong type, or out of its
+// range (a critical intensity that is not > 0, or above the row's search limit).
 StudyRow parseStudyRow(const std::string& line);
 
 } // namespace kinstab

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 
 namespace kinstab {
 
@@ -80,11 +81,20 @@ std::string studyRowsMismatch(const StudySpec& spec, const std::string& studyDir
     if (rows.size() != cases)
         return std::to_string(rows.size()) + " rows, the study file has " + std::to_string(cases) +
                " cases";
+    if (spec.fingerprint.empty()) throw std::logic_error("studyRowsMismatch: records not hashed");
     for (std::size_t i = 0; i < rows.size(); ++i) {
         if (rows[i].index != i)
             return "row " + std::to_string(i + 1) + " is case " + std::to_string(rows[i].index);
         const std::string m = caseMismatch(spec, studyDir, rows[i], studyCase(spec, i));
         if (!m.empty()) return "row " + std::to_string(i + 1) + ": " + m;
+    }
+    // The same inputs, yet another study: a record's bytes, the search's step or tolerance, or
+    // the building differ from what the rows were computed with.
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        if (rows[i].study != spec.fingerprint)
+            return "row " + std::to_string(i + 1) + " is of study " + rows[i].study +
+                   ", the study file and its records are study " + spec.fingerprint +
+                   " (a record, the search or the building changed)";
     }
     return {};
 }

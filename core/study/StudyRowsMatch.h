@@ -4,8 +4,9 @@
 // after its run must not have the old rows shown or printed as its result. Each row carries its
 // case's inputs (record and its scale, mu, t*, floor filter or level, motion, limit, intensity
 // measure), and, where the record collapsed the slab, the search limit follows from the row too
-// (limit_im / critical_im = max_g / critical_peak). The scan step and tolerance are not in the rows
-// and are not checked.
+// (limit_im / critical_im = max_g / critical_peak). Then each row's fingerprint must be the
+// study's (core/study/StudyFingerprint.h), which covers what the rows do not show: the records'
+// bytes, the search's step and tolerance, the building.
 
 #include "core/study/StudyRow.h"
 #include "core/study/StudySpec.h"
@@ -17,7 +18,8 @@ namespace kinstab {
 
 // "" when rows are the study's cases in order, else the first difference in words
 // ("row 3: mu = 0.6, the study file says 0.5"). studyDir: the study file's directory, against
-// which a row's relative record label is resolved.
+// which a row's relative record label is resolved. spec's records must be hashed
+// (hashStudyRecords or loadStudyRecords, core/study/StudyRecords.h).
 std::string studyRowsMismatch(const StudySpec& spec, const std::string& studyDir,
                               const std::vector<StudyRow>& rows);
 

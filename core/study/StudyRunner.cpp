@@ -3,26 +3,19 @@
 
 #include "core/building/FloorMotions.h"
 #include "core/excitation/FloorFilter.h"
-#include "core/excitation/RecordExcitation.h"
 #include "core/study/CaseCritical.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <exception>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
 namespace kinstab {
 
 namespace {
-
-RecordExcitation excitationOf(const StudyRecord& r, const std::optional<FloorFilterChoice>& f) {
-    RecordExcitation e;
-    e.file = r.file;
-    if (f) e.floor = FloorFilterParams{f->period, f->damping, std::nullopt};
-    return e;
-}
 
 double maxAbs(const std::vector<double>& v) {
     double m = 0.0;
@@ -45,7 +38,8 @@ std::vector<Accelerogram> levelMotions(const StudySpec& s, const Accelerogram& g
 // The motion under the slab: the ground record, through the floor filter, or the case's level.
 Accelerogram caseMotion(const StudySpec& s, const StudyCase& c, const Accelerogram& ground) {
     if (c.level > 0) return levelMotions(s, ground)[static_cast<std::size_t>(c.level - 1)];
-    return drivingMotion(excitationOf(*c.record, c.floor), ground);
+    if (c.floor) return floorMotion(ground, {c.floor->period, c.floor->damping, std::nullopt});
+    return ground;
 }
 
 // The record as given in the suite (the file times its scale) against its critical intensity.
@@ -59,25 +53,9 @@ void addAsGiven(const StudyRecord& record, StudyRow& row) {
 
 } // namespace
 
-void checkStudyRecords(const StudySpec& s) {
-    for (const StudyRecord& r : s.records) {
-        try {
-            const Accelerogram ground = readGroundRecord(excitationOf(r, std::nullopt));
-            for (const auto& f : s.floors)
-                if (!(maxAbs(drivingMotion(excitationOf(r, f), ground).samples) > 0.0))
-                    throw RecordError(r.file, 0, "the motion is zero throughout");
-            if (!s.levels.empty())
-                for (const Accelerogram& m : levelMotions(s, ground))
-                    if (!(maxAbs(m.samples) > 0.0))
-                        throw RecordError(r.file, 0, "the motion is zero throughout");
-        } catch (const RecordError& e) {
-            throw StudyError("records: " + std::string(e.what()));
-        }
-    }
-}
-
 StudyRow runStudyCase(const StudySpec& s, const StudyCase& c) {
-    const Accelerogram ground = readGroundRecord(excitationOf(*c.record, std::nullopt));
+    if (!c.record->ground) throw std::logic_error("runStudyCase: the records were not read");
+    const Accelerogram& ground = *c.record->ground;
     const Accelerogram motion = caseMotion(s, c, ground);
     Slab1DCase slab;
     slab.tstar = c.tstar;
@@ -131,17 +109,23 @@ void runBlock(const StudySpec& s, const std::vector<std::size_t>& indices, unsig
 
 } // namespace
 
+std::size_t shardCaseCount(const StudySpec& s, const Shard& shard) {
+    const std::size_t total = studyCaseCount(s);
+    return total / shard.n + (total % shard.n >= shard.k ? 1 : 0);
+}
+
 std::size_t runStudy(const StudySpec& s, const StudyRunOptions& o,
                      const std::function<void(const std::string&)>& sink) {
     const std::size_t total = studyCaseCount(s);
-    const std::size_t mine = total / o.shard.n + (total % o.shard.n >= o.shard.k ? 1 : 0);
+    const std::size_t mine = shardCaseCount(s, o.shard);
     const unsigned threads = std::max(1u, o.threads);
     const std::size_t blockSize = 16 * static_cast<std::size_t>(threads);
     std::size_t written = 0;
     std::vector<std::size_t> indices;
     std::vector<std::string> lines;
+    if (o.done >= mine) return 0;
     // Every loop is bounded by the shard's case count; a block is at most blockSize cases.
-    for (std::size_t start = o.shard.k - 1; start < total;) {
+    for (std::size_t start = o.shard.k - 1 + o.done * o.shard.n; start < total;) {
         indices.clear();
         for (; start < total && indices.size() < blockSize; start += o.shard.n)
             indices.push_back(start);
@@ -153,7 +137,7 @@ std::size_t runStudy(const StudySpec& s, const StudyRunOptions& o,
             text += l;
         sink(text);
         written += indices.size();
-        if (o.control && o.control->onProgress) o.control->onProgress(written, mine);
+        if (o.control && o.control->onProgress) o.control->onProgress(o.done + written, mine);
     }
     return written;
 }

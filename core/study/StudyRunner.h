@@ -13,21 +13,24 @@
 
 namespace kinstab {
 
-// Reads every record of the suite once (and through each floor filter), so that a broken file
-// is found before any case runs: throws StudyError "records: FILE:LINE: message".
-void checkStudyRecords(const StudySpec& s);
-
-// One case: the critical intensity of the record for the case's slab and floor.
+// One case: the critical intensity of the record for the case's slab and floor. The study's
+// records must have been read (loadStudyRecords, core/study/StudyRecords.h): a case never reads
+// a file, so a record changed during the study cannot change its rows.
 StudyRow runStudyCase(const StudySpec& s, const StudyCase& c);
 
 struct StudyRunOptions {
     Shard shard;
     unsigned threads = 1;
     SweepControl* control = nullptr; // cancel (stops within one case per thread); progress
+    std::size_t done = 0; // the shard's first cases already written (study --resume): skipped
 };
 
+// The number of cases of shard `shard` of the study.
+std::size_t shardCaseCount(const StudySpec& s, const Shard& shard);
+
 // Calls sink with the JSONL text ("...\n" per row) of each finished block of cases, in case
-// order. Returns the number of rows written; fewer than the shard's cases only when cancelled.
+// order, from the shard's case `done` on. Returns the number of rows written; fewer than the
+// shard's cases less `done` only when cancelled.
 std::size_t runStudy(const StudySpec& s, const StudyRunOptions& options,
                      const std::function<void(const std::string&)>& sink);
 

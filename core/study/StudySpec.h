@@ -8,9 +8,11 @@
 #include "core/building/FloorSettings.h"
 #include "core/building/ModalModel.h"
 #include "core/codes/Building.h"
+#include "core/records/Accelerogram.h"
 #include "core/sweep/CriticalAmplitude.h"
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -34,6 +36,10 @@ inline constexpr std::size_t kMaxStudyCases = 10'000'000;
 // A record's scale in the suite: scaling to a target spectrum uses factors of about 0.2 to 5;
 // a factor of 100 turns a 0.01 g record into 1 g, beyond any suite's need.
 inline constexpr double kMaxStudyRecordScale = 100.0;
+// Samples of all the suite's records together, held in memory for the whole study (each record
+// is read once: core/study/StudyRecords.h): 10,000 records of 25,000 samples (125 s at 200
+// samples/s, longer than most strong-motion records), 2 GB as doubles.
+inline constexpr std::size_t kMaxStudySuiteSamples = 250'000'000;
 
 // The intensity measure a critical scale is expressed in: the peak ground acceleration of the
 // record, or its 5 %-damped spectral acceleration at a period (peak absolute acceleration of a
@@ -51,6 +57,10 @@ struct StudyRecord {
     std::string file;  // absolute path
     std::string label; // the path as the study file writes it (relative to it, or absolute)
     double scale = 1;  // the record as given in the suite is the file times this
+    // Once read (core/study/StudyRecords.h): the SHA-256 of the file's bytes and, for a run,
+    // the ground motion parsed from those same bytes, which every case of the record uses.
+    std::string sha256;
+    std::shared_ptr<const Accelerogram> ground;
 };
 
 struct FloorFilterChoice {
@@ -87,6 +97,7 @@ struct StudySpec {
     bool motionGiven = false; // parameters.motion is in the file: rows name their motion
     double limit = 1.0;       // slab.limit, bearing length / (d/2)
     CriticalSearch search;
+    std::string fingerprint; // once the records are read (core/study/StudyFingerprint.h)
 };
 
 } // namespace kinstab

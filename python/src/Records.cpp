@@ -51,7 +51,7 @@ Accelerogram readRecordFile(const std::string& path, const std::string& format,
         py::gil_scoped_release unlocked;
         return readRecord(path, o);
     } catch (const RecordError& e) {
-        badArgument("path='" + path + "': " + e.what());
+        badArgument("path='" + nulShown(path) + "': " + e.what());
     }
 }
 
@@ -146,9 +146,9 @@ py::dict recordRun(const Slab1DCase& c, const std::string& path, std::optional<d
             history = sampleHistory(motion, c.slab.mu, a.run.events, a.run.tauEnd, *historyStep);
         }
     } catch (const RecordError& e) {
-        badArgument("path='" + path + "': " + e.what());
+        badArgument("path='" + nulShown(path) + "': " + e.what());
     } catch (const std::invalid_argument& e) {
-        badArgument("path='" + path + "': " + e.what());
+        badArgument("path='" + nulShown(path) + "': " + e.what());
     }
     py::dict d;
     d["outcome"] = outcomeName(a.run.outcome);

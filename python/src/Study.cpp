@@ -3,6 +3,7 @@
 // (python/kinstab/study.py). A row is the JSON line kinstab-cli study writes, to the byte.
 
 #include "core/io/StudySpecJson.h"
+#include "core/study/StudyRecords.h"
 #include "core/study/StudyRunner.h"
 #include "python/src/Bindings.h"
 
@@ -27,7 +28,7 @@ std::size_t caseCount(const std::string& path) {
 }
 
 std::vector<std::string> rows(const std::string& path, const std::vector<std::size_t>& cases) {
-    const StudySpec s = loadOrRaise(path);
+    StudySpec s = loadOrRaise(path);
     const std::size_t n = studyCaseCount(s);
     for (std::size_t i : cases)
         if (i >= n)
@@ -36,7 +37,7 @@ std::vector<std::string> rows(const std::string& path, const std::vector<std::si
     std::vector<std::string> out;
     py::gil_scoped_release release; // the runs need no Python
     try {
-        checkStudyRecords(s);
+        loadStudyRecords(s); // each record read once, for every case of the batch
         for (std::size_t i : cases)
             out.push_back(studyRowLine(runStudyCase(s, studyCase(s, i))));
     } catch (const StudyError& e) {

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Command-line conventions of both executables (docs/user-guide.md, "The command line"):
 // --version, --help and COMMAND --help / -h exit 0 and print to stdout; `kinstab --help` and
-// `kinstab --version` need no display; every JSON output names the kinstab version.
+// `kinstab --version` need no display; every JSON output names the kinstab version; the exit
+// codes (0 done, 2 bad input, 3 an output not written, 4 no finite model result, 1 a bug) are
+// those --help, the man page and README name (issue 31; tst_exit_codes maps the failures).
 
 #include <QDir>
 #include <QFile>
@@ -79,6 +81,25 @@ private slots:
         const QByteArray man = f.readAll();
         for (const QString& c : overviewCommands())
             QVERIFY2(man.contains("\n.B " + c.toUtf8() + "\n"), qPrintable(c));
+    }
+    void exitCodesAgreeEverywhere() {
+        const QByteArray help = cli({"--help"}).out.simplified();
+        for (const char* code : {"0 success", "2 bad input", "3 an output could not be written",
+                                 "4 the model gave no finite result", "1 a bug in kinstab"})
+            QVERIFY2(help.contains(code), code);
+        QFile man(QStringLiteral(KINSTAB_SOURCE_DIR "/docs/man/kinstab-cli.1.in"));
+        QVERIFY(man.open(QIODevice::ReadOnly));
+        const QByteArray status = man.readAll().split('\n').join(' ');
+        for (const char* code :
+             {".B 0 success", ".B 1 a bug in kinstab", ".B 2 bad input",
+              ".B 3 an output could not be written", ".B 4 the model gave no finite result"})
+            QVERIFY2(status.contains(code), code);
+        QFile readme(QStringLiteral(KINSTAB_SOURCE_DIR "/README.md"));
+        QVERIFY(readme.open(QIODevice::ReadOnly));
+        const QByteArray text = readme.readAll().simplified();
+        for (const char* code : {"0 done", "2 bad input", "3 an output could not be written",
+                                 "4 the model gave no finite result", "1 a bug"})
+            QVERIFY2(text.contains(code), code);
     }
     void helpNamesUnitsAndDefaults() {
         // The model flags carry the paper's defaults (Furgerson 1980, ch. IV: mu = 0.6,

@@ -139,6 +139,12 @@ private slots:
         named.insert(named.indexOf("\"name\": \"") + 9, QByteArray(10'000'000, 'N'));
         QTest::newRow("10 MB project name")
             << named << "name: 10000033 characters, more than the limit of 200";
+        // Cut at the NUL, the path names the shipped record: refused, not read (issue 31).
+        QTest::newRow("record path with a NUL")
+            << contents(kRecordProject)
+                   .replace("../records/RSN77_SFERN_PUL164.AT2",
+                            (kRoot + "/resources/records/RSN77_SFERN_PUL164.AT2\\u0000.x").toUtf8())
+            << "excitation.record.file: the path contains a NUL character";
     }
     void badProjects() {
         QFETCH(QByteArray, text);

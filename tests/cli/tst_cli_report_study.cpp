@@ -3,11 +3,13 @@
 // pdftotext: the medians and dispersions it prints are those of `kinstab-cli fragility` on the
 // same rows, at the report's printed precision (3 decimals), whether the rows come from the
 // project's results file or the report runs the study itself; the section is absent from a
-// project without a study; a study file that cannot be read is exit 2 naming study.spec.
+// project without a study; a study file that cannot be read is exit 2 naming study.spec, and
+// results that are /dev/zero exit 2 at once (issue 31: it reserved 10 GB and ended with exit 1).
 
 #include "CliRun.h"
 #include "FileBytes.h"
 
+#include <QElapsedTimer>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -138,6 +140,22 @@ private slots:
         const Run c = cli({"check", "--project", project});
         QCOMPARE(c.code, 2);
         QVERIFY2(c.err.contains("study.spec"), c.err.constData());
+    }
+
+    void resultsWithoutLineBreaksAreRefusedAtOnce() {
+        const QJsonObject study{{"spec", kSpec}, {"results", "/dev/zero"}};
+        const QString project = projectWith(study, "zero-results.json");
+        QElapsedTimer t;
+        t.start();
+        const Run r = run(KINSTAB_CLI,
+                          {"report", "--project", project, "-o", dir_.filePath("zero.pdf")}, 20000);
+        const qint64 ms = t.elapsed();
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains("study.results = '/dev/zero'") &&
+                     r.err.contains("line 1 is longer than the limit of 65536 bytes"),
+                 r.err.constData());
+        QVERIFY2(ms < 10000, qPrintable(QString::number(ms)));
+        QVERIFY(!QFile::exists(dir_.filePath("zero.pdf")));
     }
 };
 

@@ -5,7 +5,9 @@
 //  - GNU parallel running the shards and the merge (examples/parallel/run-study.sh) gives the
 //    same bytes; the Slurm scripts in examples/slurm pass bash -n;
 //  - each row names its inputs and its critical intensity (or is censored at the limit);
-//  - a bad study file, shard or results file is exit 2 with the field named.
+//  - a bad study file, shard or results file is exit 2 with the field named; shards of two studies
+//    of the same size are refused naming both fingerprints (issue 31), and a shard out of case
+//    order is named at its line, not reported as a missing case.
 
 #include "CliRun.h"
 #include "FileBytes.h"
@@ -116,6 +118,52 @@ private slots:
         QCOMPARE(r.code, 2);
         QVERIFY2(r.err.contains("reversed.jsonl:3: case 0 is not after case 1"), r.err);
         QVERIFY(!QFile::exists(dir_.filePath("never.jsonl"))); // a refused merge leaves no file
+    }
+    void mergeRefusesShardsOfTwoStudies() {
+        // The same study with mu [0.5, 0.8]: as many cases, other rows (issue 31: merged, and
+        // fragility then fitted mu 0.7 and 0.8 rows as one set).
+        QTemporaryDir d;
+        QByteArray other = readAll(kSpec);
+        QVERIFY(other.contains("\"mu\": [0.5, 0.7]"));
+        other.replace("\"mu\": [0.5, 0.7]", "\"mu\": [0.5, 0.8]");
+        other.replace("../../../resources", KINSTAB_SOURCE_DIR "/resources");
+        writeBytes(d.filePath("other.json"), other);
+        const QString one = d.filePath("one.jsonl"), two = d.filePath("two.jsonl");
+        QCOMPARE(cli({"study", "--spec", kSpec, "--shard", "1/2", "-o", one}).code, 0);
+        QCOMPARE(
+            cli({"study", "--spec", d.filePath("other.json"), "--shard", "2/2", "-o", two}).code,
+            0);
+        const Run m = cli({"merge", one, two, "-o", d.filePath("merged.jsonl")});
+        QCOMPARE(m.code, 2);
+        const QByteArray
+            a = QJsonDocument::fromJson(readAll(one).split('\n')[0])["study"].toString().toUtf8(),
+            b = QJsonDocument::fromJson(readAll(two).split('\n')[0])["study"].toString().toUtf8();
+        QVERIFY(a.size() == 16 && b.size() == 16 && a != b);
+        QVERIFY2(m.err.contains("two.jsonl:1: a row of another study than") &&
+                     m.err.contains("one.jsonl:1's") && m.err.contains(a) && m.err.contains(b),
+                 m.err.constData());
+        QVERIFY(!QFile::exists(d.filePath("merged.jsonl")));
+        // Concatenated into one file, fragility refuses them likewise.
+        writeBytes(d.filePath("cat.jsonl"), readAll(one) + readAll(two));
+        const Run f = cli({"fragility", "--results", d.filePath("cat.jsonl")});
+        QCOMPARE(f.code, 2);
+        QVERIFY2(f.err.contains(a) && f.err.contains(b), f.err.constData());
+    }
+    void mergeNamesAShardOutOfOrderAtItsLine() {
+        // Shard 1/2 (cases 0, 2, 4, ...) with cases 4 and 6 swapped: case 4 is in it, later.
+        QTemporaryDir d;
+        const QList<QByteArray> lines = whole_.trimmed().split('\n');
+        QByteArray odd, even;
+        for (int i : {0, 2, 6, 4, 8, 10})
+            even += lines[i] + "\n";
+        for (int i : {1, 3, 5, 7, 9, 11})
+            odd += lines[i] + "\n";
+        writeBytes(d.filePath("even.jsonl"), even);
+        writeBytes(d.filePath("odd.jsonl"), odd);
+        const Run r = cli({"merge", d.filePath("even.jsonl"), d.filePath("odd.jsonl"), "-o", "-"});
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains("even.jsonl:4: case 4 is not after case 6"), r.err.constData());
+        QVERIFY2(!r.err.contains("none of the shards"), r.err.constData());
     }
     void gnuParallelRunsTheShards() {
         if (QStandardPaths::findExecutable("parallel").isEmpty())

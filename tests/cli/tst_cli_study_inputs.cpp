@@ -8,16 +8,23 @@
 //  - parameters.motion "fitted_sine": the critical peak is kinstab-cli critical's A_crit of the
 //    enveloped sine with the envelope and frequency kinstab-cli record reports for the record;
 //    a motion of fewer than 3 half cycles has no fit and its row says why;
-//  - a bad scale, level or motion is exit 2 naming the field and the value.
+//  - a bad scale, level or motion is exit 2 naming the field and the value;
+//  - records folders (issue 31): an excluded entry is never looked at (a self-looping symlink
+//    among them does no harm), a matched symlink that loops or leads out of the folder is exit 2
+//    naming it, one to a file in the folder is a record; a path with a NUL is refused, not cut.
 
 #include "CliRun.h"
 #include "FileBytes.h"
 
+#include <QDir>
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <unistd.h>
 
 #include <array>
 #include <cmath>
@@ -274,6 +281,42 @@ private slots:
         QVERIFY2(err.contains("parameters.motion[0] = 'sine'"), err);
         err = refusal(study(rec, "\"parameters\": {\"motion\": [\"record\", \"record\"]}"));
         QVERIFY2(err.contains("parameters.motion[1] = 'record': appears twice"), err);
+    }
+    void recordFoldersAndTheirSymlinks() {
+        QTemporaryDir d;
+        const QString folder = d.filePath("records");
+        QVERIFY(QDir().mkpath(folder));
+        QVERIFY(QFile::copy(QString(kElc), folder + "/ELC180.AT2"));
+        QCOMPARE(::symlink("loop.AT2", qPrintable(folder + "/loop.AT2")), 0); // a link to itself
+        const QString spec = d.filePath("spec.json");
+        const auto withFolder = [&](const QByteArray& patterns) {
+            writeBytes(spec, study("{\"path\": \"records\"" + patterns + "}",
+                                   "\"parameters\": {\"mu\": [0.5]}"));
+            return cli({"study", "--spec", spec, "--threads", "1"});
+        };
+        Run r = withFolder(", \"exclude\": [\"loop*\"]");
+        QVERIFY2(r.code == 0, r.err.constData());
+        QCOMPARE(r.out.count('\n'), 1);
+        r = withFolder("");
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains("records[0].path = 'loop.AT2': a symlink that cannot be followed"),
+                 r.err.constData());
+        QVERIFY(QFile::remove(folder + "/loop.AT2"));
+        QCOMPARE(::symlink(kElc.constData(), qPrintable(folder + "/outside.AT2")), 0);
+        r = withFolder("");
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains("'outside.AT2': a symlink out of the folder"), r.err.constData());
+        QVERIFY(QFile::remove(folder + "/outside.AT2"));
+        QCOMPARE(::symlink("ELC180.AT2", qPrintable(folder + "/inside.AT2")), 0);
+        r = withFolder("");
+        QVERIFY2(r.code == 0, r.err.constData());
+        QCOMPARE(r.out.count('\n'), 2);
+    }
+    void aPathWithNulIsRefused() {
+        // "ELC180.AT2\u0000junk" names no file; cut at the NUL it would name ELC180.AT2.
+        const QByteArray rec = "{\"path\": \"" + kElc + "\\u0000junk\"}";
+        const QByteArray err = refusal(study(rec, "\"parameters\": {\"mu\": [0.5]}"));
+        QVERIFY2(err.contains("records[0].path: the path contains a NUL character"), err);
     }
 };
 

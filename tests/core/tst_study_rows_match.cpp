@@ -2,9 +2,11 @@
 // A results file is shown or printed as a study's only when its rows are that study's cases:
 // rows written from the study's own cases match; a row whose level, motion or record scale is
 // not the study file's is named, as one whose mu differs (the fields a study with a building,
-// fitted-sine motions and scaled records adds to the rows).
+// fitted-sine motions and scaled records adds to the rows); and rows of the same inputs but
+// another fingerprint (a record's bytes, the search step) are refused too.
 
 #include "core/study/StudyCase.h"
+#include "core/study/StudyFingerprint.h"
 #include "core/study/StudyRowsMatch.h"
 
 #include <QtTest>
@@ -13,9 +15,18 @@ using namespace kinstab;
 
 namespace {
 
+StudyRecord record(const std::string& name, double scale) {
+    StudyRecord r;
+    r.file = "/data/" + name;
+    r.label = name;
+    r.scale = scale;
+    r.sha256 = std::string(64, name[0] == 'a' ? '1' : '2'); // as if read
+    return r;
+}
+
 StudySpec spec() {
     StudySpec s;
-    s.records = {{"/data/a.AT2", "a.AT2", 2.0}, {"/data/b.AT2", "b.AT2", 0.5}};
+    s.records = {record("a.AT2", 2.0), record("b.AT2", 0.5)};
     s.asGiven = true;
     s.mu = {0.4, 0.6};
     s.tstar = {0.099};
@@ -25,6 +36,7 @@ StudySpec spec() {
     s.motions = {StudyMotion::Record, StudyMotion::FittedSine};
     s.motionGiven = true;
     s.search.to = 3.0;
+    s.fingerprint = studyFingerprint(s);
     return s;
 }
 
@@ -68,6 +80,18 @@ private slots:
         rows = rowsOf(s);
         rows[5].mu = 0.5;
         QVERIFY(studyRowsMismatch(s, "/data", rows).find("row 6: mu = 0.5") == 0);
+    }
+
+    void anotherFingerprintIsNamed() {
+        StudySpec s = spec();
+        const std::vector<StudyRow> rows = rowsOf(s);
+        s.records[1].sha256 = std::string(64, '3'); // b.AT2's bytes changed since the run
+        s.fingerprint = studyFingerprint(s);
+        const std::string m = studyRowsMismatch(s, "/data", rows);
+        QVERIFY2(m.find("row 1 is of study " + rows[0].study) == 0, m.c_str());
+        QVERIFY2(m.find("the study file and its records are study " + s.fingerprint) !=
+                     std::string::npos,
+                 m.c_str());
     }
 };
 

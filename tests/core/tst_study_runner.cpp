@@ -1,15 +1,22 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The study engine (docs/studies.md): the fixed case order (mu slowest, then t*, then the floor
 // filter, records fastest), shards, the rows on one thread and on three (the same bytes), a row
-// read back equal to the one written, and cancel (also run under ThreadSanitizer, scripts/tsan.sh).
+// read back equal to the one written, cancel (also run under ThreadSanitizer, scripts/tsan.sh),
+// a run continued after its first rows (study --resume), and records read once: a record
+// rewritten or deleted during the run does not change the rows still to come.
 
 #include "core/io/AtomicFile.h"
 #include "core/io/StudySpecJson.h"
+#include "core/study/StudyRecords.h"
 #include "core/study/StudyRunner.h"
 
 #include <nlohmann/json.hpp>
 
 #include <QtTest>
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
 
 #include <algorithm>
 #include <sstream>
@@ -19,6 +26,12 @@ using namespace kinstab;
 namespace {
 
 const std::string kSpec = KINSTAB_TEST_DATA "/study/small-study.json";
+
+StudySpec loaded(const std::string& path) {
+    StudySpec s = loadStudy(path);
+    loadStudyRecords(s);
+    return s;
+}
 
 std::string runAll(const StudySpec& s, unsigned threads, SweepControl* control = nullptr) {
     std::string text;
@@ -55,7 +68,7 @@ private slots:
         QVERIFY(k2.owns(1) && k2.owns(4) && !k2.owns(0) && !k2.owns(2));
     }
     void threadsGiveTheSameRows() {
-        const StudySpec s = loadStudy(kSpec);
+        const StudySpec s = loaded(kSpec);
         const std::string one = runAll(s, 1);
         QCOMPARE(runAll(s, 3), one);
         std::istringstream in(one);
@@ -70,7 +83,8 @@ private slots:
         // 11 mu x 3 records x 2 floors = 66 cases; one thread runs blocks of 16.
         nlohmann::json j = nlohmann::json::parse(readWholeFile(kSpec));
         j["parameters"]["mu"] = "0.3:0.8:0.05";
-        const StudySpec s = studyFromJsonText(j.dump(), KINSTAB_TEST_DATA "/study");
+        StudySpec s = studyFromJsonText(j.dump(), KINSTAB_TEST_DATA "/study");
+        loadStudyRecords(s);
         QCOMPARE(studyCaseCount(s), std::size_t(66));
         SweepControl control;
         control.onProgress = [&](std::size_t, std::size_t) { control.cancel(); };
@@ -84,6 +98,44 @@ private slots:
         text.clear();
         QCOMPARE(runStudy(s, o, [&](const std::string& t) { text += t; }), std::size_t(0));
         QVERIFY(text.empty());
+    }
+    void aRunContinuesAfterItsFirstRows() {
+        const StudySpec s = loaded(kSpec);
+        const std::string all = runAll(s, 1);
+        StudyRunOptions o;
+        o.shard = *parseShard("2/3"); // cases 1, 4, 7, 10
+        QCOMPARE(shardCaseCount(s, o.shard), std::size_t(4));
+        std::string shard, rest;
+        runStudy(s, o, [&](const std::string& t) { shard += t; });
+        o.done = 1;
+        QCOMPARE(runStudy(s, o, [&](const std::string& t) { rest += t; }), std::size_t(3));
+        QCOMPARE(rest, shard.substr(shard.find('\n') + 1)); // cases 4, 7, 10
+        o.done = 4;
+        QCOMPARE(runStudy(s, o, [](const std::string&) { QFAIL("no rows were left"); }),
+                 std::size_t(0));
+    }
+    void recordsAreReadOnce() {
+        // The study's records copied, so that they can be rewritten and deleted mid-study.
+        QTemporaryDir dir;
+        const QDir records(KINSTAB_SOURCE_DIR "/resources/records");
+        const QStringList names = {"RSN6_IMPVALL.I_I-ELC180.AT2", "RSN68_SFERN_PEL090.AT2",
+                                   "RSN68_SFERN_PEL180.AT2"};
+        for (const QString& n : names)
+            QVERIFY(QFile::copy(records.filePath(n), dir.filePath(n)));
+        nlohmann::json j = nlohmann::json::parse(readWholeFile(kSpec));
+        j["records"] = {{{"path", "."}, {"include", {"*.AT2"}}}};
+        StudySpec s = studyFromJsonText(j.dump(), dir.path().toStdString());
+        loadStudyRecords(s);
+        const std::string before = runAll(s, 2);
+        // One record rewritten as another, one deleted: the rows stay those of the records
+        // as they were read.
+        QVERIFY(QFile::remove(dir.filePath(names[0])));
+        QVERIFY(QFile::copy(records.filePath("Rinaldi228.AT2"), dir.filePath(names[0])));
+        QVERIFY(QFile::remove(dir.filePath(names[1])));
+        QCOMPARE(runAll(s, 2), before);
+        // A spec whose records were never read runs no case (a programming error).
+        StudySpec unread = studyFromJsonText(j.dump(), dir.path().toStdString());
+        QVERIFY_THROWS_EXCEPTION(std::logic_error, runAll(unread, 1));
     }
 };
 

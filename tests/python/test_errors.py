@@ -75,6 +75,13 @@ def test_record_errors_name_the_file(tmp_path):
         kinstab.read_record(str(missing), format="values")
 
 
+def test_record_path_with_nul_is_refused(source_dir):
+    # Cut at the NUL, the path would name a record that exists: refused, not read (issue 31).
+    path = str(source_dir / "resources" / "records" / "RSN68_SFERN_PEL090.AT2")
+    with pytest.raises(ValueError, match="NUL character"):
+        kinstab.read_record(path + "\0junk")
+
+
 def test_codes_errors_name_the_field():
     with pytest.raises(ValueError, match=r"building\.stories"):
         kinstab.codes({"stories": -3, "height": 100, "plan_dimension": 50},

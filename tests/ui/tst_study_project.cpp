@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The project's study in the window (docs/studies.md): opening a project shows its study in the
 // Study tab, with its results read back (named by the project, or found beside it) and never
-// results of another study; opening a project without one clears the tab; "Use in project" puts
+// results of another study (other inputs, or only another search: the rows' fingerprint);
+// opening a project without one clears the tab; "Use in project" puts
 // the study and the results of its run into the project, marked unsaved, and saving and
 // reopening shows them again; editing the fields after a run marks the results stale.
 // The numbers compared are those of a real run of `kinstab-cli study` on two shipped records and
@@ -10,6 +11,7 @@
 #include "core/io/AtomicFile.h"
 #include "core/io/StudySpecJson.h"
 #include "core/study/Fragility.h"
+#include "core/study/StudyRecords.h"
 #include "core/study/StudyResults.h"
 #include "core/study/StudyRowsMatch.h"
 #include "ui/InputHistory.h"
@@ -177,12 +179,14 @@ private slots:
     void resultsOfAnotherStudyAreRefused() {
         const QString other = dir_.filePath("other.json");
         write(other, tinyStudy("[0.4, 0.5]"));
-        const std::string m =
-            studyRowsMismatch(loadStudy(other.toStdString()), dir_.path().toStdString(), cliRows_);
+        const auto hashed = [](const QString& path) {
+            StudySpec s = loadStudy(path.toStdString());
+            hashStudyRecords(s); // the rows' fingerprints are checked against the records
+            return s;
+        };
+        const std::string m = studyRowsMismatch(hashed(other), dir_.path().toStdString(), cliRows_);
         QVERIFY2(QString::fromStdString(m).contains("mu = 0.6"), m.c_str());
-        QVERIFY(
-            studyRowsMismatch(loadStudy(spec_.toStdString()), dir_.path().toStdString(), cliRows_)
-                .empty());
+        QVERIFY(studyRowsMismatch(hashed(spec_), dir_.path().toStdString(), cliRows_).empty());
 
         const QString project =
             projectWith(dir_.filePath("stale.json"), {{"spec", other}, {"results", rows_}});
@@ -202,6 +206,32 @@ private slots:
         const QByteArray err = p.readAllStandardError();
         QVERIFY2(err.contains("study.results") && err.contains("mu = 0.6"), err.constData());
         QVERIFY(!QFile::exists(dir_.filePath("stale.pdf")));
+    }
+
+    // The same study with another scan step: the rows show the same inputs, but were not
+    // computed with this search (issue 31: shown, as the step is in no row). The fingerprint
+    // tells them apart, in the tab and in the report.
+    void resultsOfAnotherSearchAreRefused() {
+        const QString other = dir_.filePath("other-step.json");
+        QByteArray text = tinyStudy();
+        text.replace("\"scan_step_g\": 0.05", "\"scan_step_g\": 0.04");
+        write(other, text);
+        const QString project =
+            projectWith(dir_.filePath("step.json"), {{"spec", other}, {"results", rows_}});
+        MainWindow w;
+        QVERIFY(open(w, project, true));
+        StudyTab* tab = w.studyTab();
+        QCOMPARE(tab->table()->rowCount(), 0);
+        QVERIFY2(tab->message().contains("not the study's") &&
+                     tab->message().contains("is of study "),
+                 qPrintable(tab->message()));
+        QProcess p;
+        p.start(KINSTAB_CLI, {"report", "--project", project, "--sections", "study", "-o",
+                              dir_.filePath("step.pdf")});
+        QVERIFY(p.waitForFinished(120000));
+        QCOMPARE(p.exitCode(), 2);
+        const QByteArray err = p.readAllStandardError();
+        QVERIFY2(err.contains("study.results") && err.contains("is of study "), err.constData());
     }
 
     void useInProjectSaveReopen() {
