@@ -23,7 +23,7 @@ def rows(measure="pga"):
     for i in range(12):
         critical = (0.9 if i < 6 else 1.4) * math.exp(0.35 * z[i % 6])
         lines.append(json.dumps({
-            "case": i, "cases": 12, "set": i // 6, "record": f"r{i}", "mu": 0.6, "tstar": 0.099,
+            "study": "0123456789abcdef", "case": i, "cases": 12, "set": i // 6, "record": f"r{i}", "mu": 0.6, "tstar": 0.099,
             "limit": 1, "floor_period_s": None, "floor_damping": None, "measure": measure,
             "record_im_g": 0.3, "critical_im_g": critical, "critical_peak_g": critical,
             "limit_im_g": 3.0, "runs": 10}))
