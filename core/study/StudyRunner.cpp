@@ -4,13 +4,11 @@
 #include "core/building/FloorMotions.h"
 #include "core/excitation/FloorFilter.h"
 #include "core/study/CaseCritical.h"
+#include "core/sweep/ParallelFor.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
 #include <stdexcept>
-#include <thread>
 #include <vector>
 
 namespace kinstab {
@@ -81,30 +79,13 @@ StudyRow runStudyCase(const StudySpec& s, const StudyCase& c) {
 
 namespace {
 
-// Runs the cases of indices on `threads` workers, each row into its slot.
+// Runs the cases of indices on core's one thread pool (core/sweep/ParallelFor.h), each row into
+// its slot; the first failing case's exception is rethrown, as a plain loop would meet it.
 void runBlock(const StudySpec& s, const std::vector<std::size_t>& indices, unsigned threads,
-              SweepControl* control, std::vector<std::string>& lines) {
-    std::atomic<std::size_t> next{0};
-    std::exception_ptr failure;
-    std::atomic<bool> failed{false};
-    auto work = [&] {
-        for (std::size_t i = next++; i < indices.size(); i = next++) {
-            if (failed || (control && control->isCancelled())) return;
-            try {
-                lines[i] = studyRowLine(runStudyCase(s, studyCase(s, indices[i]))) + "\n";
-            } catch (...) {
-                if (!failed.exchange(true)) failure = std::current_exception();
-                return;
-            }
-        }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t)
-        pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool)
-        t.join();
-    if (failure) std::rethrow_exception(failure);
+              const SweepControl* control, std::vector<std::string>& lines) {
+    parallelFor(indices.size(), static_cast<int>(threads), control, [&](std::size_t i) {
+        lines[i] = studyRowLine(runStudyCase(s, studyCase(s, indices[i]))) + "\n";
+    });
 }
 
 } // namespace

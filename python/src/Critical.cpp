@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// critical: A_crit(f), the smallest amplitude that collapses the slab, per frequency. Each
-// frequency's search runs with the GIL released; Ctrl+C is honoured between frequencies.
+// critical: A_crit(f), the smallest amplitude that collapses the slab, per frequency: core's
+// runAnalysis with the GIL released, the frequencies on its thread pool; Ctrl+C is honoured
+// within one search step (runInterruptibly, python/src/Models.h).
 
 #include "core/sweep/Grid.h"
 #include "python/src/Arguments.h"
@@ -20,21 +21,17 @@ namespace {
 
 py::array_t<double> critical(const py::object& model, const py::object& frequencies,
                              double maxAmplitude, double scanStep, double tolerance) {
-    const std::vector<double> freqs = axisValues("frequencies", frequencies);
-    if (const std::string e = validateGrid(SweepGrid{{1.0}, freqs}); !e.empty()) badArgument(e);
-    const CriticalSearch search = searchFrom(maxAmplitude, scanStep, tolerance);
-    const ModelPoint m = modelPointOf(model);
-    py::array_t<double> out(static_cast<py::ssize_t>(freqs.size()));
+    AnalysisRequest q = requestFor(model);
+    q.criticalFrequencies = axisValues("frequencies", frequencies);
+    if (const std::string e = validateGrid(SweepGrid{{1.0}, q.criticalFrequencies}); !e.empty())
+        badArgument(e);
+    q.criticalSearch = searchFrom(maxAmplitude, scanStep, tolerance);
+    q.parts.criticalCurve = true;
+    const AnalysisResult r = runInterruptibly(q);
+    py::array_t<double> out(static_cast<py::ssize_t>(r.critical->amplitude.size()));
     double* a = out.mutable_data();
-    for (std::size_t i = 0; i < freqs.size(); ++i) {
-        CriticalResult r;
-        {
-            py::gil_scoped_release unlocked;
-            r = criticalAmplitude(m.point, freqs[i], m.scanFrom, search);
-        }
-        a[i] = r.amplitude.value_or(std::nan(""));
-        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-    }
+    for (std::size_t i = 0; i < r.critical->amplitude.size(); ++i)
+        a[i] = r.critical->amplitude[i].value_or(std::nan(""));
     return out;
 }
 

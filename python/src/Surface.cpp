@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// surface: the (A, f) sweep on all cores with the GIL released. The calling thread stays in
-// charge: it polls for Ctrl+C while the workers run and cancels the sweep through its control,
-// so KeyboardInterrupt arrives within one grid point.
+// surface: the (A, f) sweep of core's runAnalysis on all cores with the GIL released;
+// KeyboardInterrupt arrives within one grid point (runInterruptibly, python/src/Models.h).
 
 #include "core/sweep/Grid.h"
 #include "python/src/Arguments.h"
@@ -10,35 +9,13 @@
 
 #include <pybind11/numpy.h>
 
-#include <chrono>
 #include <cmath>
-#include <future>
 
 namespace py = pybind11;
 
 namespace kinstab::python {
 
 namespace {
-
-// Runs the sweep on a helper thread; returns false when Ctrl+C (or another signal handler
-// raising) interrupted it, with the Python error set.
-bool sweepInterruptibly(const SweepGrid& grid, const PointFunction& point, int threads,
-                        SweepResult& out) {
-    SweepControl control;
-    bool interrupted = false;
-    py::gil_scoped_release unlocked;
-    auto work =
-        std::async(std::launch::async, [&] { return runSweep(grid, point, &control, threads); });
-    while (work.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
-        py::gil_scoped_acquire locked;
-        if (!interrupted && PyErr_CheckSignals() != 0) {
-            interrupted = true;
-            control.cancel();
-        }
-    }
-    out = work.get(); // rethrows a worker's exception
-    return !interrupted;
-}
 
 py::dict surfaceArrays(const SweepResult& r, double tauRef, bool planar) {
     const auto na = static_cast<py::ssize_t>(r.grid.amplitudes.size());
@@ -71,15 +48,16 @@ py::dict surfaceArrays(const SweepResult& r, double tauRef, bool planar) {
 
 py::dict surface(const py::object& model, const py::object& amplitudes,
                  const py::object& frequencies, int threads) {
-    const ModelPoint m = modelPointOf(model);
-    const SweepGrid grid{axisValues("amplitudes", amplitudes),
-                         axisValues("frequencies", frequencies)};
-    if (const std::string e = validateGrid(grid); !e.empty()) badArgument(e);
+    AnalysisRequest q = requestFor(model);
+    q.grid =
+        SweepGrid{axisValues("amplitudes", amplitudes), axisValues("frequencies", frequencies)};
+    if (const std::string e = validateGrid(q.grid); !e.empty()) badArgument(e);
     if (threads < 0 || threads > 1024)
         badArgument("threads=" + std::to_string(threads) + ": must be 0 (all) to 1024");
-    SweepResult r;
-    if (!sweepInterruptibly(grid, m.point, threads, r)) throw py::error_already_set();
-    return surfaceArrays(r, m.tauRef, isPlanar(model));
+    q.threads = threads;
+    q.parts.surface = true;
+    const AnalysisResult r = runInterruptibly(q);
+    return surfaceArrays(*r.surface, r.tauRef, isPlanar(model));
 }
 
 } // namespace
