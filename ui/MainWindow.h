@@ -159,6 +159,7 @@ private:
     void showStaleness();
     void showVerdict();
     Assessment currentAssessment() const;
+    QString assessmentScope() const;
     void startAssessment(); // the whole assessment of the inputs shown, in the background
     void exportSurface();
     void exportChart(QChartView* view, const QString& name);

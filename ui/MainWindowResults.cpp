@@ -74,7 +74,7 @@ void MainWindow::inputsChanged() {
     // updateCodes' message naming the bad input stays.
     if ((m_results.check() || fullAssessment()) &&
         !(m_results.checkStale() && m_codeResults.empty()))
-        m_verdict->setAssessment(currentAssessment());
+        m_verdict->setAssessment(currentAssessment(), assessmentScope());
     showStaleness();
 }
 
@@ -119,6 +119,7 @@ void MainWindow::startAssessment() {
             emit assessmentFinished();
         },
         std::make_shared<AnalysisJobContext>());
+    showVerdict(); // says the whole assessment is being computed
 }
 
 // The assessment of what ran (core composes it): the whole one when it is of the inputs shown,
@@ -136,9 +137,19 @@ Assessment MainWindow::currentAssessment() const {
     return composeAssessment(project(), parts);
 }
 
+// What the verdict table holds when it is not the project's whole assessment: this run's checks,
+// while the rest is computed or after it could not be.
+QString MainWindow::assessmentScope() const {
+    if (fullAssessment()) return {};
+    return m_assessJob->isRunning()
+               ? tr("Assessing the whole project… Until it is done the table shows this run's "
+                    "checks only; the governing check may change.")
+               : tr("This run's checks only, not the whole project's assessment.");
+}
+
 void MainWindow::showVerdict() {
     if (m_results.check() || fullAssessment())
-        m_verdict->setAssessment(currentAssessment());
+        m_verdict->setAssessment(currentAssessment(), assessmentScope());
     else
         m_verdict->setCodeResults(m_codeResults);
 }

@@ -117,7 +117,7 @@ void VerdictPanel::setError(const QString& message) {
     m_note->setText(tr("<span style='color:#c0392b'>%1</span>").arg(message.toHtmlEscaped()));
 }
 
-void VerdictPanel::setAssessment(const Assessment& a) {
+void VerdictPanel::setAssessment(const Assessment& a, const QString& scope) {
     m_table->setRowCount(static_cast<int>(a.checks.size()));
     m_codes.clear();
     m_ids.clear();
@@ -147,10 +147,12 @@ void VerdictPanel::setAssessment(const Assessment& a) {
             }
     }
     const Check* g = a.governingCheck();
-    m_note->setText(g ? tr("Governing: %1, margin %2 — %3.")
-                            .arg(QString::fromStdString(g->id), marginCell(g->governing()),
-                                 QString::fromStdString(g->verdict))
-                      : tr("No check ran."));
+    const QString governing =
+        g ? tr("Governing: %1, margin %2 — %3.")
+                .arg(QString::fromStdString(g->id), marginCell(g->governing()),
+                     QString::fromStdString(g->verdict))
+          : tr("No check ran.");
+    m_note->setText(scope.isEmpty() ? governing : scope + "\n" + governing);
     m_note->setToolTip(QString::fromStdString(a.governingReason));
     m_table->resizeRowsToContents();
 }

@@ -22,7 +22,9 @@ public:
     // Code ratios alone (A_crit not yet computed), or an error naming the bad input.
     void setCodeResults(const std::vector<CodeResult>& results);
     void setError(const QString& message);
-    void setAssessment(const Assessment& a);
+    // scope: empty for the project's whole assessment, else a sentence saying what the table
+    // holds instead (this run's checks while the whole assessment is computed).
+    void setAssessment(const Assessment& a, const QString& scope = {});
     QString verdictText(int row) const; // for tests
     QString codeText(int row) const;    // for tests: the code's short name
     QString checkText(int row) const;   // for tests: the check's id

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/assessment/Check.h"
 
+#include "core/codes/Verdict.h"
+
 #include <iomanip>
 #include <locale>
 #include <sstream>
@@ -38,7 +40,7 @@ std::string marginText(const Comparison& x) {
 }
 
 bool Comparison::holds() const {
-    return demand < capacity.value_or(searchLimit);
+    return slabHolds(demand, capacity, searchLimit);
 }
 
 } // namespace kinstab

@@ -25,17 +25,14 @@ CodeVerdict judgeCode(const CodeResult& r, std::optional<double> aCrit, double s
     v.periodSeconds = r.periodSeconds;
     v.frequencyHz = 1.0 / r.periodSeconds;
     v.aCrit = aCrit;
+    // Chapter V: below A_crit (or the search limit when nothing collapses) the members
+    // overstress first.
+    v.verdict = verdictOf(r.topRatio, aCrit, searchLimit);
     std::ostringstream s;
     if (!aCrit) {
-        // Nothing collapses up to the search limit: A_crit exceeds it.
-        v.verdict = r.topRatio < searchLimit ? Verdict::OverstressGoverns
-                                             : Verdict::KineticInstabilityGoverns;
         s << "no collapse up to A = " << searchLimit << " g at f = " << v.frequencyHz << " Hz";
     } else {
         if (r.topRatio > 0) v.margin = *aCrit / r.topRatio;
-        // Chapter V: below A_crit the members overstress first.
-        v.verdict =
-            r.topRatio < *aCrit ? Verdict::OverstressGoverns : Verdict::KineticInstabilityGoverns;
         s << "F_top/w_top = " << r.topRatio << (r.topRatio < *aCrit ? " < " : " >= ")
           << "A_crit = " << *aCrit << " g at f = " << v.frequencyHz << " Hz";
     }

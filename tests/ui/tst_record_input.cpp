@@ -90,6 +90,9 @@ private slots:
         // The paper's building: the code ratios are far below the record's critical peak.
         QVERIFY(w->verdictPanel()->rowCount() > 0);
         QCOMPARE(w->verdictPanel()->verdictText(0), QString("overstress governs"));
+        // Until the whole assessment is in, the table says it holds this run's checks only.
+        QCOMPARE(w->verdictPanel()->governingText().startsWith("Assessing the whole project"),
+                 w->fullAssessment() == nullptr);
         // Then the project's whole assessment, as kinstab-cli check gives it: the enveloped
         // sine's checks and the record's, with their basis (core/assessment).
         QSignalSpy assessed(w.get(), &MainWindow::assessmentFinished);
@@ -103,6 +106,7 @@ private slots:
         QCOMPARE(w->verdictPanel()->basisText(int(cli.checks.size()) - 1), QString("record"));
         QVERIFY(w->verdictPanel()->governingText().startsWith(
             "Governing: " + QString::fromStdString(cli.governingCheck()->id)));
+        QVERIFY(!w->verdictPanel()->governingText().contains("this run's checks"));
         // The surface tab says why it is empty, and stops saying so for the sine.
         QVERIFY(w->surfaceView()->notice().contains("no γc(A, f) surface"));
         w->excitationPanel()->findChild<QComboBox*>("excitationSource")->setCurrentIndex(0);
