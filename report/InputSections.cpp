@@ -118,7 +118,7 @@ void addInputSections(ReportDocument& doc, const Project& p, const ReportAnalysi
                        ""});
     sl.rows.push_back({"friction coefficient", "μ", num(s.slab.mu, 3), ""});
     // The wall beside the time it sets: t* = √(d/2g), so d = 2g·t*² when only t* was entered.
-    const double dIn = p.wallWidthIn ? *p.wallWidthIn : 2.0 * 9.80665 * s.tstar * s.tstar / 0.0254;
+    const double dIn = p.wallWidthIn ? *p.wallWidthIn : wallWidthFromTstar(s.tstar) / 0.0254;
     sl.rows.push_back({p.wallWidthIn ? "wall width" : "wall width (from t*: d = 2g·t*²)", "d",
                        num(dIn, 1), "in"});
     sl.rows.push_back({"characteristic time √(d/2g)", "t*", num(s.tstar, 4), "s"});

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "report/ReportAnalysis.h"
+#include "core/base/Stopwatch.h"
 #include "report/CodeStyle.h"
 
 #include "core/assessment/RunAssessment.h"
@@ -16,10 +17,6 @@
 namespace kinstab::ui::report {
 
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 std::vector<double> linspace(double lo, double hi, int n) {
     if (n < 2) return {lo};

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "report/SectionCatalog.h"
 
+#include "core/base/TextInput.h"
+
 #include "report/ReportSections.h"
 #include "report/ReportWriter.h"
 
@@ -25,12 +27,6 @@ constexpr SectionEntry kSections[] = {
     {"numerics", "Appendix: numerics", true, addNumericsSection},
     {"references", "References", true, addReferences},
 };
-
-std::string trimmed(const std::string& s) {
-    const auto b = s.find_first_not_of(" \t");
-    if (b == std::string::npos) return {};
-    return s.substr(b, s.find_last_not_of(" \t") - b + 1);
-}
 
 } // namespace
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/analysis/RunAnalysis.h"
 
+#include "core/base/Stopwatch.h"
 #include "core/slab/FiniteResult.h"
 #include "core/sweep/ModelPoint.h"
 
@@ -11,11 +12,7 @@ namespace kinstab {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+using Clock = SteadyClock;
 
 ModelPoint requestModel(const AnalysisRequest& q) {
     ModelPoint m = modelPoint(q.slab, q.planar);

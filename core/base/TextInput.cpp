@@ -38,6 +38,16 @@ FileText readTextFile(const std::string& path, std::uintmax_t maxBytes) {
     return f;
 }
 
+std::string_view trimmedView(std::string_view text) {
+    const auto b = text.find_first_not_of(" \t\r\n");
+    if (b == std::string_view::npos) return {};
+    return text.substr(b, text.find_last_not_of(" \t\r\n") - b + 1);
+}
+
+std::string trimmed(std::string_view text) {
+    return std::string(trimmedView(text));
+}
+
 std::string_view withoutBom(std::string_view text) {
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
     return text;

@@ -20,6 +20,11 @@ struct FileText {
 };
 FileText readTextFile(const std::string& path, std::uintmax_t maxBytes);
 
+// Text without its leading and trailing blanks (space, tab, CR, LF): the one trim of every
+// reader (a CRLF file's lines end in CR).
+std::string_view trimmedView(std::string_view text);
+std::string trimmed(std::string_view text);
+
 // Drops a leading UTF-8 byte-order mark (EF BB BF).
 std::string_view withoutBom(std::string_view text);
 bool isValidUtf8(std::string_view text);

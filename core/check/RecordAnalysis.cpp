@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/check/RecordAnalysis.h"
 
+#include "core/base/Stopwatch.h"
 #include "core/codes/Building.h"
 #include "core/excitation/RecordedMotion.h"
 #include "core/slab/RecordRun.h"
@@ -62,10 +63,6 @@ PointFunction watchedPoint(PointFunction point, SweepControl* control, long esti
                                 static_cast<std::size_t>(estimate));
         return r;
     };
-}
-
-double secondsSince(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 long runEstimate(const CriticalSearch& s, double mu) {

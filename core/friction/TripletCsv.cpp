@@ -18,12 +18,6 @@ namespace {
 const std::array<std::string, 5> kColumns = {"configuration", "cp_psi", "test_no", "delta_in",
                                              "shear_kips"};
 
-std::string trim(const std::string& s) {
-    const auto b = s.find_first_not_of(" \t\r");
-    if (b == std::string::npos) return {};
-    return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
-
 struct Where {
     const std::string& source;
     int line;
@@ -48,7 +42,7 @@ std::array<std::size_t, 5> headerIndices(const std::vector<std::string>& header,
     std::array<std::size_t, 5> idx{};
     for (std::size_t k = 0; k < kColumns.size(); ++k) {
         std::size_t i = 0;
-        while (i < header.size() && trim(header[i]) != kColumns[k])
+        while (i < header.size() && trimmed(header[i]) != kColumns[k])
             ++i;
         if (i == header.size())
             throw TripletCsvError(where.at() + ": header has no column '" + kColumns[k] +
@@ -92,7 +86,7 @@ std::vector<TripletCurve> parseTripletCsv(const std::string& text, const std::st
     bool haveHeader = false;
     for (int lineNo = 1; std::getline(in, line); ++lineNo) {
         const Where where{source, lineNo};
-        if (trim(line).empty() || trim(line)[0] == '#') continue;
+        if (trimmed(line).empty() || trimmed(line)[0] == '#') continue;
         std::vector<std::string> f;
         try {
             f = splitCsvLine(line);
@@ -108,25 +102,25 @@ std::vector<TripletCurve> parseTripletCsv(const std::string& text, const std::st
             if (col[k] >= f.size())
                 throw TripletCsvError(where.at(kColumns[k]) + ": missing (line has " +
                                       std::to_string(f.size()) + " fields)");
-        const std::string config = trim(f[col[0]]), test = trim(f[col[2]]);
+        const std::string config = trimmed(f[col[0]]), test = trimmed(f[col[2]]);
         if (config.empty()) throw TripletCsvError(where.at("configuration") + ": empty");
         if (test.empty()) throw TripletCsvError(where.at("test_no") + ": empty");
-        const double cp = parseNumber(trim(f[col[1]]), where, "cp_psi");
-        const double delta = parseNumber(trim(f[col[3]]), where, "delta_in");
-        const double shear = parseNumber(trim(f[col[4]]), where, "shear_kips");
+        const double cp = parseNumber(trimmed(f[col[1]]), where, "cp_psi");
+        const double delta = parseNumber(trimmed(f[col[3]]), where, "delta_in");
+        const double shear = parseNumber(trimmed(f[col[4]]), where, "shear_kips");
         if (!(cp > 0.0))
             throw TripletCsvError(where.at("cp_psi") + ": must be > 0, got " +
-                                  quotedToken(trim(f[col[1]])));
+                                  quotedToken(trimmed(f[col[1]])));
         if (!(shear > 0.0))
             throw TripletCsvError(where.at("shear_kips") + ": must be > 0, got " +
-                                  quotedToken(trim(f[col[4]])));
+                                  quotedToken(trimmed(f[col[4]])));
         const auto key = std::make_tuple(config, cp, test);
         auto [it, added] = index.try_emplace(key, curves.size());
         if (added) curves.push_back(TripletCurve{config, cp, test, {}, {}});
         TripletCurve& c = curves[it->second];
         const Eigen::Index n = c.delta.size();
         if (n > 0 && !(delta > c.delta(n - 1)))
-            throw TripletCsvError(where.at("delta_in") + ": " + trim(f[col[3]]) +
+            throw TripletCsvError(where.at("delta_in") + ": " + trimmed(f[col[3]]) +
                                   " does not increase on the previous " + "sample of " +
                                   curveLabel(c));
         c.delta.conservativeResize(n + 1);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/records/Accelerogram.h"
 
+#include "core/base/PhysicalConstants.h"
 #include "core/base/TextInput.h"
 
 #include <algorithm>
@@ -10,9 +11,7 @@
 
 namespace kinstab {
 
-namespace {
-constexpr double kStandardGravity = 9.80665; // m/s², CGPM 1901
-} // namespace
+namespace {} // namespace
 
 std::string accelUnitName(AccelUnit u) {
     switch (u) {

@@ -85,12 +85,6 @@ std::string lowerCase(std::string s) {
     return s;
 }
 
-std::string trimmed(const std::string& s) {
-    const std::size_t a = s.find_first_not_of(" \t");
-    if (a == std::string::npos) return {};
-    return s.substr(a, s.find_last_not_of(" \t") - a + 1);
-}
-
 std::vector<double> readFreeValues(const RecordText& text, std::size_t first) {
     std::vector<double> values;
     for (std::size_t i = first; i < text.size(); ++i)

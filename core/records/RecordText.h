@@ -45,7 +45,6 @@ double finiteAt(const RecordText& text, std::size_t i, std::string_view token,
                 const std::string& what);
 std::vector<std::string_view> splitWhitespace(std::string_view line);
 std::string lowerCase(std::string s);
-std::string trimmed(const std::string& s); // without leading and trailing blanks
 
 // Values separated by blanks, from line `first` to the end of the text (blank lines allowed).
 std::vector<double> readFreeValues(const RecordText& text, std::size_t first);

@@ -11,19 +11,13 @@ namespace kinstab {
 
 namespace {
 
-std::string trim(std::string_view s) {
-    const auto b = s.find_first_not_of(" \t\r");
-    if (b == std::string_view::npos) return {};
-    return std::string(s.substr(b, s.find_last_not_of(" \t\r") - b + 1));
-}
-
 // "# imt=PGA" or "# imt = SA(1.0)": the measure; none for any other comment.
 std::optional<std::string> imtComment(const std::string& line) {
-    const std::string body = trim(std::string_view(line).substr(1));
+    const std::string body = trimmed(std::string_view(line).substr(1));
     if (body.rfind("imt", 0) != 0) return std::nullopt;
-    const std::string rest = trim(std::string_view(body).substr(3));
+    const std::string rest = trimmed(std::string_view(body).substr(3));
     if (rest.empty() || rest.front() != '=') return std::nullopt;
-    return trim(std::string_view(rest).substr(1));
+    return trimmed(std::string_view(rest).substr(1));
 }
 
 std::vector<std::string> fields(const std::string& line, const std::string& where) {
@@ -46,7 +40,7 @@ HazardCurve parseCsvHazard(std::string_view text, const std::string& label,
     TextLines cursor(text);
     for (std::string_view raw; cursor.next(raw);) {
         const std::size_t line = cursor.number();
-        const std::string row = trim(raw);
+        const std::string row = trimmed(raw);
         const std::string where = hazardLine(label, line);
         if (row.empty()) continue;
         if (row.front() == '#') {
@@ -59,7 +53,7 @@ HazardCurve parseCsvHazard(std::string_view text, const std::string& label,
             }
         } else if (!header) {
             const std::vector<std::string> f = fields(row, where);
-            if (f.size() != 2 || trim(f[0]) != "im_g" || trim(f[1]) != "annual_rate")
+            if (f.size() != 2 || trimmed(f[0]) != "im_g" || trimmed(f[1]) != "annual_rate")
                 throw HazardError(where + ": the header must be im_g,annual_rate, got " +
                                   quotedToken(row));
             header = true;

@@ -19,12 +19,6 @@ constexpr std::array<std::pair<HazardFormat, const char*>, 4> kFormatNames = {{
     {HazardFormat::Csv, "csv"},
 }};
 
-std::string_view trimmed(std::string_view s) {
-    const auto b = s.find_first_not_of(" \t\r\n");
-    if (b == std::string_view::npos) return {};
-    return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
-}
-
 } // namespace
 
 std::string hazardFormatName(HazardFormat f) {
@@ -40,7 +34,7 @@ std::optional<HazardFormat> hazardFormatFromName(const std::string& name) {
 }
 
 HazardFormat detectHazardFormat(const std::string& text) {
-    const std::string_view body = trimmed(withoutBom(text));
+    const std::string_view body = trimmedView(withoutBom(text));
     if (!body.empty() && body.front() == '{') return HazardFormat::Usgs;
     const std::string_view first = body.substr(0, body.find('\n'));
     if (!first.empty() && first.front() == '#' &&
@@ -51,7 +45,7 @@ HazardFormat detectHazardFormat(const std::string& text) {
 
 HazardCurve parseHazardText(const std::string& text, const std::string& label,
                             const HazardRequest& request) {
-    if (trimmed(withoutBom(text)).empty()) throw HazardError(label + ": the file is empty");
+    if (trimmedView(withoutBom(text)).empty()) throw HazardError(label + ": the file is empty");
     const HazardFormat format =
         request.format == HazardFormat::Auto ? detectHazardFormat(text) : request.format;
     // A USGS or CSV file holds one site: a site asked for would be silently ignored.
@@ -87,7 +81,7 @@ std::string hazardLine(const std::string& label, std::size_t line) {
 }
 
 double hazardNumber(std::string_view field, const std::string& where, const std::string& column) {
-    const std::string_view t = trimmed(field);
+    const std::string_view t = trimmedView(field);
     const std::optional<double> x = parseDouble(t);
     if (!x)
         throw HazardError(where + ", column '" + column + "': " + quotedToken(t) +

@@ -2,6 +2,7 @@
 #include "core/slab/Slab1DCase.h"
 
 #include "core/base/InternalError.h"
+#include "core/base/PhysicalConstants.h"
 #include "core/excitation/EnvelopedSine.h"
 #include "core/slab/ExactSolver.h"
 #include "core/slab/FiniteResult.h"
@@ -18,7 +19,10 @@ std::string solverName(SolverKind s) {
 }
 
 double tstarFromWallWidth(double d) {
-    return std::sqrt(d / (2.0 * 9.80665));
+    return std::sqrt(d / (2.0 * kStandardGravity));
+}
+double wallWidthFromTstar(double tstar) {
+    return 2.0 * kStandardGravity * tstar * tstar;
 }
 double tstarFromWallWidthInches(double inches) {
     return tstarFromWallWidth(inches * 0.0254);

@@ -27,6 +27,7 @@ struct Slab1DCase {
 // t* = sqrt(d / (2 g)) for a wall of width d (docs/theory.md §2).
 double tstarFromWallWidth(double wallWidthMetres);
 double tstarFromWallWidthInches(double inches);
+double wallWidthFromTstar(double tstar); // m: d = 2 g t*², the inverse of tstarFromWallWidth
 
 // The first input out of its range, named by its key (core/slab/SlabInputs.h), or nothing.
 InputProblem checkCase(const Slab1DCase& c);

@@ -44,15 +44,15 @@ InputProblem checkCriticalSearch(const CriticalSearch& s) {
     return {};
 }
 
-CriticalResult criticalAmplitude(const PointFunction& point, double frequencyHz, double mu,
+CriticalResult criticalAmplitude(const PointFunction& point, double frequencyHz, double scanFrom,
                                  const CriticalSearch& search) {
     CriticalResult r;
     auto collapses = [&](double a) {
         ++r.runs;
         return point(a, frequencyHz).outcome == Outcome::Collapsed;
     };
-    // Below mu the slab never slips, so the scan starts there.
-    double lo = std::max(search.from, mu);
+    // Below scanFrom the slab never slips, so the scan starts there.
+    double lo = std::max(search.from, scanFrom);
     if (collapses(lo)) {
         r.amplitude = lo;
         return r;

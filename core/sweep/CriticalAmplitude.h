@@ -52,7 +52,9 @@ inline constexpr NumberInput kSearchFromInput{
 // and no finer than double precision resolves), named by its key; or nothing.
 InputProblem checkCriticalSearch(const CriticalSearch& s);
 
-CriticalResult criticalAmplitude(const PointFunction& point, double frequencyHz, double mu,
+// scanFrom: the amplitude below which nothing slips (μ for the 1-DOF slab, ModelPoint::scanFrom
+// for any model); the scan starts at the larger of it and search.from.
+CriticalResult criticalAmplitude(const PointFunction& point, double frequencyHz, double scanFrom,
                                  const CriticalSearch& search = {});
 
 } // namespace kinstab

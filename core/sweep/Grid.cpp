@@ -19,12 +19,6 @@ bool parseNumber(const std::string& s, double& out) {
     out = *x;
     return true;
 }
-std::string trim(const std::string& s) {
-    const auto b = s.find_first_not_of(" \t");
-    if (b == std::string::npos) return {};
-    const auto e = s.find_last_not_of(" \t");
-    return s.substr(b, e - b + 1);
-}
 } // namespace
 
 std::vector<double> linspaceStep(double start, double stop, double step) {
@@ -39,7 +33,7 @@ std::vector<double> linspaceStep(double start, double stop, double step) {
 
 ParsedList parseList(const std::string& text) {
     ParsedList out;
-    const std::string t = trim(text);
+    const std::string t = trimmed(text);
     if (t.empty()) {
         out.error = "empty list";
         return out;
@@ -49,7 +43,7 @@ ParsedList parseList(const std::string& text) {
         std::stringstream ss(t);
         std::string item;
         while (std::getline(ss, item, ':'))
-            parts.push_back(trim(item));
+            parts.push_back(trimmed(item));
         double a = 0, b = 0, h = 0;
         if (parts.size() != 3 || !parseNumber(parts[0], a) || !parseNumber(parts[1], b) ||
             !parseNumber(parts[2], h)) {
@@ -78,8 +72,8 @@ ParsedList parseList(const std::string& text) {
             out.values.clear();
             return out;
         }
-        if (!parseNumber(trim(item), x)) {
-            out.error = quotedToken(trim(item)) + " is not a number";
+        if (!parseNumber(trimmed(item), x)) {
+            out.error = quotedToken(trimmed(item)) + " is not a number";
             out.values.clear();
             return out;
         }

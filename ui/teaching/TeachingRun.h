@@ -13,12 +13,6 @@
 
 namespace kinstab::ui {
 
-// The wall width whose t* is the given value: d = 2 g t*^2 (docs/theory.md §2, g = 9.80665 m/s^2 as
-// in core's tstarFromWallWidth).
-constexpr double wallWidthFromTstar(double tstar) {
-    return 2.0 * 9.80665 * tstar * tstar;
-}
-
 // The 1-DOF slab of ch. IV, or the planar 2-DOF slab of ch. VI (gravity only vertically).
 enum class TeachingModel { Slab1D, Planar };
 
