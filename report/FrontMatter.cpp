@@ -3,6 +3,7 @@
 // revision table and the signature/seal block; and, beside the verdict, the acceptance
 // criterion and the disclaimer.
 #include "report/ReportSections.h"
+#include "report/WrappedText.h"
 
 #include <QPainter>
 
@@ -16,10 +17,14 @@ QString orBlank(const std::string& s) {
     return s.empty() ? QStringLiteral("—") : qs(s);
 }
 
-void addRevisionTable(ReportDocument& doc, const ProjectInfo& info) {
-    if (info.revisions.empty()) return;
+// Revisions page 1 lists: the current issue and the two before it. Fifty revisions of 200
+// characters each would push the verdict and the signature block off the signed page; the
+// whole history then follows the report (addRevisionHistory).
+constexpr std::size_t kRevisionsOnPage1 = 3;
+
+void addRevisionTable(ReportDocument& doc, const std::vector<Revision>& revisions) {
     Table t{{"revision", "date", "description"}, {}, {1, 1.4, 6}, {}, {}};
-    for (const Revision& r : info.revisions)
+    for (const Revision& r : revisions)
         t.rows.push_back({qs(r.id), qs(r.date), qs(r.description)});
     t.boldRows.push_back(static_cast<int>(t.rows.size()) - 1); // the current issue
     doc.addTable(t);
@@ -42,8 +47,14 @@ void paintSignatureBox(QPainter& p, const QRectF& r, const QString& role, const 
     p.drawText(QRectF(left, r.top() + u * 0.4, width, u * 1.5), Qt::AlignLeft, role);
     f.setBold(false);
     p.setFont(f);
-    p.drawText(QRectF(left, r.top() + u * 1.9, width, u * 3.0), Qt::AlignLeft | Qt::TextWordWrap,
-               name);
+    // Two lines for the name (engineer: name, then the registration), cut with "…" beyond them:
+    // the lines to sign and date below stay clear whatever the project says.
+    const QStringList parts = name.split(QLatin1Char('\n'));
+    const QString shown = parts.size() > 1
+                              ? elidedToLines(parts[0], f, width, 1, p.device()) + "\n" +
+                                    elidedToLines(parts[1], f, width, 1, p.device())
+                              : elidedToLines(name, f, width, 2, p.device());
+    paintWrapped(p, QRectF(left, r.top() + u * 1.9, width, u * 3.0), shown);
     for (const auto& [label, y] : {std::pair{QStringLiteral("signature"), r.top() + u * 8.0},
                                    std::pair{QStringLiteral("date"), r.top() + u * 10.3}}) {
         p.drawLine(QPointF(left, y), QPointF(left + width, y));
@@ -59,7 +70,23 @@ void paintSignatureBox(QPainter& p, const QRectF& r, const QString& role, const 
 } // namespace
 
 void addRevisions(ReportDocument& doc, const Project& p) {
-    addRevisionTable(doc, p.info);
+    const std::vector<Revision>& all = p.info.revisions;
+    if (all.empty()) return;
+    const std::size_t earlier = all.size() - std::min(all.size(), kRevisionsOnPage1);
+    addRevisionTable(doc, {all.begin() + static_cast<std::ptrdiff_t>(earlier), all.end()});
+    if (earlier > 0)
+        doc.addParagraph(QStringLiteral("%1 earlier revision%2 (from %3): see the revision history "
+                                        "at the end of the report.")
+                             .arg(earlier)
+                             .arg(earlier == 1 ? "" : "s")
+                             .arg(qs(all.front().id)),
+                         true);
+}
+
+void addRevisionHistory(ReportDocument& doc, const Project& p) {
+    if (p.info.revisions.size() <= kRevisionsOnPage1) return;
+    doc.addSection(QStringLiteral("Revision history"));
+    addRevisionTable(doc, p.info.revisions);
 }
 
 void addSignatureBlock(ReportDocument& doc, const Project& p) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "report/PageLayout.h"
 
+#include "report/WrappedText.h"
+
 #include <QFontMetricsF>
 
 #include <algorithm>
@@ -51,8 +53,7 @@ PageLayout::PageLayout(const ReportDocument& doc, QPaintDevice* device, const QR
 }
 
 double PageLayout::textHeight(const QString& text, const QFont& f, double width) const {
-    const QFontMetricsF fm(f, device_);
-    return fm.boundingRect(QRectF(0, 0, width, 1e7), Qt::TextWordWrap, text).height();
+    return wrappedHeight(text, f, width, device_);
 }
 
 std::vector<double> PageLayout::columnWidths(const Table& t) const {
@@ -102,11 +103,11 @@ double PageLayout::blockHeight(const Block& b) const {
     case Block::Kind::Figure:
         return figureWidth(b.figure) * b.figure.aspect + captionHeight(b.figure) + 2 * gap;
     case Block::Kind::Title: {
-        double h = style_.px(6) + textHeight(b.title.title, style_.font(kTitlePt, true),
-                                             body_.width() - style_.px(8));
+        // The widths paintTitle paints in: the body less an inset of 4 mm each side.
+        const double inside = body_.width() - style_.px(8);
+        double h = style_.px(6) + textHeight(b.title.title, style_.font(kTitlePt, true), inside);
         if (!b.title.subtitle.isEmpty())
-            h += textHeight(b.title.subtitle, style_.font(kBodyPt + 1), body_.width()) +
-                 style_.px(2);
+            h += textHeight(b.title.subtitle, style_.font(kBodyPt + 1), inside) + style_.px(2);
         const QFontMetricsF fm(style_.font(kBodyPt), device_);
         h += b.title.fields.size() * fm.lineSpacing() + style_.px(8);
         return h;
@@ -221,7 +222,9 @@ void PageLayout::paintFrame(QPainter& p, int page) const {
     const double bottom = body_.bottom() + style_.px(6);
     p.setFont(style_.font(kSmallPt));
     const QFontMetricsF fm(p.font(), device_);
-    p.drawText(QPointF(body_.left(), top), doc_.title);
+    // The title holds the project's name (up to 200 characters): cut to the line it has.
+    p.drawText(QPointF(body_.left(), top),
+               fm.elidedText(doc_.title, Qt::ElideRight, body_.width()));
     p.drawLine(QPointF(body_.left(), top + style_.px(1.5)),
                QPointF(body_.right(), top + style_.px(1.5)));
     p.drawLine(QPointF(body_.left(), bottom - fm.ascent() - style_.px(1.5)),
@@ -240,14 +243,13 @@ void PageLayout::paintPiece(QPainter& p, const Piece& piece) const {
     case Block::Kind::Heading: {
         const double top = piece.y + style_.px(b.heading.level <= 1 ? 5 : 3);
         p.setFont(style_.font(headingPt(b.heading.level), true));
-        p.drawText(QRectF(body_.left(), top, body_.width(), piece.height), Qt::TextWordWrap,
-                   b.heading.text);
+        paintWrapped(p, QRectF(body_.left(), top, body_.width(), piece.height), b.heading.text);
         break;
     }
     case Block::Kind::Paragraph:
         p.setFont(style_.font(b.paragraph.small ? kSmallPt : kBodyPt));
-        p.drawText(QRectF(body_.left(), piece.y, body_.width(), piece.height), Qt::TextWordWrap,
-                   b.paragraph.text);
+        paintWrapped(p, QRectF(body_.left(), piece.y, body_.width(), piece.height),
+                     b.paragraph.text);
         break;
     case Block::Kind::Table:
         paintTable(p, b.table, piece);
@@ -274,8 +276,8 @@ double PageLayout::paintRow(QPainter& p, const Table& t, const QStringList& cell
     double x = body_.left();
     for (int c = 0; c < cells.size() && c < static_cast<int>(w.size()); ++c) {
         const bool right = c < static_cast<int>(t.align.size()) && t.align[c] == Align::Right;
-        const int flags = Qt::TextWordWrap | (right ? Qt::AlignRight : Qt::AlignLeft);
-        p.drawText(QRectF(x + pad, y + pad, w[c] - 2 * pad, h - 2 * pad), flags, cells[c]);
+        paintWrapped(p, QRectF(x + pad, y + pad, w[c] - 2 * pad, h - 2 * pad), cells[c],
+                     right ? Qt::AlignRight : Qt::AlignLeft);
         x += w[c];
     }
     p.setPen(QPen(QColor(150, 150, 150), style_.pt(header ? 0.8 : 0.3)));
@@ -296,18 +298,29 @@ void PageLayout::paintTable(QPainter& p, const Table& t, const Piece& piece) con
     }
 }
 
+// One line per title-block field: a value a little too wide for it (a SHA-256 of wide hex
+// digits) is set smaller, down to 80 %, to stand whole; a longer one (a 200-character client) is
+// then cut with "…", as the block has one line for it.
+QFont PageLayout::fittedFont(const QString& value, double room) const {
+    QFont f = style_.font(kBodyPt);
+    const double width = QFontMetricsF(f, device_).horizontalAdvance(value);
+    if (width > room)
+        f.setPixelSize(std::max(1, static_cast<int>(f.pixelSize() * std::max(0.8, room / width))));
+    return f;
+}
+
 void PageLayout::paintTitle(QPainter& p, const TitleBlock& t, double y) const {
     const double inset = style_.px(4);
     const double width = body_.width() - 2 * inset;
     double cy = y + inset;
     p.setFont(style_.font(kTitlePt, true));
     const double th = textHeight(t.title, p.font(), width);
-    p.drawText(QRectF(body_.left() + inset, cy, width, th), Qt::TextWordWrap, t.title);
+    paintWrapped(p, QRectF(body_.left() + inset, cy, width, th), t.title);
     cy += th + style_.px(1);
     if (!t.subtitle.isEmpty()) {
         p.setFont(style_.font(kBodyPt + 1));
         const double sh = textHeight(t.subtitle, p.font(), width);
-        p.drawText(QRectF(body_.left() + inset, cy, width, sh), Qt::TextWordWrap, t.subtitle);
+        paintWrapped(p, QRectF(body_.left() + inset, cy, width, sh), t.subtitle);
         cy += sh + style_.px(2);
     }
     const QFont bold = style_.font(kBodyPt, true);
@@ -320,10 +333,10 @@ void PageLayout::paintTitle(QPainter& p, const TitleBlock& t, double y) const {
         cy += fm.lineSpacing();
         p.setFont(bold);
         p.drawText(QPointF(body_.left() + inset, cy), k);
-        p.setFont(plain);
         const double room = width - keyWidth - style_.px(4);
+        p.setFont(fittedFont(v, room));
         p.drawText(QPointF(body_.left() + inset + keyWidth + style_.px(4), cy),
-                   fm.elidedText(v, Qt::ElideRight, room)); // one line per field
+                   QFontMetricsF(p.font(), device_).elidedText(v, Qt::ElideRight, room));
     }
     const double bottom =
         y + blockHeight(Block{Block::Kind::Title, {}, {}, {}, {}, t}) - style_.px(3);
@@ -343,8 +356,7 @@ void PageLayout::paintFigure(QPainter& p, const Figure& f, double y) const {
     if (f.caption.isEmpty()) return;
     p.setFont(style_.font(kCaptionPt, false, true));
     const double top = area.bottom() + style_.px(2);
-    p.drawText(QRectF(body_.left(), top, body_.width(), captionHeight(f)), Qt::TextWordWrap,
-               f.caption);
+    paintWrapped(p, QRectF(body_.left(), top, body_.width(), captionHeight(f)), f.caption);
 }
 
 } // namespace kinstab::ui::report

@@ -65,6 +65,7 @@ private:
     double paintRow(QPainter& p, const Table& t, const QStringList& cells, double y, bool header,
                     bool bold) const;
     void paintTitle(QPainter& p, const TitleBlock& t, double y) const;
+    QFont fittedFont(const QString& value, double room) const; // a title-block value's
     void paintFigure(QPainter& p, const Figure& f, double y) const;
     void paintFrame(QPainter& p, int page) const;
 

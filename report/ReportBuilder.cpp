@@ -76,6 +76,7 @@ ReportDocument buildReportDocument(const ReportSource& s, const ReportAnalysis& 
     doc.markContents();
     for (const SectionEntry& e : sectionCatalog())
         if (s.sections.count(e.key)) e.add(doc, p, a);
+    addRevisionHistory(doc, p); // what page 1 leaves out of the revision table
     return doc;
 }
 

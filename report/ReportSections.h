@@ -28,9 +28,11 @@ inline QString qs(const std::string& s) {
 QString gammaLabel(const Slab1DCase& c); // "γc = τmax/τc"
 QString scaleLabel(TauScale s);          // "τ_max (peak of the envelope)", not the key tau_max
 
-// Page 1 (FrontMatter.cpp): the revision table under the title block, and after the verdict the
-// signature/seal block (prepared by, checked by, engineer of record).
+// Page 1 (FrontMatter.cpp): the revision table under the title block (the last three revisions),
+// and after the verdict the signature/seal block (prepared by, checked by, engineer of record).
 void addRevisions(ReportDocument& doc, const Project& p);
+// The whole revision history, a section at the end, when page 1 lists only the last revisions.
+void addRevisionHistory(ReportDocument& doc, const Project& p);
 void addSignatureBlock(ReportDocument& doc, const Project& p);
 // The disclaimer and what the margin means (FrontMatter.cpp); on page 1 with the verdict.
 void addAcceptanceCriterion(ReportDocument& doc, const Project& p, const ReportAnalysis& a);

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/BuildingPanel.h"
 
+#include "core/base/InputLimits.h"
 #include "core/codes/Atc306.h"
 #include "core/codes/Eurocode8.h"
 #include "core/codes/Ubc1976.h"
 #include "core/codes/Ubc1997.h"
 #include "ui/NumberField.h"
+#include "ui/TextField.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -43,12 +45,16 @@ const std::pair<Occupancy, const char*> occupancies[] = {
 } // namespace
 
 BuildingPanel::BuildingPanel(QWidget* parent)
-    : InputPanel(parent), m_name(new QLineEdit(this)),
+    : InputPanel(parent), m_name(new TextField(limits::kMaxNameChars, this)),
       m_estimate(new QCheckBox(tr("Estimate by each code's formula"), this)),
       m_estimates(new QLabel(this)), m_system(new QComboBox(this)), m_systemNote(new QLabel(this)),
       m_occupancy(new QComboBox(this)) {
     m_name->setToolTip(tr("A name for the building, printed on exports and reports."));
-    form()->addRow(tr("&Name:"), m_name);
+    m_name->setObjectName(QStringLiteral("buildingName"));
+    m_name->lineEdit()->setToolTip(m_name->toolTip());
+    auto* nameLabel = new QLabel(tr("&Name:"), this);
+    nameLabel->setBuddy(m_name->lineEdit());
+    form()->addRow(nameLabel, m_name);
     m_stories =
         addField("stories", tr("&Stories:"), QString(),
                  tr("Number of stories above the base, N. The top floor's force ratio is what "
@@ -99,14 +105,14 @@ BuildingPanel::BuildingPanel(QWidget* parent)
     });
     for (QComboBox* c : {m_system, m_occupancy})
         connect(c, &QComboBox::currentIndexChanged, this, &InputPanel::changed);
-    connect(m_name, &QLineEdit::textChanged, this, &InputPanel::changed);
+    connect(m_name, &TextField::edited, this, &InputPanel::changed);
     connect(this, &InputPanel::changed, this, &BuildingPanel::updateEstimate);
     setBuilding(Building{});
 }
 
 Building BuildingPanel::building() const {
     Building b = m_kept;
-    b.name = m_name->text().toStdString();
+    b.name = m_name->text();
     b.unit = m_unit;
     b.stories = static_cast<int>(m_stories->value().value_or(b.stories));
     b.height = m_height->value().value_or(b.height);
@@ -121,9 +127,14 @@ Building BuildingPanel::building() const {
     return b;
 }
 
+QStringList BuildingPanel::extraProblems() const {
+    if (m_name->isValid()) return {};
+    return {tr("Name: %1").arg(m_name->error())};
+}
+
 void BuildingPanel::setBuilding(const Building& b) {
     m_kept = b;
-    m_name->setText(QString::fromStdString(b.name));
+    m_name->setText(b.name);
     m_unit = b.unit;
     // Stored in the file's unit, shown in the application's (View → Units).
     for (NumberField* f : {m_height, m_dimension})

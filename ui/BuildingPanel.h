@@ -10,11 +10,11 @@
 class QCheckBox;
 class QComboBox;
 class QLabel;
-class QLineEdit;
 
 namespace kinstab::ui {
 
 class NumberField;
+class TextField;
 
 class BuildingPanel : public InputPanel {
     Q_OBJECT
@@ -25,12 +25,15 @@ public:
     QString systemNote() const; // what a change of system drives (shown under it)
     void setBuilding(const Building& b);
 
+protected:
+    QStringList extraProblems() const override; // the name's (ui/TextField.h)
+
 private:
     void updateEstimate();
 
     Building m_kept;                      // story weights and heights from the file
     LengthUnit m_unit = LengthUnit::Feet; // the file's; lengths are shown in View → Units
-    QLineEdit* m_name;
+    TextField* m_name;
     NumberField* m_stories;
     NumberField* m_height;
     NumberField* m_dimension;

@@ -2,6 +2,7 @@
 #include "ui/ProjectInfoPanel.h"
 
 #include "core/base/InputLimits.h"
+#include "ui/TextField.h"
 
 #include <QDate>
 #include <QDialog>
@@ -10,7 +11,6 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QTableWidget>
@@ -52,11 +52,10 @@ ProjectInfoPanel::ProjectInfoPanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     auto* form = new QFormLayout;
     for (const FieldSpec& f : kFields) {
-        auto* edit = new QLineEdit;
-        edit->setMaxLength(static_cast<int>(limits::kMaxNameChars));
-        edit->setObjectName(QString::fromLatin1(f.objectName));
-        form->addRow(tr(f.label), edit);
-        fields_.push_back({edit, f.member});
+        auto* field = new TextField(limits::kMaxNameChars);
+        field->lineEdit()->setObjectName(QString::fromLatin1(f.objectName));
+        form->addRow(tr(f.label), field);
+        fields_.push_back({field, f.member});
     }
     layout->addLayout(form);
     layout->addWidget(new QLabel(tr("Revisions (oldest first; the last is this issue; "
@@ -66,6 +65,13 @@ ProjectInfoPanel::ProjectInfoPanel(QWidget* parent) : QWidget(parent) {
     revisions_->setHorizontalHeaderLabels({tr("Rev."), tr("Date"), tr("Description")});
     revisions_->horizontalHeader()->setStretchLastSection(true);
     layout->addWidget(revisions_);
+    revisionsError_ = new QLabel;
+    revisionsError_->setObjectName(QStringLiteral("revisionsError"));
+    revisionsError_->setStyleSheet("color: #c0392b;");
+    revisionsError_->setWordWrap(true);
+    revisionsError_->hide();
+    layout->addWidget(revisionsError_);
+    connect(revisions_, &QTableWidget::itemChanged, this, &ProjectInfoPanel::checkRevisions);
     auto* buttons = new QHBoxLayout;
     auto* add = new QPushButton(tr("Add revision"));
     auto* remove = new QPushButton(tr("Remove revision"));
@@ -73,6 +79,7 @@ ProjectInfoPanel::ProjectInfoPanel(QWidget* parent) : QWidget(parent) {
     connect(remove, &QPushButton::clicked, this, [this] {
         const int row = revisions_->currentRow();
         revisions_->removeRow(row >= 0 ? row : revisions_->rowCount() - 1);
+        checkRevisions();
     });
     buttons->addWidget(add);
     buttons->addWidget(remove);
@@ -90,8 +97,8 @@ void ProjectInfoPanel::addRevision() {
 }
 
 void ProjectInfoPanel::setInfo(const ProjectInfo& info) {
-    for (const auto& [edit, member] : fields_)
-        edit->setText(QString::fromStdString(info.*member));
+    for (const auto& [field, member] : fields_)
+        field->setText(info.*member);
     revisions_->setRowCount(0);
     for (const Revision& r : info.revisions) {
         const int row = revisions_->rowCount();
@@ -100,12 +107,25 @@ void ProjectInfoPanel::setInfo(const ProjectInfo& info) {
         revisions_->setItem(row, 1, new QTableWidgetItem(QString::fromStdString(r.date)));
         revisions_->setItem(row, 2, new QTableWidgetItem(QString::fromStdString(r.description)));
     }
+    checkRevisions();
+}
+
+QString ProjectInfoPanel::problem() const {
+    return QString::fromStdString(validateProjectInfo(info()));
+}
+
+void ProjectInfoPanel::checkRevisions() {
+    ProjectInfo only;
+    only.revisions = info().revisions;
+    const QString e = QString::fromStdString(validateProjectInfo(only));
+    revisionsError_->setText(e);
+    revisionsError_->setVisible(!e.isEmpty());
 }
 
 ProjectInfo ProjectInfoPanel::info() const {
     ProjectInfo info;
-    for (const auto& [edit, member] : fields_)
-        info.*member = edit->text().trimmed().toStdString();
+    for (const auto& [field, member] : fields_)
+        info.*member = field->text();
     for (int row = 0; row < revisions_->rowCount(); ++row)
         info.revisions.push_back({cell(revisions_, row, 0).toStdString(),
                                   cell(revisions_, row, 1).toStdString(),
@@ -124,9 +144,9 @@ bool ProjectInfoPanel::editInDialog(QWidget* parent, ProjectInfo& info) {
     layout->addWidget(buttons);
     QObject::connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
     QObject::connect(buttons, &QDialogButtonBox::accepted, &dialog, [&dialog, panel] {
-        const std::string e = validateProjectInfo(panel->info());
-        if (e.empty()) return dialog.accept();
-        QMessageBox::warning(&dialog, tr("Project information"), QString::fromStdString(e));
+        const QString e = panel->problem();
+        if (e.isEmpty()) return dialog.accept();
+        QMessageBox::warning(&dialog, tr("Project information"), e);
     });
     dialog.resize(560, 520);
     if (dialog.exec() != QDialog::Accepted) return false;

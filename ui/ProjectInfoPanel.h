@@ -8,10 +8,12 @@
 
 #include <QWidget>
 
-class QLineEdit;
+class QLabel;
 class QTableWidget;
 
 namespace kinstab::ui {
+
+class TextField;
 
 class ProjectInfoPanel : public QWidget {
     Q_OBJECT
@@ -25,11 +27,16 @@ public:
     // is wrong without closing; returns true and updates info when accepted.
     static bool editInDialog(QWidget* parent, ProjectInfo& info);
 
+    // What is wrong with the entries, "" when nothing (validateProjectInfo's message).
+    QString problem() const;
+
 private:
     void addRevision();
+    void checkRevisions(); // the revisions' problem, shown under their table
 
-    std::vector<std::pair<QLineEdit*, std::string ProjectInfo::*>> fields_;
+    std::vector<std::pair<TextField*, std::string ProjectInfo::*>> fields_;
     QTableWidget* revisions_ = nullptr;
+    QLabel* revisionsError_ = nullptr;
 };
 
 } // namespace kinstab::ui

@@ -5,13 +5,14 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "core/base/TextInput.h"
+#include "core/study/CpuAffinity.h"
 #include "core/study/FragilityText.h"
 #include "core/study/StudyResults.h"
 
 namespace kinstab::cli {
 
 int runFragility(const ArgList& argv) {
-    const Args args(argv, {"results", "format", "bootstrap", "seed", "level", "o"});
+    const Args args(argv, {"results", "format", "bootstrap", "seed", "level", "threads", "o"});
     const std::string results = args.text("results");
     if (results.empty()) throw UsageError("missing required flag --results");
     const std::string format = args.choice("format", {"json", "csv"}, "json");
@@ -27,6 +28,13 @@ int runFragility(const ArgList& argv) {
     b.level = args.number("level", 0.90);
     if (!(b.level > 0.0 && b.level < 1.0))
         throw UsageError("--level " + args.text("level") + ": must be > 0 and < 1");
+    b.threads = static_cast<int>(allowedCpuCount());
+    if (args.has("threads")) {
+        const std::string t = args.text("threads");
+        const auto n = parseCount(t, 1024);
+        if (!n || *n < 1) throw UsageError("--threads " + quotedToken(t) + ": must be 1 to 1024");
+        b.threads = static_cast<int>(*n);
+    }
     if (const auto o = args.optionalText("o")) checkOutputPath("o", *o);
     // One parameter set's rows in memory at a time (the file is in case order).
     std::vector<Fragility> sets;
@@ -35,6 +43,8 @@ int runFragility(const ArgList& argv) {
             results, [&](std::vector<StudyRow>&& rows) { sets.push_back(fragilityOf(rows, b)); });
     } catch (const StudyRowError& e) {
         throw UsageError("--results " + std::string(e.what()));
+    } catch (const StudyError& e) { // the bootstrap's bound on its work (core/study/Fragility.h)
+        throw UsageError("--bootstrap " + resamples + ": " + e.what());
     }
     std::string text;
     if (format == "csv") {

@@ -211,12 +211,15 @@ const char* kMerge =
     "  -o FILE                      the merged results, as one unsharded run writes them\n";
 
 const char* kFragility =
-    "usage: kinstab-cli fragility --results FILE.jsonl [--format json|csv] [-o FILE]\n"
+    "usage: kinstab-cli fragility --results FILE.jsonl [--format json|csv] [--threads N]\n"
+    "                             [-o FILE]\n"
     "  --results FILE               study results (JSONL), merged or one shard\n"
     "  --format json|csv            fit, bounds, points and curve; or one line per set [json]\n"
     "  --bootstrap N                bootstrap resamples over records for the bounds [1000]\n"
     "  --seed S                     bootstrap seed [1]\n"
     "  --level P                    two-sided confidence level of the bounds [0.9]\n"
+    "  --threads N                  threads of the bootstrap (same bounds whatever N)\n"
+    "                               [the CPUs of this process's affinity]\n"
     "  -o FILE                      output file [stdout]\n";
 
 const char* kRisk =

@@ -11,6 +11,7 @@
 #include <QIcon>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 namespace {
@@ -61,6 +62,24 @@ bool textOnly(int argc, char** argv) {
     return false;
 }
 
+// Exit status when no display can be opened (docs/man/kinstab.1.in): like kinstab-cli's 3, a
+// failure of the surroundings that a retry may cure, not of the input or of the program.
+constexpr int kNoDisplay = 3;
+QtMessageHandler qtHandler = nullptr;
+
+// Qt ends with qFatal, so SIGABRT, when its platform plugin cannot open the display (an X server
+// that is not, or no longer, reachable: under Xvfb a server that another start was tearing down,
+// issue 31). While QApplication starts, a fatal message is that: say so and exit kNoDisplay.
+void whileStarting(QtMsgType type, const QMessageLogContext& context, const QString& message) {
+    if (qtHandler) qtHandler(type, context, message);
+    if (type != QtFatalMsg) return;
+    std::fprintf(stderr,
+                 "kinstab: no display could be opened (DISPLAY=%s): the window system is not "
+                 "reachable. Without one, use kinstab-cli, or xvfb-run for screenshots.\n",
+                 qgetenv("DISPLAY").isEmpty() ? "unset" : qgetenv("DISPLAY").constData());
+    std::_Exit(kNoDisplay);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -72,7 +91,9 @@ int main(int argc, char** argv) {
         return 0;
     }
     qputenv("QSG_RHI_BACKEND", "opengl"); // required by Qt Data Visualization on Qt 6
+    qtHandler = qInstallMessageHandler(whileStarting);
     QApplication app(argc, argv);
+    qInstallMessageHandler(qtHandler); // started: Qt's own handling from here on
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/kinstab.svg")));
     QGuiApplication::setDesktopFileName(QStringLiteral("io.github.kinstab"));
     QCommandLineParser parser;

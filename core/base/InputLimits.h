@@ -45,15 +45,19 @@ inline constexpr std::size_t kMaxResultsRowBytes = 64u * 1024u;
 // leaves room for any future layout and keeps every recursive walk of the document shallow.
 inline constexpr int kMaxJsonDepth = 64;
 
-// Characters of a name or title shown in a report, a chart or a message (project and
-// building name, record name, station and component). Longer text is refused in a project
-// and cut with "..." when it comes from a record header.
+// Characters (Unicode code points, not bytes: core/base/DisplayText.h) of a name or title shown
+// in a report, a chart or a message (project and building name, record name, station and
+// component). Longer text is refused in a project and cut with "..." when it comes from a
+// record header.
 inline constexpr std::size_t kMaxNameChars = 200;
-// Characters of a project's free-text description.
+// Characters (code points) of a project's free-text description.
 inline constexpr std::size_t kMaxDescriptionChars = 20'000;
 // Revisions listed in a project's title block (ProjectInfo): a report's revision table fits one
 // page; a project reissued more often keeps its older history elsewhere.
 inline constexpr std::size_t kMaxRevisions = 50;
+// Characters of a revision's mark ("0", "A", "P1", "C02"): it stands in the narrow first column
+// of the revision table on page 1, which a longer text would stretch down the page.
+inline constexpr std::size_t kMaxRevisionIdChars = 12;
 // Characters of an offending token quoted in an error message.
 inline constexpr std::size_t kMaxQuotedChars = 40;
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/building/FloorAnalysis.h"
 
+#include "core/base/TextInput.h"
 #include "core/check/DesignCheck.h"
 #include "core/codes/Asce7FloorDemand.h"
 #include "core/codes/Ec8FloorDemand.h"
@@ -15,6 +16,11 @@ namespace kinstab {
 
 std::string validateFloorAnalysis(const FloorAnalysisInput& in) {
     if (std::string e = validateBuilding(in.building); !e.empty()) return e;
+    // The floor motions filter the record at the building's period: name the building's input.
+    if (in.building.period && *in.building.period < kMinFloorPeriodS)
+        return "building.period_s = " + formatDouble(*in.building.period) +
+               " s: the floor motions need a period of at least " + formatDouble(kMinFloorPeriodS) +
+               " s";
     if (std::string e = validateFloorSettings(in.settings, in.building.stories); !e.empty())
         return e;
     if (std::string e = validateCase(in.slab); !e.empty()) return "slab: " + e;

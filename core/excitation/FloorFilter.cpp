@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/excitation/FloorFilter.h"
 
+#include "core/base/TextInput.h"
+
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -42,13 +44,15 @@ Recurrence nigamJennings(double w, double zeta, double dt) {
 } // namespace
 
 std::string validateFloorFilter(const FloorFilterParams& p) {
-    if (!(p.period > 0.0) || !std::isfinite(p.period) || p.period > 1000.0)
-        return "floor period " + std::to_string(p.period) + " s: must be > 0 and at most 1000 s";
+    if (!(p.period >= kMinFloorPeriodS && p.period <= kMaxFloorPeriodS))
+        return "floor period " + formatDouble(p.period) + " s: must be at least " +
+               formatDouble(kMinFloorPeriodS) + " s and at most " + formatDouble(kMaxFloorPeriodS) +
+               " s";
     if (!(p.damping >= 0.0) || !(p.damping < 1.0))
-        return "damping " + std::to_string(p.damping) +
+        return "damping " + formatDouble(p.damping) +
                ": must be at least 0 and below 1 (fraction of critical)";
     if (p.tail && (!(*p.tail >= 0.0) || !std::isfinite(*p.tail) || *p.tail > 1e5))
-        return "tail " + std::to_string(*p.tail) + " s: must be between 0 and 1e5 s";
+        return "tail " + formatDouble(*p.tail) + " s: must be between 0 and 1e5 s";
     return {};
 }
 

@@ -15,6 +15,15 @@
 
 namespace kinstab {
 
+// Range of the oscillator's period, s, for every reader of a floor filter (CLI, project and study
+// files, Python). The stiffest buildings have periods near 0.05 s (UBC's T = 0.05 h_n/sqrt(D)
+// gives 0.05 s for one storey 10 ft tall and 100 ft long); at 0.01 s (100 Hz) the oscillator is
+// rigid at every frequency an accelerograph records (records are filtered below about 50 Hz), so
+// a shorter period is a unit slip (ms for s), and far shorter ones (1e-300 s) overflow the
+// recurrence into NaN samples. 1000 s is far beyond any building.
+inline constexpr double kMinFloorPeriodS = 0.01;
+inline constexpr double kMaxFloorPeriodS = 1000.0;
+
 struct FloorFilterParams {
     double period = 1.0;   // s, the building's fundamental period
     double damping = 0.02; // fraction of critical; the paper's 2 %
@@ -23,8 +32,10 @@ struct FloorFilterParams {
     std::optional<double> tail;
 };
 
-std::string validateFloorFilter(const FloorFilterParams& p); // empty when fine
-double floorTailSeconds(const FloorFilterParams& p);         // the tail actually appended
+// Empty when fine; else "floor period 1e-300 s: must be at least 0.01 s and at most 1000 s" (the
+// message starts "floor period", "damping" or "tail", which callers use to name their input).
+std::string validateFloorFilter(const FloorFilterParams& p);
+double floorTailSeconds(const FloorFilterParams& p); // the tail actually appended
 
 struct OscillatorState {
     double x = 0; // relative displacement, g s^2

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/Project.h"
 
+#include "core/base/DisplayText.h"
 #include "core/base/InputLimits.h"
 #include "core/base/TextInput.h"
 #include "core/io/AtomicFile.h"
@@ -38,16 +39,17 @@ Project paperExampleProject() {
 }
 
 std::string validateProject(const Project& p) {
-    if (p.name.size() > limits::kMaxNameChars)
-        return "name: " + std::to_string(p.name.size()) + " characters, more than the limit of " +
-               std::to_string(limits::kMaxNameChars) + " (a name is shown in titles)";
-    if (p.building.name.size() > limits::kMaxNameChars)
-        return "building.name: " + std::to_string(p.building.name.size()) +
-               " characters, more than the limit of " + std::to_string(limits::kMaxNameChars);
-    if (p.description.size() > limits::kMaxDescriptionChars)
-        return "description: " + std::to_string(p.description.size()) +
-               " characters, more than the limit of " +
-               std::to_string(limits::kMaxDescriptionChars);
+    // The texts printed on the report (core/base/DisplayText.h); the description alone may
+    // have several lines.
+    if (std::string e = checkDisplayText("name", p.name, limits::kMaxNameChars); !e.empty())
+        return e;
+    if (std::string e = checkDisplayText("building.name", p.building.name, limits::kMaxNameChars);
+        !e.empty())
+        return e;
+    if (std::string e = checkDisplayText("description", p.description, limits::kMaxDescriptionChars,
+                                         TextLines::Multiple);
+        !e.empty())
+        return e;
     if (std::string e = validateProjectInfo(p.info); !e.empty()) return e;
     std::string e = validateBuilding(p.building);
     if (e.empty()) e = validateCodes(p.codes);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/ProjectInfo.h"
 
+#include "core/base/DisplayText.h"
 #include "core/base/InputLimits.h"
 #include "core/base/TextInput.h"
 #include "core/io/JsonReader.h"
@@ -26,10 +27,10 @@ constexpr TextField kFields[] = {
     {"checked_by", &ProjectInfo::checkedBy},
 };
 
-std::string tooLong(const std::string& field, const std::string& text) {
-    if (text.size() <= limits::kMaxNameChars) return {};
-    return field + ": " + std::to_string(text.size()) + " characters, more than the limit of " +
-           std::to_string(limits::kMaxNameChars);
+// A one-line text of the title block (core/base/DisplayText.h): no controls, no bidirectional
+// formatting, at most limits::kMaxNameChars characters.
+std::string badText(const std::string& field, const std::string& text) {
+    return checkDisplayText(field, text, limits::kMaxNameChars, TextLines::Single);
 }
 
 bool isDigit(char c) {
@@ -48,10 +49,11 @@ bool isIsoDate(const std::string& d) {
 
 std::string validateRevision(const Revision& r, const std::string& field) {
     if (r.id.empty()) return field + ".id: empty (a revision needs a mark such as 0 or A)";
-    std::string e = tooLong(field + ".id", r.id);
+    std::string e =
+        checkDisplayText(field + ".id", r.id, limits::kMaxRevisionIdChars, TextLines::Single);
     if (e.empty() && !isIsoDate(r.date))
         e = field + ".date = " + quotedToken(r.date) + ": must be a date YYYY-MM-DD";
-    if (e.empty()) e = tooLong(field + ".description", r.description);
+    if (e.empty()) e = badText(field + ".description", r.description);
     return e;
 }
 
@@ -65,7 +67,7 @@ bool ProjectInfo::empty() const {
 
 std::string validateProjectInfo(const ProjectInfo& info) {
     for (const auto& [key, member] : kFields)
-        if (std::string e = tooLong(std::string("info.") + key, info.*member); !e.empty()) return e;
+        if (std::string e = badText(std::string("info.") + key, info.*member); !e.empty()) return e;
     if (info.revisions.size() > limits::kMaxRevisions)
         return "info.revisions: " + std::to_string(info.revisions.size()) +
                " revisions, more than the limit of " + std::to_string(limits::kMaxRevisions);

@@ -3,8 +3,10 @@
 // Who signs the report and for whom: the engineer, registration, firm, client, project number,
 // site address, prepared/checked by and the revision history. Stored in the project file under
 // "info"; printed on the report's title block, signature/seal block and revision table. Every
-// field is optional free text of at most limits::kMaxNameChars characters; a revision date is
-// ISO 8601 (YYYY-MM-DD) so that it reads the same in every locale.
+// field is optional one-line text of at most limits::kMaxNameChars characters (a revision mark
+// limits::kMaxRevisionIdChars), without control or bidirectional formatting characters
+// (core/base/DisplayText.h); a revision date is ISO 8601 (YYYY-MM-DD) so that it reads the same
+// in every locale.
 
 #include <nlohmann/json.hpp>
 
@@ -33,7 +35,8 @@ struct ProjectInfo {
     bool empty() const;
 };
 
-// Empty when fine; else "info.checked_by: 240 characters, more than the limit of 200" or
+// Empty when fine; else "info.checked_by: 240 characters, more than the limit of 200",
+// "info.registration: contains U+202E (a bidirectional override) at character 8" or
 // "info.revisions[1].date = '24.11.2026': must be a date YYYY-MM-DD".
 std::string validateProjectInfo(const ProjectInfo& info);
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/StudySpecJson.h"
 
+#include "core/base/DisplayText.h"
 #include "core/base/InputLimits.h"
 #include "core/base/TextInput.h"
 #include "core/building/ShearBuilding.h"
@@ -329,8 +330,11 @@ StudySpec studyFromJsonText(const std::string& text, const std::string& baseDir)
                      "this kinstab reads version " + std::to_string(kStudyVersion));
         StudySpec s;
         s.name = top.text("name", "");
-        if (s.name.size() > limits::kMaxNameChars)
-            top.fail("name", "more than " + std::to_string(limits::kMaxNameChars) + " characters");
+        // Printed in the report's study section: the project's rules for text it prints.
+        if (const std::string e =
+                displayTextProblem(s.name, limits::kMaxNameChars, TextLines::Single);
+            !e.empty())
+            top.fail("name", e);
         readRecords(top, baseDir, s);
         s.intensity = readIntensity(top);
         readBuilding(top, s);

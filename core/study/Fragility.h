@@ -7,6 +7,7 @@
 
 #include "core/study/LognormalFit.h"
 #include "core/study/StudyRow.h"
+#include "core/study/StudySpec.h"
 
 #include <cstddef>
 #include <optional>
@@ -63,9 +64,25 @@ struct BootstrapSettings {
     std::size_t resamples = 1000;
     unsigned long long seed = 1;
     double level = 0.90; // two-sided confidence level of the bounds
+    // Threads of core's pool (core/sweep/ParallelFor.h) the resamples' fits run on; <= 0: all
+    // hardware threads. The bounds are the same bits whatever the count.
+    int threads = 0;
 };
 
-// rows: one parameter set's rows (any order). Deterministic for a given seed.
+// Records drawn by one set's bootstrap (resamples x records), each a term of a likelihood fit.
+// Measured on the 2-core CI machine (scripts/fragility-rows.py): about 0.15 us of one core per
+// draw of a collapsing record, 4 us per draw of a censored one (its term is an erfc), so one set
+// takes at most about 1.5 s of one core, 20 s with half its records censored, 40 s with nearly
+// all. Ten million is the default 1000 resamples of the largest suite a study holds
+// (kMaxStudyRecords records); a set of more rows is no study's.
+inline constexpr std::size_t kMaxBootstrapDraws = 1000 * kMaxStudyRecords;
+// Empty when the bootstrap of a set of `records` records is within kMaxBootstrapDraws; else
+// "1000 resamples x 20000 records of the set = 2e+07 draws, more than the limit of 1e+07: at
+// most 500 resamples (or 0)".
+std::string bootstrapWorkError(std::size_t records, const BootstrapSettings& b);
+
+// rows: one parameter set's rows (any order). Deterministic for a given seed, whatever
+// b.threads. Throws StudyError (bootstrapWorkError) when the bootstrap exceeds its bound.
 Fragility fragilityOf(const std::vector<StudyRow>& rows, const BootstrapSettings& b);
 // The bootstrap's resampled fits in resample order, none where a resample cannot be fitted: the
 // resamples whose percentiles are fragilityOf's bounds (the same rows, seed and order), for what

@@ -11,8 +11,20 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace kinstab::python {
+
+// A number argument that is not a bool. pybind11 converts True to 1.0 for a double, but a flag
+// passed where a number belongs is a slip (simulate(True, 1) ran at 1 g): True, False and NumPy's
+// bools raise TypeError. Any other int, float or object with __float__ converts as for a double.
+struct Real {
+    double value = 0;
+    operator double() const { return value; }
+};
+inline std::optional<double> real(std::optional<Real> r) {
+    return r ? std::optional<double>(r->value) : std::nullopt;
+}
 
 std::string shown(double value); // as Python's repr shows the float
 
@@ -35,3 +47,24 @@ std::string choice(const std::string& keyword, const std::string& value,
                    const std::string& allowedBarSeparated);
 
 } // namespace kinstab::python
+
+namespace pybind11::detail {
+
+template <> struct type_caster<kinstab::python::Real> {
+    PYBIND11_TYPE_CASTER(kinstab::python::Real, const_name("float"));
+
+    bool load(handle src, bool convert) {
+        if (!src || PyBool_Check(src.ptr())) return false;
+        const std::string_view type = Py_TYPE(src.ptr())->tp_name;
+        if (type == "numpy.bool_" || type == "numpy.bool") return false;
+        make_caster<double> number;
+        if (!number.load(src, convert)) return false;
+        value.value = cast_op<double>(number);
+        return true;
+    }
+    static handle cast(kinstab::python::Real r, return_value_policy, handle) {
+        return PyFloat_FromDouble(r.value);
+    }
+};
+
+} // namespace pybind11::detail

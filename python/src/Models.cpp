@@ -4,11 +4,9 @@
 #include "core/analysis/RunAnalysis.h"
 #include "core/sweep/Grid.h"
 #include "python/src/Arguments.h"
+#include "python/src/Interruptible.h"
 
 #include <pybind11/stl.h>
-
-#include <chrono>
-#include <future>
 
 namespace py = pybind11;
 
@@ -32,21 +30,10 @@ AnalysisRequest requestFor(const py::handle& model) {
 
 AnalysisResult runInterruptibly(const AnalysisRequest& request) {
     AnalysisControl control;
-    bool interrupted = false;
     AnalysisResult out;
-    {
-        py::gil_scoped_release unlocked;
-        auto work = std::async(std::launch::async, [&] { return runAnalysis(request, control); });
-        while (work.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
-            py::gil_scoped_acquire locked;
-            if (!interrupted && PyErr_CheckSignals() != 0) {
-                interrupted = true;
-                control.cancel();
-            }
-        }
-        out = work.get(); // rethrows a worker's exception
-    }
-    if (interrupted) throw py::error_already_set();
+    // AnalysisControl::cancel is its sweep control's cancel: the one the poll sets.
+    if (!runWatchingSignals(control.sweepControl(), [&] { out = runAnalysis(request, control); }))
+        throw py::error_already_set();
     return out;
 }
 

@@ -65,9 +65,9 @@ FloorFilterParams floorParams(double period, double damping, std::optional<doubl
     return p;
 }
 
-Accelerogram floorFilter(const Accelerogram& ground, double period, double damping,
-                         std::optional<double> tail) {
-    const FloorFilterParams p = floorParams(period, damping, tail);
+Accelerogram floorFilter(const Accelerogram& ground, Real period, Real damping,
+                         std::optional<Real> tail) {
+    const FloorFilterParams p = floorParams(period, damping, real(tail));
     py::gil_scoped_release unlocked;
     return floorMotion(ground, p);
 }
@@ -174,13 +174,24 @@ py::dict recordRun(const Slab1DCase& c, const std::string& path, std::optional<d
 
 void bindRecords(py::module_& m) {
     bindRecord(m);
-    m.def("_simulate_record", &recordRun, py::arg("case"), py::arg("path"),
-          py::arg("amplitude") = py::none(), py::arg("scale_factor") = py::none(),
-          py::arg("floor_period") = py::none(), py::arg("damping") = 0.02,
-          py::arg("critical") = false, py::arg("max_amplitude") = kMaxAmplitudeInput.fallback,
-          py::arg("scan_step") = kScanStepInput.fallback,
-          py::arg("tolerance") = kToleranceInput.fallback, py::arg("events") = false,
-          py::arg("history_step") = py::none());
+    // Every number a Real: True or False where a number belongs raises TypeError.
+    m.def(
+        "_simulate_record",
+        [](const Slab1DCase& c, const std::string& path, std::optional<Real> amplitude,
+           std::optional<Real> scaleFactor, std::optional<Real> floorPeriod, Real damping,
+           bool critical, Real maxAmplitude, Real scanStep, Real tolerance, bool events,
+           std::optional<Real> historyStep) {
+            return recordRun(c, path, real(amplitude), real(scaleFactor), real(floorPeriod),
+                             damping, critical, maxAmplitude, scanStep, tolerance, events,
+                             real(historyStep));
+        },
+        py::arg("case"), py::arg("path"), py::arg("amplitude") = py::none(),
+        py::arg("scale_factor") = py::none(), py::arg("floor_period") = py::none(),
+        py::arg("damping") = 0.02, py::arg("critical") = false,
+        py::arg("max_amplitude") = kMaxAmplitudeInput.fallback,
+        py::arg("scan_step") = kScanStepInput.fallback,
+        py::arg("tolerance") = kToleranceInput.fallback, py::arg("events") = false,
+        py::arg("history_step") = py::none());
 }
 
 } // namespace kinstab::python

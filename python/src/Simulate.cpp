@@ -32,8 +32,8 @@ void checkAmplitudeFrequency(double amplitude, double frequency) {
     keyword(kFrequencyInput, frequency);
 }
 
-SlabRun simulate(const Slab1DCase& c, double amplitude, double frequency, bool events, bool history,
-                 double historyStep) {
+SlabRun simulate(const Slab1DCase& c, Real amplitude, Real frequency, bool events, bool history,
+                 Real historyStep) {
     checkAmplitudeFrequency(amplitude, frequency);
     finite("history_step", historyStep);
     if (!(historyStep > 0.0)) badArgument("history_step", historyStep, "must be > 0");
@@ -57,7 +57,7 @@ SlabRun simulate(const Slab1DCase& c, double amplitude, double frequency, bool e
     return run;
 }
 
-PlanarRun simulatePlanar(const PlanarCase& c, double amplitude, double frequency, bool events,
+PlanarRun simulatePlanar(const PlanarCase& c, Real amplitude, Real frequency, bool events,
                          bool path) {
     checkAmplitudeFrequency(amplitude, frequency);
     PlanarRun run;
@@ -75,8 +75,7 @@ PlanarRun simulatePlanar(const PlanarCase& c, double amplitude, double frequency
 
 // The core's own time for runSlab1D, call by call in a C++ loop (for
 // examples/python/bench_overhead.py: the overhead of a Python call is the difference).
-std::vector<double> coreSeconds(const Slab1DCase& c, double amplitude, double frequency,
-                                int repeats) {
+std::vector<double> coreSeconds(const Slab1DCase& c, Real amplitude, Real frequency, int repeats) {
     checkAmplitudeFrequency(amplitude, frequency);
     if (repeats < 1 || repeats > 1000000)
         badArgument("repeats=" + std::to_string(repeats) + ": must be 1 to 1000000");

@@ -6,6 +6,7 @@
 #include "core/study/StudyRecords.h"
 #include "core/study/StudyRunner.h"
 #include "python/src/Bindings.h"
+#include "python/src/Interruptible.h"
 
 #include <pybind11/stl.h>
 
@@ -35,14 +36,23 @@ std::vector<std::string> rows(const std::string& path, const std::vector<std::si
             throw py::value_error("cases: " + std::to_string(i) + " is not below the " +
                                   std::to_string(n) + " cases of the study");
     std::vector<std::string> out;
-    py::gil_scoped_release release; // the runs need no Python
+    out.reserve(cases.size());
+    // A Dask worker's task: Ctrl+C (KeyboardInterrupt) stops it between two cases, not at the
+    // end of the batch.
+    SweepControl control;
+    bool finished = false;
     try {
-        loadStudyRecords(s); // each record read once, for every case of the batch
-        for (std::size_t i : cases)
-            out.push_back(studyRowLine(runStudyCase(s, studyCase(s, i))));
+        finished = runWatchingSignals(control, [&] {
+            loadStudyRecords(s); // each record read once, for every case of the batch
+            for (std::size_t i : cases) {
+                if (control.isCancelled()) return;
+                out.push_back(studyRowLine(runStudyCase(s, studyCase(s, i))));
+            }
+        });
     } catch (const StudyError& e) {
-        throw py::value_error(path + ": " + e.what()); // a C++ exception: no GIL needed here
+        throw py::value_error(path + ": " + e.what());
     }
+    if (!finished) throw py::error_already_set();
     return out;
 }
 

@@ -43,6 +43,7 @@ private slots:
     void badInput_data();
     void badInput();
     void reportHasTheSection();
+    void tinyBuildingPeriodIsNamed();
 };
 
 void TestCliFloors::paperBuildingUnderPacoima() {
@@ -151,6 +152,27 @@ void TestCliFloors::reportHasTheSection() {
     QVERIFY(text.contains("0.704")); // ASCE design PFA at the roof (tst_floors_demand)
     QCOMPARE(cli({"report", "--project", kPaper, "-o", plain, "--figure-grid", "5"}).code, 0);
     QVERIFY(!QString(run("pdftotext", {"-layout", plain, "-"}).out).contains("Floor motions"));
+}
+
+// Issue 31: building.period_s = 1e-300 said "floor period -nan s"; the floor motions filter the
+// record at the building's period, whose least is the floor filter's (0.01 s).
+void TestCliFloors::tinyBuildingPeriodIsNamed() {
+    QFile f(kFloors);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QByteArray text = f.readAll();
+    const qsizetype at = text.indexOf("\"period_s\": ") + 12; // the building's, the first
+    text.replace(at, text.indexOf(',', at) - at, " 1e-300");
+    text.replace("../records/", (kRoot + "/resources/records/").toUtf8());
+    QTemporaryDir dir;
+    QFile out(dir.filePath("p.json"));
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write(text);
+    out.close();
+    const Run r = cli({"floors", "--project", dir.filePath("p.json"), "--record", kPacoima});
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains("building.period_s = 1e-300 s: the floor motions need a period of at "
+                            "least 0.01 s"),
+             r.err.constData());
 }
 
 QTEST_APPLESS_MAIN(TestCliFloors)

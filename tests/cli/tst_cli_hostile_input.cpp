@@ -145,6 +145,31 @@ private slots:
                    .replace("../records/RSN77_SFERN_PUL164.AT2",
                             (kRoot + "/resources/records/RSN77_SFERN_PUL164.AT2\\u0000.x").toUtf8())
             << "excitation.record.file: the path contains a NUL character";
+        // Issue 31: text that prints otherwise than it reads on the signed page 1.
+        QTest::newRow("bidi override in the registration")
+            << contents(kExample).replace("S 00000 (example)", "S 12345\\u202e67890")
+            << "info.registration: contains U+202E (a bidirectional override) at character 8";
+        QTest::newRow("ESC in the project name")
+            << contents(kExample).replace("Furgerson 1980,", "Furgerson\\u001b[31m 1980,")
+            << "name: contains U+001B (a control character) at character 10";
+        QTest::newRow("NUL in the engineer")
+            << contents(kExample).replace("A. N. Example, P.E.", "A. N.\\u0000 Example")
+            << "info.engineer: contains U+0000 (NUL) at character 6";
+        QByteArray lines = contents(kExample);
+        lines.replace("Furgerson 1980, 16-story building", QByteArray("line\\n").repeated(30));
+        QTest::newRow("30-line project name") // 150 characters: within the length limit
+            << lines << "name: contains U+000A (a line break in one-line text) at character 5";
+        QTest::newRow("isolate in a revision")
+            << contents(kExample).replace("Issued for permit", "Issued \\u2067for\\u2069 permit")
+            << "info.revisions[1].description: contains U+2067 (a bidirectional isolate) at "
+               "character 8";
+        QTest::newRow("BEL in the building name")
+            << contents(kExample).replace("16-story office building", "16-story\\u0007")
+            << "building.name: contains U+0007 (a control character) at character 9";
+        QTest::newRow("201 characters of two bytes") // counted in characters, not bytes
+            << contents(kExample).replace("Furgerson 1980, 16-story building",
+                                          QByteArray("\xc3\xa9").repeated(201))
+            << "name: 201 characters, more than the limit of 200";
     }
     void badProjects() {
         QFETCH(QByteArray, text);

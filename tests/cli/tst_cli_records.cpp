@@ -111,6 +111,14 @@ void TestCliRecords::badInput_data() {
                                   << "--record-unit furlong";
     QTest::newRow("negative floor period")
         << QStringList{"record", "--file", up, "--floor-period", "-1"} << "--floor-period -1";
+    // Issue 31: was exit 0 with NaN floor samples and a floor peak of 0.0.
+    QTest::newRow("floor period 1e-300")
+        << QStringList{"record", "--file", up, "--floor-period", "1e-300"}
+        << "--floor-period 1e-300: floor period 1e-300 s: must be at least 0.01 s and at most "
+           "1000 s";
+    QTest::newRow("floor period below 0.01 s")
+        << QStringList{"simulate", "--record", up, "--floor-period", "0.009"}
+        << "--floor-period 0.009";
     QTest::newRow("damping 1") << QStringList{"record", "--file",    up, "--floor-period",
                                               "1",      "--damping", "1"}
                                << "--damping 1";

@@ -276,6 +276,38 @@ private slots:
         QVERIFY(err({"fragility", "--results", d.filePath("split.jsonl")})
                     .contains("split.jsonl:3: a row of parameter set 0 after rows of another set"));
     }
+    // Issue 31: one set's bootstrap is bounded (core/study/Fragility.h): 20,000 records, more
+    // than a study's suite holds, take at most 500 resamples; the bounds do not depend on
+    // --threads.
+    void fragilityBootstrapIsBoundedAndThreaded() {
+        QJsonObject row = QJsonDocument::fromJson(whole_.split('\n')[0]).object();
+        QByteArray big;
+        for (int i = 0; i < 20000; ++i) {
+            row["case"] = i;
+            row["cases"] = 20000;
+            row["record"] = QString("r%1.AT2").arg(i);
+            row["critical_im_g"] = 0.5 + 1e-5 * i;
+            big += QJsonDocument(row).toJson(QJsonDocument::Compact) + "\n";
+        }
+        QTemporaryDir d;
+        writeBytes(d.filePath("big.jsonl"), big);
+        const Run refused = cli({"fragility", "--results", d.filePath("big.jsonl")});
+        QCOMPARE(refused.code, 2);
+        QVERIFY2(refused.err.contains("--bootstrap 1000: 1000 resamples x 20000 records of the set "
+                                      "= 2e+07 draws, more than the limit of 1e+07: at most 500 "
+                                      "resamples (or 0)"),
+                 refused.err.constData());
+        QVERIFY(cli({"fragility", "--results", d.filePath("big.jsonl"), "--bootstrap", "0"}).code ==
+                0);
+        const QString all = dir_.filePath("all.jsonl");
+        const Run one =
+            cli({"fragility", "--results", all, "--bootstrap", "300", "--threads", "1"});
+        const Run three =
+            cli({"fragility", "--results", all, "--bootstrap", "300", "--threads", "3"});
+        QVERIFY2(one.code == 0 && three.code == 0, one.err + three.err);
+        QCOMPARE(three.out, one.out);
+        QCOMPARE(cli({"fragility", "--results", all, "--threads", "0"}).code, 2);
+    }
     // --bootstrap 0: no bounds anywhere, not bounds of 0 beside the fit (issue 30).
     void fragilityWithoutBootstrapHasNoBounds() {
         const Run j =

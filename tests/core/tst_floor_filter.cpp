@@ -54,6 +54,7 @@ private slots:
     void envelopeFitRecoversSyntheticEnvelope_data();
     void envelopeFitRecoversSyntheticEnvelope();
     void floorMotionTailAndValidation();
+    void shortestPeriodIsTheGround();
 };
 
 void TestFloorFilter::harmonicSteadyState_data() {
@@ -227,6 +228,27 @@ void TestFloorFilter::floorMotionTailAndValidation() {
     QVERIFY(!validateFloorFilter({1.0, std::nan(""), {}}).empty());
     QVERIFY(!validateFloorFilter({1.0, 0.02, -3.0}).empty());
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, floorMotion(ground, {0.0, 0.02, {}}));
+}
+
+// Issue 31: 1e-300 s overflowed the recurrence into NaN samples (a floor peak of 0.0, exit 0).
+// The period's lower bound, 0.01 s, is a rigid oscillator for any record: its floor motion is
+// the ground's (the record's content lies far below 100 Hz), finite, and its peak within 2 % of
+// the ground's.
+void TestFloorFilter::shortestPeriodIsTheGround() {
+    QCOMPARE(validateFloorFilter({1e-300, 0.02, {}}),
+             std::string("floor period 1e-300 s: must be at least 0.01 s and at most 1000 s"));
+    QVERIFY(!validateFloorFilter({0.0099, 0.02, {}}).empty());
+    QVERIFY(!validateFloorFilter({1000.5, 0.02, {}}).empty());
+    QVERIFY(validateFloorFilter({kMinFloorPeriodS, 0.02, {}}).empty());
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                             floorMotion(Accelerogram{}, {1e-300, 0.02, {}}));
+    const Accelerogram ground = readRecord(kRecords + "RSN77_SFERN_PUL164.AT2");
+    const Accelerogram floor = floorMotion(ground, {kMinFloorPeriodS, 0.02, std::nullopt});
+    for (double a : floor.samples)
+        QVERIFY(std::isfinite(a));
+    const double g = std::abs(ground.peak().value), f = std::abs(floor.peak().value);
+    QVERIFY2(std::abs(f - g) <= 0.02 * g,
+             qPrintable(QString("floor %1 g, ground %2 g").arg(f).arg(g)));
 }
 
 QTEST_APPLESS_MAIN(TestFloorFilter)

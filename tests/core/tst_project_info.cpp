@@ -88,6 +88,10 @@ private slots:
         QTest::newRow("month 13") << "revisions"
                                   << R"([{"id": "0", "date": "2026-13-01", "description": ""}])"
                                   << "info.revisions[0].date";
+        QTest::newRow("mark of 13 characters")
+            << "revisions"
+            << R"([{"id": "Rev. 2026-001", "date": "2026-11-01"}])"
+            << "info.revisions[0].id: 13 characters, more than the limit of 12";
         QTest::newRow("no mark") << "revisions"
                                  << R"([{"id": "", "date": "2026-11-01", "description": ""}])"
                                  << "info.revisions[0].id: empty";
@@ -108,6 +112,33 @@ private slots:
         QVERIFY2(e.find("info.revisions: 51 revisions, more than the limit of 50") !=
                      std::string::npos,
                  e.c_str());
+    }
+    // Issue 31: the texts the report prints refuse controls and bidirectional formatting (the
+    // cases of tests/core/tst_display_text.cpp); the description alone keeps its line breaks;
+    // lengths are characters, so 200 two-byte characters are a 200-character name.
+    void printedTextIsWhatItReads() {
+        nlohmann::json info = projectInfoToJson(sample());
+        info["registration"] = "S 12345\u202E67890";
+        QCOMPARE(loadError(info),
+                 std::string("info.registration: contains U+202E (a bidirectional override) "
+                             "at character 8"));
+        Project p = paperExampleProject();
+        std::string e200;
+        for (int i = 0; i < 200; ++i)
+            e200 += "\u00E9";
+        p.name = e200;
+        p.building.name = e200;
+        p.info.firm = e200;
+        p.description = "First line.\nSecond line.\r\nThird.";
+        QCOMPARE(validateProject(p), std::string());
+        QCOMPARE(parseProject(projectToJson(p).dump()).description, p.description);
+        p.building.name = "Tower\nA";
+        QCOMPARE(validateProject(p),
+                 std::string("building.name: contains U+000A (a line break in one-line text) at "
+                             "character 6"));
+        p.building.name = "Tower A";
+        p.description += "\u202E";
+        QVERIFY(validateProject(p).find("description: contains U+202E") == 0);
     }
     void shippedExamplesCarryExampleMetadata() {
         for (const char* f : {"paper-16-story.json", "paper-16-story-record.json",

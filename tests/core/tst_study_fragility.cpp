@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 
 using namespace kinstab;
 
@@ -187,6 +188,70 @@ private slots:
         QVERIFY(one.meanG && !one.stdG && !one.stdLn);
         const RecordStatistics none = fragilityOf({row(0, 0, 2)}, {0, 1, 0.9}).statistics;
         QVERIFY(!none.meanG && none.censored == 1);
+    }
+    // Issue 31: the bootstrap runs on core's thread pool with the same bits whatever the thread
+    // count, and they are those of the plain loop docs/studies.md describes: resample k takes
+    // the k-th block of `records` outputs of one mt19937_64 stream, index = output mod records.
+    // 1001 resamples do not divide into the pool's chunks evenly.
+    void bootstrapIsTheSameOnAnyNumberOfThreads() {
+        std::vector<StudyRow> rows;
+        for (std::size_t i = 0; i < 40; ++i)
+            rows.push_back(row(i, i % 7 == 6 ? 0.0 : 0.3 + 0.037 * double((i * 17) % 40), 1.8));
+        const BootstrapSettings one{1001, 11, 0.9, 1};
+        const Fragility f = fragilityOf(rows, one);
+        QVERIFY(f.fit && f.medianLower && f.betaUpper);
+        for (int threads : {2, 3, 8, 0}) {
+            BootstrapSettings b = one;
+            b.threads = threads;
+            const Fragility g = fragilityOf(rows, b);
+            QCOMPARE(g.fitted, f.fitted);
+            QCOMPARE(*g.medianLower, *f.medianLower); // bit for bit
+            QCOMPARE(*g.medianUpper, *f.medianUpper);
+            QCOMPARE(*g.betaLower, *f.betaLower);
+            QCOMPARE(*g.betaUpper, *f.betaUpper);
+            for (std::size_t c = 0; c < f.curve.size(); ++c)
+                QVERIFY(*g.curve[c].lower == *f.curve[c].lower &&
+                        *g.curve[c].upper == *f.curve[c].upper);
+        }
+        // The plain loop: every resample's median, sorted, at the 5 % and 95 % positions.
+        std::mt19937_64 rng(11);
+        std::vector<double> medians;
+        for (int k = 0; k < 1001; ++k) {
+            CensoredSample s;
+            for (std::size_t i = 0; i < rows.size(); ++i) {
+                const StudyRow& r = rows[rng() % rows.size()];
+                (r.criticalIntensity ? s.collapsed : s.censored)
+                    .push_back(r.criticalIntensity.value_or(r.limitIntensity));
+            }
+            const auto fit = fitLognormal(s);
+            medians.push_back(fit ? fit->median : INFINITY);
+        }
+        std::sort(medians.begin(), medians.end());
+        // Linear between order statistics, at (1 - level) / 2 and its complement.
+        auto quantile = [&](double q) {
+            const double pos = q * double(medians.size() - 1);
+            const auto i = std::size_t(pos);
+            const double w = pos - double(i), a = medians[i], b = medians[i + 1];
+            return w == 0 || a == b ? a : std::isinf(b) ? b : a + w * (b - a);
+        };
+        const double lo = 0.5 * (1 - 0.9);
+        QCOMPARE(*f.medianLower, std::min(quantile(lo), f.fit->median));
+        QCOMPARE(*f.medianUpper, std::max(quantile(1 - lo), f.fit->median));
+    }
+    // The work of one set's bootstrap is bounded (kMaxBootstrapDraws = 1000 resamples of the
+    // largest suite a study holds); beyond it the set is refused, saying what would fit.
+    void bootstrapWorkIsBounded() {
+        QCOMPARE(kMaxBootstrapDraws, std::size_t(10'000'000));
+        QCOMPARE(bootstrapWorkError(kMaxStudyRecords, {}), std::string());
+        QCOMPARE(bootstrapWorkError(20'000, {}),
+                 std::string("1000 resamples x 20000 records of the set = 2e+07 draws, more "
+                             "than the limit of 1e+07: at most 500 resamples (or 0)"));
+        QCOMPARE(bootstrapWorkError(20'000, {500, 1, 0.9, 0}), std::string());
+        std::vector<StudyRow> rows;
+        for (std::size_t i = 0; i < 20'000; ++i)
+            rows.push_back(row(i, 0.5 + 1e-5 * double(i), 2.0));
+        QVERIFY_THROWS_EXCEPTION(StudyError, fragilityOf(rows, {}));
+        QVERIFY(fragilityOf(rows, {0, 1, 0.9, 0}).fit); // no bootstrap: the fit alone
     }
     void noBootstrapNoBounds() {
         std::vector<StudyRow> rows;
