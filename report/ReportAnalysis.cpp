@@ -127,6 +127,7 @@ Assessment assessReport(const Project& project, const ReportAnalysis& a) {
         parts.recordName = a.record->ground.name;
     }
     if (a.floors) parts.floors = floorCheckParts(*a.floors, project.building.stories);
+    parts.risk = a.risk;
     return composeAssessment(project, parts);
 }
 
@@ -152,6 +153,8 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
     const ModelPoint model = modelPoint(c, planarCase);
     if (planarCase) a.planarSolver = planarCase->solver;
     a.scanFrom = model.scanFrom;
+    // Before the sweeps: a bad results or hazard file is an InputError naming it, at once.
+    a.risk = projectRiskParts(project);
     a.codes = runCodes(project.building, project.codes);
     AnalysisRequest request;
     request.slab = c;

@@ -53,6 +53,9 @@ struct ReportAnalysis {
     // The project's record, when it has one: single run, critical peak, its verdicts.
     std::optional<RecordAnalysis> record;
     std::optional<FloorAnalysis> floors; // when the project has "floors" and a record
+    // The study's sets against its hazard curve, when the study has results and a hazard curve
+    // (core/assessment/RiskCheck.h): the risk section and the risk checks.
+    std::optional<RiskCheckParts> risk;
     // Every check the project implies, composed once from the analyses above (assessReport):
     // page 1 and every section show it and compose no verdict of their own.
     Assessment assessment;

@@ -69,6 +69,8 @@ void addFloorsSection(ReportDocument& doc, const Project& p, const ReportAnalysi
 // The study section (StudySection.cpp): only when the project has a study. Throws ReportError
 // naming study.spec or study.results when they cannot be read, or a study too large to run here.
 void addStudySection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
+// The risk section (RiskSection.cpp): only when the project's study names a hazard curve.
+void addRiskSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 // The reference-list entries of the study's records (none without a study).
 QStringList studyCitations(const Project& p);
 

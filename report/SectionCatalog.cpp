@@ -24,6 +24,7 @@ constexpr SectionEntry kSections[] = {
     {"surface", "γc surface, A_crit(f) and slice", true, addSurfaceSections},
     {"check", "Design check: which failure governs", true, addCheckSection},
     {"study", "Study: collapse fragility over a record suite", true, addStudySection},
+    {"risk", "Risk: annual rate of the slab falling", true, addRiskSection},
     {"numerics", "Appendix: numerics", true, addNumericsSection},
     {"references", "References", true, addReferences},
 };

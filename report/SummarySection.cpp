@@ -7,6 +7,7 @@
 #include "report/CodeStyle.h"
 #include "report/ReportSections.h"
 
+#include <algorithm>
 #include <set>
 
 namespace kinstab::ui::report {
@@ -27,6 +28,8 @@ QString basisPhrase(CheckBasis b) {
         return QStringLiteral("the project's record");
     case CheckBasis::Floors:
         return QStringLiteral("the building's floor motions");
+    case CheckBasis::Risk:
+        return QStringLiteral("the study's fragilities against the site's hazard curve");
     }
     return {};
 }
@@ -49,6 +52,11 @@ const Check* firstOf(const Assessment& a, CheckBasis b) {
 QString basisText(const Assessment& a, CheckBasis b) {
     const Check& c = *firstOf(a, b);
     const Comparison& x = c.comparisons.front();
+    if (b == CheckBasis::Risk) // each set has its own fragility: the model is per check
+        return QStringLiteral("%1.setK: the collapse fragility of the study's parameter set K "
+                              "(section \"Risk\"); excitation: %2; %3: %4 against %5.")
+            .arg(qs(checkBasisName(b)), qs(c.excitation), qs(x.intensity), qs(x.demandName),
+                 qs(x.capacityName));
     QString s = QStringLiteral("%1.*: %2; excitation: %3; %4: %5 against %6.")
                     .arg(qs(checkBasisName(b)), qs(c.model), qs(c.excitation), qs(x.intensity),
                          qs(x.demandName), qs(x.capacityName));
@@ -97,17 +105,26 @@ QString asRunText(const Project& p, const RecordAnalysis& r) {
 
 void addChecksTable(ReportDocument& doc, const Assessment& a) {
     // One line a check, so that page 1 holds them all: what each compares is said below the table.
-    Table t{{"check", "demand (g)", "capacity (g)", "margin", "verdict"},
+    // The unit goes in the header while every check is in g; risk checks (annual rates) put it in
+    // each cell instead.
+    const bool allG = std::all_of(a.checks.begin(), a.checks.end(),
+                                  [](const Check& c) { return c.governing().unit == "g"; });
+    Table t{{"check", allG ? "demand (g)" : "demand", allG ? "capacity (g)" : "capacity", "margin",
+             "verdict"},
             {},
-            {1.9, 0.8, 0.9, 0.7, 3.0},
+            {1.9, allG ? 0.8 : 1.1, allG ? 0.9 : 1.1, 0.7, 3.0},
             {Align::Left, Align::Right, Align::Right, Align::Right, Align::Left},
             {}};
     for (std::size_t k = 0; k < a.checks.size(); ++k) {
         const Check& c = a.checks[k];
         const Comparison& x = c.governing();
+        const auto cell = [&x, allG](double v) {
+            return qs(quantityText(x, v)) + (allG ? QString() : " " + qs(x.unit));
+        };
         if (a.governing == k) t.boldRows.push_back(static_cast<int>(t.rows.size()));
-        t.rows.push_back({qs(c.id), num(x.demand, 3), num(x.capacity, 3, QStringLiteral("none")),
-                          marginCell(x), qs(c.verdict)});
+        t.rows.push_back({qs(c.id), cell(x.demand),
+                          x.capacity ? cell(*x.capacity) : QStringLiteral("none"), marginCell(x),
+                          qs(c.verdict)});
     }
     doc.addTable(t);
 }

@@ -114,8 +114,11 @@ MainWindow::MainWindow(QWidget* parent)
     m_centre->addTab(scrollable(m_study), tr("Study"));
     connect(m_study, &StudyTab::studyChosen, this,
             [this](const QString& spec, const QString& results) {
-                // No results: the report runs the study. An undoable, unsaved change.
-                m_project.study = ProjectStudy{spec.toStdString(), results.toStdString()};
+                // No results: the report runs the study. An undoable, unsaved change. The
+                // hazard curve is the site's, not the study's: it stays.
+                std::optional<ProjectHazard> hazard;
+                if (m_project.study) hazard = m_project.study->hazard;
+                m_project.study = ProjectStudy{spec.toStdString(), results.toStdString(), hazard};
                 m_undo->recordChange();
                 statusBar()->showMessage(tr("The project's study is %1; save to keep it").arg(spec),
                                          5000);

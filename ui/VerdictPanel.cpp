@@ -30,12 +30,15 @@ VerdictPanel::VerdictPanel(QWidget* parent)
         {tr("Basis"), tr("Code"), tr("Demand"), tr("Capacity"), tr("Margin"), tr("Verdict")});
     m_table->horizontalHeaderItem(ColBasis)->setToolTip(
         tr("What the check rests on: sine (enveloped sine, ch. IV), planar (ch. VI), record (the "
-           "project's record), floors (the building's floor motions under the ground record)."));
+           "project's record), floors (the building's floor motions under the ground record), risk "
+           "(a study set's collapse fragility against the site's hazard curve)."));
     m_table->horizontalHeaderItem(ColDemand)->setToolTip(
         tr("The code's demand in g, in the check's intensity: the top-floor force ratio "
-           "F_top/w_top, or for a floor check the ground acceleration of the code level."));
+           "F_top/w_top, or for a floor check the ground acceleration of the code level; for a "
+           "risk check the annual rate of the slab falling (1/yr)."));
     m_table->horizontalHeaderItem(ColCapacity)
-        ->setToolTip(tr("The same intensity (g) at which the slab slides off its walls."));
+        ->setToolTip(tr("The same intensity (g) at which the slab slides off its walls; for a risk "
+                        "check the target annual rate (1/yr)."));
     m_table->horizontalHeaderItem(ColMargin)->setToolTip(
         tr("Capacity / demand: above 1 the check holds. The smallest margin governs."));
     m_table->verticalHeader()->hide();
@@ -129,16 +132,18 @@ void VerdictPanel::setAssessment(const Assessment& a, const QString& scope) {
         const QString level = c.basis == CheckBasis::Floors && c.code == "asce7_22"
                                   ? (c.level == CheckLevel::MceR ? tr("\nMCE_R") : tr("\ndesign"))
                                   : QString();
-        setRow(i,
-               {QString::fromStdString(checkBasisName(c.basis)), m_codes.back() + level,
-                fixed(x.demand, 3), x.capacity ? fixed(*x.capacity, 3) : tr("none ≤ limit"),
-                marginCell(x), QString::fromStdString(c.verdict)},
-               tr("%1: %2\n%3 against %4 (%5)\nModel: %6\nExcitation: %7")
-                   .arg(m_ids.back(), QString::fromStdString(c.codeTitle),
-                        QString::fromStdString(x.demandName),
-                        QString::fromStdString(x.capacityName), QString::fromStdString(x.intensity),
-                        QString::fromStdString(c.model), QString::fromStdString(c.excitation)),
-               c.holds ? QColor(30, 130, 60) : QColor(192, 57, 43));
+        setRow(
+            i,
+            {QString::fromStdString(checkBasisName(c.basis)), m_codes.back() + level,
+             QString::fromStdString(quantityText(x, x.demand)),
+             x.capacity ? QString::fromStdString(quantityText(x, *x.capacity)) : tr("none ≤ limit"),
+             marginCell(x), QString::fromStdString(c.verdict)},
+            tr("%1: %2\n%3 against %4 (%5)\nModel: %6\nExcitation: %7")
+                .arg(m_ids.back(), QString::fromStdString(c.codeTitle),
+                     QString::fromStdString(x.demandName), QString::fromStdString(x.capacityName),
+                     QString::fromStdString(x.intensity), QString::fromStdString(c.model),
+                     QString::fromStdString(c.excitation)),
+            c.holds ? QColor(30, 130, 60) : QColor(192, 57, 43));
         if (a.governing == static_cast<std::size_t>(i))
             for (int col = 0; col < Columns; ++col) {
                 QFont f = m_table->item(i, col)->font();

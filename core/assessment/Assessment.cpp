@@ -5,6 +5,8 @@
 #include "core/codes/CodeCatalog.h"
 #include "core/io/Project.h"
 
+#include <cmath>
+#include <iomanip>
 #include <locale>
 #include <sstream>
 
@@ -35,6 +37,8 @@ std::string verticalText(const PlanarSettings& s) {
 // The paper's words at the design level (ch. V: which limit the code's force reaches first);
 // at MCE_R, and for the floor checks, whether the slab stays on its walls.
 std::string verdictWords(CheckBasis basis, CheckLevel level, bool holds) {
+    if (basis == CheckBasis::Risk)
+        return holds ? "meets the target rate of collapse" : "exceeds the target rate of collapse";
     if (basis != CheckBasis::Floors)
         return verdictText(holds ? Verdict::OverstressGoverns : Verdict::KineticInstabilityGoverns);
     const std::string at = level == CheckLevel::MceR ? "at the MCE_R level" : "at the design level";
@@ -136,6 +140,76 @@ Check floorCheck(const Project& p, const FloorCheckParts& f, const FloorDemand& 
     return c;
 }
 
+// Rates to 3 significant digits as every table prints them ("2.01e-04"): fixed notation would
+// spend most digits on zeros.
+std::string rateText(double x) {
+    std::ostringstream s;
+    s.imbue(std::locale::classic());
+    s << std::scientific << std::setprecision(2) << x;
+    return s.str();
+}
+
+std::string riskModelText(const RiskCheckParts& r, const RiskSetPart& set) {
+    std::string s = "collapse fragility of study set " + std::to_string(set.parameters.set) +
+                    " (mu = " + g(set.parameters.mu) + ", t* = " + g(set.parameters.tstar) +
+                    " s, " + studyDriverText(set.parameters) + "; " +
+                    std::to_string(set.collapsed) + " of " + std::to_string(set.records) +
+                    " records collapsed)";
+    if (set.risk)
+        s += ": lognormal, median " + g(set.risk->fragility.medianG) + " g " + r.measure +
+             ", beta = " + g(set.risk->fragility.beta);
+    return s;
+}
+
+std::string riskExcitationText(const RiskCheckParts& r) {
+    return "hazard curve " + r.curve.source + " (" + hazardMeasureName(r.curve.measure) + ", " +
+           r.curve.format + ")";
+}
+
+// lambda_C against the target rate: the demand is the rate at which the slab falls, the
+// capacity the rate the owner or code accepts, so margin = target / lambda_C and the check holds
+// while lambda_C is below the target (slabHolds, as every check).
+std::optional<Check> riskCheck(const RiskCheckParts& r, const RiskSetPart& set,
+                               std::vector<std::string>& notes) {
+    const std::string id = riskCheckId(set.parameters.set);
+    if (!set.risk) {
+        notes.push_back(id + ": not checked: set " + std::to_string(set.parameters.set) +
+                        " has no fitted collapse fragility (" + set.noFit +
+                        "), so no annual rate of collapse follows from the study");
+        return std::nullopt;
+    }
+    const double lambda = set.risk->integral.lambdaC;
+    if (!(lambda > 0)) {
+        notes.push_back(id + ": not checked: the annual rate of collapse is 0 to double "
+                             "precision (the fragility's median lies far above the hazard "
+                             "curve), so no margin is defined");
+        return std::nullopt;
+    }
+    Check c;
+    c.basis = CheckBasis::Risk;
+    c.code = "risk_target";
+    c.codeTitle = "target rate of collapse, " + riskTargetText(r.settings) +
+                  (riskTargetText(r.settings) == "1 % in 50 years" ? " (ASCE 7-22 ch. 21)" : "");
+    c.level = CheckLevel::Collapse;
+    c.id = id;
+    c.model = riskModelText(r, set);
+    c.excitation = riskExcitationText(r);
+    Comparison x;
+    x.intensity = "annual rate";
+    x.unit = kAnnualRateUnit;
+    x.demandName = "lambda_C, annual rate of the slab falling (log-log interpolated hazard curve)";
+    x.demand = lambda;
+    x.capacityName = "target rate, " + riskTargetText(r.settings);
+    x.capacity = r.settings.targetRate;
+    x.searchLimit = r.settings.targetRate;
+    x.margin = r.settings.targetRate / lambda;
+    c.comparisons.push_back(x);
+    finish(c);
+    c.verdict = c.holds ? "meets the " + riskTargetText(r.settings) + " target"
+                        : "exceeds the target rate (" + riskTargetText(r.settings) + ")";
+    return c;
+}
+
 void pickGoverning(Assessment& a) {
     for (std::size_t k = 0; k < a.checks.size(); ++k)
         if (!a.governing || a.checks[k].governing().orderingMargin() <
@@ -147,9 +221,12 @@ void pickGoverning(Assessment& a) {
     std::ostringstream s;
     s.imbue(std::locale::classic());
     s << "the smallest margin of the " << a.checks.size() << " checks: ";
+    const auto value = [&x](double v) {
+        return x.unit == kAnnualRateUnit ? rateText(v) + " per year" : g(v) + " " + x.unit;
+    };
     if (x.margin)
-        s << x.capacityName << " = " << g(*x.capacity) << " " << x.unit << " against "
-          << x.demandName << " = " << g(x.demand) << " " << x.unit;
+        s << x.capacityName << " = " << value(*x.capacity) << " against " << x.demandName << " = "
+          << value(x.demand);
     else
         s << "no collapse up to the search limit (" << g(x.searchLimit) << " " << x.unit
           << "), margin above " << g(x.orderingMargin());
@@ -187,6 +264,16 @@ std::string recordExcitationText(const Project& p, const std::string& recordName
     return s + ", scaled to its critical peak";
 }
 
+std::string riskCheckId(std::size_t set) {
+    return checkBasisName(CheckBasis::Risk) + ".set" + std::to_string(set);
+}
+
+std::string riskTargetText(const RiskSettings& s) {
+    // The code's rate as a file spells it ("2.0101e-4", 5 digits) is the code's target.
+    if (std::abs(s.targetRate / codeTargetRate() - 1) < 1e-4) return "1 % in 50 years";
+    return rateText(s.targetRate) + " per year";
+}
+
 bool hasBasis(const Assessment& a, CheckBasis b) {
     for (const Check& c : a.checks)
         if (c.basis == b) return true;
@@ -216,6 +303,13 @@ Assessment composeAssessment(const Project& p, const AssessmentParts& parts) {
     else if (p.floors && !p.record)
         a.notes.push_back("floors: the project's floor check needs a ground record "
                           "(excitation.record); none ran");
+    if (parts.risk)
+        for (const RiskSetPart& set : parts.risk->sets)
+            if (std::optional<Check> c = riskCheck(*parts.risk, set, a.notes))
+                a.checks.push_back(std::move(*c));
+    if (p.study && p.study->hazard && p.study->results.empty())
+        a.notes.push_back("risk: the study's hazard curve needs the study's results "
+                          "(study.results, written by kinstab-cli study); no risk check ran");
     pickGoverning(a);
     return a;
 }

@@ -13,9 +13,14 @@
 //               (when it has one);
 // - floors.CODE.LEVEL the slab on its level of the building's shear-building model under the
 //               ground record, against ASCE 7-22 §13.3.1 (design, MCE_R) and EN 1998-1 §4.3.5.2
-//               (when the project has "floors" and a record).
+//               (when the project has "floors" and a record);
+// - risk.setK   per parameter set K of the project's study (numbered from 0, as kinstab-cli risk
+//               --set K), the annual rate of the slab falling lambda_C (the set's fitted
+//               fragility against the study's hazard curve) against the target rate (when the
+//               study has results and a hazard curve; core/assessment/RiskCheck.h).
 
 #include "core/assessment/Check.h"
+#include "core/assessment/RiskCheck.h"
 #include "core/base/ModelKind.h"
 #include "core/building/LevelCritical.h"
 #include "core/check/DesignCheck.h"
@@ -43,6 +48,7 @@ struct AssessmentParts {
     std::optional<std::vector<CodeVerdict>> record; // against the record's critical peak
     std::string recordName;                         // the ground record's name
     std::optional<FloorCheckParts> floors;
+    std::optional<RiskCheckParts> risk; // the study's sets against its hazard curve
 };
 
 struct Assessment {
@@ -63,5 +69,9 @@ Assessment composeAssessment(const Project& p, const AssessmentParts& parts);
 std::string slabModelText(const Project& p, ModelKind model);
 std::string sineExcitationText(const Project& p);
 std::string recordExcitationText(const Project& p, const std::string& recordName);
+// "risk.set0": the risk check of a parameter set (numbered from 0, as kinstab-cli risk --set).
+std::string riskCheckId(std::size_t set);
+// "1 % in 50 years" for the code's rate at 50 years; else the rate itself, "5e-05 per year".
+std::string riskTargetText(const RiskSettings& s);
 
 } // namespace kinstab

@@ -44,13 +44,6 @@ nlohmann::json checkJson(const Check& c) {
     return j;
 }
 
-std::string fixed(double x, int digits) {
-    std::ostringstream s;
-    s.imbue(std::locale::classic());
-    s << std::fixed << std::setprecision(digits) << x;
-    return s.str();
-}
-
 } // namespace
 
 nlohmann::json assessmentJson(const Assessment& a) {
@@ -78,8 +71,8 @@ std::string assessmentTable(const Assessment& a) {
       << "verdict\n";
     for (const Check& c : a.checks) {
         const Comparison& x = c.governing();
-        s << std::setw(24) << c.id << std::setw(10) << fixed(x.demand, 3) << std::setw(10)
-          << (x.capacity ? fixed(*x.capacity, 3) : "none") << std::setw(9) << marginText(x)
+        s << std::setw(24) << c.id << std::setw(10) << quantityText(x, x.demand) << std::setw(10)
+          << (x.capacity ? quantityText(x, *x.capacity) : "none") << std::setw(9) << marginText(x)
           << c.verdict << "\n";
     }
     if (const Check* c = a.governingCheck())

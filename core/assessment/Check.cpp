@@ -19,12 +19,22 @@ std::string checkBasisName(CheckBasis b) {
         return "floors";
     case CheckBasis::Planar:
         return "planar";
+    case CheckBasis::Risk:
+        return "risk";
     }
     return "sine";
 }
 
 std::string checkLevelName(CheckLevel l) {
-    return l == CheckLevel::MceR ? "mce_r" : "design";
+    switch (l) {
+    case CheckLevel::Design:
+        return "design";
+    case CheckLevel::MceR:
+        return "mce_r";
+    case CheckLevel::Collapse:
+        return "collapse";
+    }
+    return "design";
 }
 
 double Comparison::orderingMargin() const {
@@ -37,6 +47,16 @@ std::string marginText(const Comparison& x) {
     s.imbue(std::locale::classic());
     s << std::fixed << std::setprecision(2) << x.orderingMargin();
     return x.margin ? s.str() : "> " + s.str();
+}
+
+std::string quantityText(const Comparison& x, double value) {
+    std::ostringstream s;
+    s.imbue(std::locale::classic());
+    if (x.unit == kAnnualRateUnit)
+        s << std::scientific << std::setprecision(2) << value;
+    else
+        s << std::fixed << std::setprecision(3) << value;
+    return s.str();
 }
 
 bool Comparison::holds() const {

@@ -14,15 +14,21 @@
 namespace kinstab {
 
 // What the check rests on: the enveloped sine of ch. IV, a record (through the floor filter or
-// not), the building's floor motions under a ground record, or the planar slab of ch. VI.
-enum class CheckBasis { Sine, Record, Floors, Planar };
-std::string checkBasisName(CheckBasis b); // "sine" | "record" | "floors" | "planar"
+// not), the building's floor motions under a ground record, the planar slab of ch. VI, or a
+// study's collapse fragility integrated against the site's hazard curve (the annual rate of the
+// slab falling against a target rate).
+enum class CheckBasis { Sine, Record, Floors, Planar, Risk };
+std::string checkBasisName(CheckBasis b); // "sine" | "record" | "floors" | "planar" | "risk"
 
 // The code level the demand belongs to: the design level (the paper's ch. V question: does the
 // structure reach its code strength before the slab slides off?) or MCE_R (does the slab stay
-// seated?).
-enum class CheckLevel { Design, MceR };
-std::string checkLevelName(CheckLevel l); // "design" | "mce_r"
+// seated?); a risk check's demand is no level of ground motion but the rate of collapse over
+// every level of the hazard curve.
+enum class CheckLevel { Design, MceR, Collapse };
+std::string checkLevelName(CheckLevel l); // "design" | "mce_r" | "collapse"
+
+// The unit of a risk check's demand and capacity.
+inline constexpr const char* kAnnualRateUnit = "1/yr";
 
 struct Comparison {
     std::string intensity;          // what both numbers measure: "ground PGA", ...
@@ -39,6 +45,9 @@ struct Comparison {
 
 // The margin as every front end prints it: "1.21", or "> 2.50" when no collapse was found.
 std::string marginText(const Comparison& x);
+// A demand or capacity as every front end's table prints it: accelerations (g) to 3 decimals,
+// annual rates (1/yr) to 3 significant digits ("2.01e-04"), which 3 decimals would print as 0.
+std::string quantityText(const Comparison& x, double value);
 
 struct Check {
     std::string id; // BASIS.CODE[.LEVEL]: "sine.ubc1976", "floors.asce7_22.mce_r"

@@ -70,6 +70,8 @@ AssessmentRun runAssessment(const Project& p, const std::optional<PlanarCase>& p
     if (p.model == ModelKind::Planar && !planar)
         throw std::logic_error("runAssessment: a planar project needs its planar case");
     AssessmentRun run;
+    // First: a bad results or hazard file is an InputError before minutes of searches.
+    run.parts.risk = projectRiskParts(p);
     run.codes = runCodes(p.building, p.codes);
     AnalysisRequest sine = checkRequest(p, run.codes);
     sine.planar = p.model == ModelKind::Planar ? planar : std::nullopt;

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Runs what a project's assessment needs, and only that: the codes, A_crit(1/T) of the project's
-// model, the record's critical peak, and the critical ground PGA of the slab's own level of the
-// building model (not every level's, which only the report's floor figure shows). Used by
+// model, the record's critical peak, the critical ground PGA of the slab's own level of the
+// building model (not every level's, which only the report's floor figure shows), and the risk
+// integral of each study set against the study's hazard curve (from the study's results; the
+// study itself is not run here). Used by
 // `kinstab-cli check` and Python's kinstab.assess; the report and the GUI compose the same
 // assessment from the fuller analyses they run (composeAssessment).
 
@@ -28,7 +30,8 @@ struct AssessmentRun {
 
 // planar: the project's planar case with its vertical motion read (the caller reads the record;
 // core/slab/PlanarSettings.h), required when the project's model is planar. Throws InputError
-// on a bad project input, RecordError on a record that cannot be read.
+// on a bad project input (also study results or a hazard curve that cannot be read, naming the
+// field), RecordError on a record that cannot be read.
 AssessmentRun runAssessment(const Project& p, const std::optional<PlanarCase>& planar,
                             AnalysisControl& control);
 

@@ -4,7 +4,10 @@
 
 #include "core/base/TextInput.h"
 #include "core/io/MotionJson.h"
+#include "core/risk/RiskRequest.h"
 #include "core/study/StudySpec.h"
+
+#include <cmath>
 
 namespace kinstab {
 
@@ -21,11 +24,67 @@ std::string pathFrom(const JsonReader& r, const std::string& key, const std::str
                         std::to_string(kMaxStudyPathChars));
     return pathFromProject(text, baseDir);
 }
+
+// A number of the hazard block in [lo, hi] (lo excluded when openLow), or a message naming it;
+// the same ranges as kinstab-cli risk's (core/risk/RiskRequest.cpp).
+double rangedNumber(const JsonReader& r, const std::string& key, double fallback, double lo,
+                    double hi, bool openLow, const std::string& unit) {
+    const double x = r.number(key, fallback);
+    const bool low = openLow ? !(x > lo) : !(x >= lo);
+    if (!std::isfinite(x) || low || x > hi)
+        r.fail(key, formatDouble(x) + ": must be " + (openLow ? "> " : ">= ") + formatDouble(lo) +
+                        " and at most " + formatDouble(hi) + unit);
+    return x;
+}
+
+HazardSite siteFrom(const JsonReader& h) {
+    const nlohmann::json& j = h.raw("site");
+    if (!j.is_array() || j.size() != 2 || !j[0].is_number() || !j[1].is_number())
+        h.fail("site", "expected [longitude, latitude] in degrees, got " + j.dump());
+    const HazardSite s{j[0].get<double>(), j[1].get<double>()};
+    if (!(s.lon >= -180 && s.lon <= 360))
+        h.fail("site", "longitude " + formatDouble(s.lon) + ": must be >= -180 and at most 360");
+    if (!(s.lat >= -90 && s.lat <= 90))
+        h.fail("site", "latitude " + formatDouble(s.lat) + ": must be >= -90 and at most 90");
+    return s;
+}
+
+std::optional<ProjectHazard> hazardFrom(const JsonReader& s, const std::string& baseDir) {
+    if (!s.has("hazard")) return std::nullopt;
+    const JsonReader h = s.object("hazard");
+    ProjectHazard out;
+    out.file = pathFrom(h, "file", baseDir);
+    if (out.file.empty()) h.fail("file", "missing: the path of the hazard curve");
+    const std::string format = h.text("format", hazardFormatName(HazardFormat::Auto));
+    const std::optional<HazardFormat> f = hazardFormatFromName(format);
+    if (!f) h.fail("format", quotedToken(format) + ": must be auto, openquake, usgs or csv");
+    out.format = *f;
+    if (h.has("site")) out.site = siteFrom(h);
+    out.targetRate = rangedNumber(h, "target_rate", codeTargetRate(), 0.0, 1.0, true, " per year");
+    out.years = rangedNumber(h, "years", 50, 0.0, kMaxRiskYears, true, " years");
+    return out;
+}
+
+StudySpec loadStudyFor(const ProjectStudy& s) {
+    try {
+        return loadStudy(s.spec);
+    } catch (const StudyError& e) {
+        throw JsonFieldError("study.spec = " + quotedToken(s.spec) + ": " + e.what());
+    }
+}
 } // namespace
 
 json studyToJson(const ProjectStudy& s, const std::string& baseDir) {
     json j = {{"spec", pathForProject(s.spec, baseDir)}};
     if (!s.results.empty()) j["results"] = pathForProject(s.results, baseDir);
+    if (const auto& h = s.hazard) {
+        json hj = {{"file", pathForProject(h->file, baseDir)},
+                   {"format", hazardFormatName(h->format)}};
+        if (h->site) hj["site"] = {h->site->lon, h->site->lat};
+        hj["target_rate"] = h->targetRate;
+        hj["years"] = h->years;
+        j["hazard"] = hj;
+    }
     return j;
 }
 
@@ -36,14 +95,30 @@ std::optional<ProjectStudy> studyFromJson(const JsonReader& r, const std::string
     out.spec = pathFrom(s, "spec", baseDir);
     if (out.spec.empty()) s.fail("spec", "missing: the path of the study file");
     out.results = pathFrom(s, "results", baseDir);
+    out.hazard = hazardFrom(s, baseDir);
     return out;
 }
 
 void checkStudyFile(const ProjectStudy& s) {
+    if (s.hazard)
+        (void)readProjectHazard(s);
+    else
+        (void)loadStudyFor(s);
+}
+
+HazardCurve readProjectHazard(const ProjectStudy& s) {
+    const StudySpec spec = loadStudyFor(s);
+    const std::string where = "study.hazard.file = " + quotedToken(s.hazard->file) + ": ";
+    // The study's measure picks the USGS response and refuses a curve of another measure.
+    const std::string name = intensityName(spec.intensity);
+    const std::optional<HazardMeasure> measure = measureFromStudy(name);
+    if (!measure)
+        throw JsonFieldError(where + "the study's intensity measure " + quotedToken(name) +
+                             " is no measure a hazard curve is given in");
     try {
-        (void)loadStudy(s.spec);
-    } catch (const StudyError& e) {
-        throw JsonFieldError("study.spec = " + quotedToken(s.spec) + ": " + e.what());
+        return readHazardFile(s.hazard->file, {s.hazard->format, s.hazard->site, measure});
+    } catch (const HazardError& e) {
+        throw JsonFieldError(where + e.what());
     }
 }
 
