@@ -112,7 +112,7 @@ void addChecksTable(ReportDocument& doc, const Assessment& a) {
     Table t{{"check", allG ? "demand (g)" : "demand", allG ? "capacity (g)" : "capacity", "margin",
              "verdict"},
             {},
-            {1.9, allG ? 0.8 : 1.1, allG ? 0.9 : 1.1, 0.7, 3.0},
+            {1.9, allG ? 0.8 : 1.35, allG ? 0.9 : 1.35, 0.7, allG ? 3.0 : 2.6},
             {Align::Left, Align::Right, Align::Right, Align::Right, Align::Left},
             {}};
     for (std::size_t k = 0; k < a.checks.size(); ++k) {

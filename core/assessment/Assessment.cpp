@@ -6,6 +6,7 @@
 #include "core/io/Project.h"
 
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
 #include <locale>
 #include <sstream>
@@ -161,9 +162,15 @@ std::string riskModelText(const RiskCheckParts& r, const RiskSetPart& set) {
     return s;
 }
 
+// The file by its name (the report prints it on page 1, where a full path says nothing of the
+// site), with what the reader picked in it (OpenQuake's site row, USGS's response).
 std::string riskExcitationText(const RiskCheckParts& r) {
-    return "hazard curve " + r.curve.source + " (" + hazardMeasureName(r.curve.measure) + ", " +
-           r.curve.format + ")";
+    const std::string& file = r.hazard.file;
+    const std::string& source = r.curve.source;
+    const std::string picked =
+        source.compare(0, file.size(), file) == 0 ? source.substr(file.size()) : "";
+    return "hazard curve " + std::filesystem::path(file).filename().string() + picked + " (" +
+           hazardMeasureName(r.curve.measure) + ", " + r.curve.format + ")";
 }
 
 // lambda_C against the target rate: the demand is the rate at which the slab falls, the

@@ -207,8 +207,9 @@ def codes(building: dict, **code_inputs: dict) -> dict:
 
 def assess(path: str) -> dict:
     """The assessment of a project file: every check the project implies, each with its id
-    (``sine.ubc1976``, ``record.atc306``, ``floors.asce7_22.mce_r``, ...), what it compares
-    (demand and capacity in one intensity), its margin and verdict, and the governing check.
+    (``sine.ubc1976``, ``record.atc306``, ``floors.asce7_22.mce_r``, ``risk.set0``, ...), what
+    it compares (demand and capacity in one intensity: g, or 1/yr for a risk check's annual rate
+    of collapse against the target rate), its margin and verdict, and the governing check.
     The same dictionary as ``kinstab-cli check --project PATH``'s ``"assessment"``; a bad field
     raises ValueError naming it."""
     return json.loads(_core._assess_json(str(path)))

@@ -46,7 +46,8 @@ private slots:
         Project p = paperExampleProject();
         const std::string spec =
             std::filesystem::absolute(kExamples + "study-example.json").lexically_normal();
-        p.study = ProjectStudy{spec, std::filesystem::path(kExamples) / "runs" / "rows.jsonl"};
+        p.study = ProjectStudy{spec, std::filesystem::path(kExamples) / "runs" / "rows.jsonl",
+                               std::nullopt};
         // Stored relative to the project's folder, as a record's file is.
         const nlohmann::json j = projectToJson(p, kExamples);
         QCOMPARE(j["study"]["spec"].get<std::string>(), std::string("study-example.json"));
