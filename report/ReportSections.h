@@ -71,6 +71,8 @@ void addFloorsSection(ReportDocument& doc, const Project& p, const ReportAnalysi
 void addStudySection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 // The risk section (RiskSection.cpp): only when the project's study names a hazard curve.
 void addRiskSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
+// The closed forms' sources, when the risk section shows them (none otherwise).
+QStringList riskCitations(const ReportAnalysis& a);
 // The reference-list entries of the study's records (none without a study).
 QStringList studyCitations(const Project& p);
 

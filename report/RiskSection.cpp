@@ -178,4 +178,16 @@ void addRiskSection(ReportDocument& doc, const Project& p, const ReportAnalysis&
     hazardFigure(doc, r);
 }
 
+QStringList riskCitations(const ReportAnalysis& a) {
+    if (!a.risk) return {};
+    return {
+        QStringLiteral("C. A. Cornell, F. Jalayer, R. O. Hamburger, D. A. Foutch, "
+                       "Probabilistic basis for 2000 SAC Federal Emergency Management Agency "
+                       "steel moment frame guidelines, J. Struct. Eng. 128(4), 2002 (first-order "
+                       "closed form of the risk integral)."),
+        QStringLiteral("D. Vamvatsikos, Derivation of new SAC/FEMA performance evaluation "
+                       "solutions with second-order hazard approximation, Earthquake Engng "
+                       "Struct. Dyn. 42, 2013 (second-order closed form).")};
+}
+
 } // namespace kinstab::ui::report
