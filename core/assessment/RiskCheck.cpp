@@ -16,6 +16,38 @@
 
 namespace kinstab {
 
+HazardCurve readProjectHazard(const ProjectStudy& s) {
+    StudySpec spec;
+    try {
+        spec = loadStudy(s.spec);
+    } catch (const StudyError& e) {
+        throw InputError("study.spec = " + quotedToken(s.spec) + ": " + e.what());
+    }
+    const std::string where = "study.hazard.file = " + quotedToken(s.hazard->file) + ": ";
+    // The study's measure picks the USGS response and refuses a curve of another measure.
+    const std::string name = intensityName(spec.intensity);
+    const std::optional<HazardMeasure> measure = measureFromStudy(name);
+    if (!measure)
+        throw InputError(where + "the study's intensity measure " + quotedToken(name) +
+                         " is no measure a hazard curve is given in");
+    const std::optional<HazardFormat> format = hazardFormatFromName(s.hazard->format);
+    if (!format) throw InputError("study.hazard.format = " + quotedToken(s.hazard->format));
+    std::optional<HazardSite> site;
+    if (s.hazard->site) site = HazardSite{s.hazard->site->first, s.hazard->site->second};
+    try {
+        return readHazardFile(s.hazard->file, {*format, site, measure});
+    } catch (const HazardError& e) {
+        throw InputError(where + e.what());
+    }
+}
+
+RiskSettings riskSettingsOf(const ProjectHazard& h) {
+    RiskSettings s;
+    s.years = h.years;
+    s.targetRate = h.targetRate.value_or(codeTargetRate());
+    return s;
+}
+
 std::vector<StudyRow> projectStudyRows(const ProjectStudy& s) {
     const std::string results = "study.results = " + quotedToken(s.results) + ": ";
     std::vector<StudyRow> rows;
@@ -44,8 +76,7 @@ RiskCheckParts riskCheckParts(const ProjectHazard& hazard, const HazardCurve& cu
     RiskCheckParts out;
     out.hazard = hazard;
     out.curve = curve;
-    out.settings.years = hazard.years;
-    out.settings.targetRate = hazard.targetRate;
+    out.settings = riskSettingsOf(hazard);
     out.measure = rows.front().measure;
     std::map<std::size_t, std::vector<StudyRow>> bySet;
     for (const StudyRow& r : rows)
@@ -71,13 +102,8 @@ RiskCheckParts riskCheckParts(const ProjectHazard& hazard, const HazardCurve& cu
 
 std::optional<RiskCheckParts> projectRiskParts(const Project& p) {
     if (!p.study || !p.study->hazard || p.study->results.empty()) return std::nullopt;
-    HazardCurve curve;
-    try {
-        curve = readProjectHazard(*p.study);
-    } catch (const JsonFieldError& e) {
-        throw InputError(e.what());
-    }
-    return riskCheckParts(*p.study->hazard, curve, projectStudyRows(*p.study));
+    return riskCheckParts(*p.study->hazard, readProjectHazard(*p.study),
+                          projectStudyRows(*p.study));
 }
 
 } // namespace kinstab

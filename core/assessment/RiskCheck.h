@@ -6,6 +6,7 @@
 // --results R --set K` (core/risk/RiskReport.cpp), so the check's lambda_C is that command's.
 
 #include "core/io/StudyJson.h"
+#include "core/risk/HazardFile.h"
 #include "core/risk/RiskAnalysis.h"
 #include "core/study/StudyRow.h"
 
@@ -32,6 +33,12 @@ struct RiskCheckParts {
     std::string measure;   // the study's, e.g. "pga"
     std::vector<RiskSetPart> sets;
 };
+
+// The hazard curve the study names, read in the study's measure (core/risk/HazardFile.h).
+// Throws InputError naming study.spec or study.hazard.file.
+HazardCurve readProjectHazard(const ProjectStudy& s);
+// The project's hazard settings as the risk engine takes them (the code's target when none).
+RiskSettings riskSettingsOf(const ProjectHazard& h);
 
 // The study's rows from its results file, refused when they are not the results of the study
 // file as it is now (core/study/StudyRowsMatch.h). Throws InputError naming study.results or

@@ -4,10 +4,11 @@
 
 #include "core/base/TextInput.h"
 #include "core/io/MotionJson.h"
-#include "core/risk/RiskRequest.h"
 #include "core/study/StudySpec.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace kinstab {
 
@@ -37,16 +38,16 @@ double rangedNumber(const JsonReader& r, const std::string& key, double fallback
     return x;
 }
 
-HazardSite siteFrom(const JsonReader& h) {
+std::pair<double, double> siteFrom(const JsonReader& h) {
     const nlohmann::json& j = h.raw("site");
     if (!j.is_array() || j.size() != 2 || !j[0].is_number() || !j[1].is_number())
         h.fail("site", "expected [longitude, latitude] in degrees, got " + j.dump());
-    const HazardSite s{j[0].get<double>(), j[1].get<double>()};
-    if (!(s.lon >= -180 && s.lon <= 360))
-        h.fail("site", "longitude " + formatDouble(s.lon) + ": must be >= -180 and at most 360");
-    if (!(s.lat >= -90 && s.lat <= 90))
-        h.fail("site", "latitude " + formatDouble(s.lat) + ": must be >= -90 and at most 90");
-    return s;
+    const double lon = j[0].get<double>(), lat = j[1].get<double>();
+    if (!(lon >= -180 && lon <= 360))
+        h.fail("site", "longitude " + formatDouble(lon) + ": must be >= -180 and at most 360");
+    if (!(lat >= -90 && lat <= 90))
+        h.fail("site", "latitude " + formatDouble(lat) + ": must be >= -90 and at most 90");
+    return {lon, lat};
 }
 
 std::optional<ProjectHazard> hazardFrom(const JsonReader& s, const std::string& baseDir) {
@@ -55,13 +56,14 @@ std::optional<ProjectHazard> hazardFrom(const JsonReader& s, const std::string& 
     ProjectHazard out;
     out.file = pathFrom(h, "file", baseDir);
     if (out.file.empty()) h.fail("file", "missing: the path of the hazard curve");
-    const std::string format = h.text("format", hazardFormatName(HazardFormat::Auto));
-    const std::optional<HazardFormat> f = hazardFormatFromName(format);
-    if (!f) h.fail("format", quotedToken(format) + ": must be auto, openquake, usgs or csv");
-    out.format = *f;
+    out.format = h.text("format", "auto");
+    if (std::find(std::begin(kProjectHazardFormats), std::end(kProjectHazardFormats), out.format) ==
+        std::end(kProjectHazardFormats))
+        h.fail("format", quotedToken(out.format) + ": must be auto, openquake, usgs or csv");
     if (h.has("site")) out.site = siteFrom(h);
-    out.targetRate = rangedNumber(h, "target_rate", codeTargetRate(), 0.0, 1.0, true, " per year");
-    out.years = rangedNumber(h, "years", 50, 0.0, kMaxRiskYears, true, " years");
+    if (h.has("target_rate"))
+        out.targetRate = rangedNumber(h, "target_rate", 0, 0.0, 1.0, true, " per year");
+    out.years = rangedNumber(h, "years", 50, 0.0, kMaxProjectHazardYears, true, " years");
     return out;
 }
 
@@ -78,10 +80,9 @@ json studyToJson(const ProjectStudy& s, const std::string& baseDir) {
     json j = {{"spec", pathForProject(s.spec, baseDir)}};
     if (!s.results.empty()) j["results"] = pathForProject(s.results, baseDir);
     if (const auto& h = s.hazard) {
-        json hj = {{"file", pathForProject(h->file, baseDir)},
-                   {"format", hazardFormatName(h->format)}};
-        if (h->site) hj["site"] = {h->site->lon, h->site->lat};
-        hj["target_rate"] = h->targetRate;
+        json hj = {{"file", pathForProject(h->file, baseDir)}, {"format", h->format}};
+        if (h->site) hj["site"] = {h->site->first, h->site->second};
+        if (h->targetRate) hj["target_rate"] = *h->targetRate;
         hj["years"] = h->years;
         j["hazard"] = hj;
     }
@@ -100,26 +101,7 @@ std::optional<ProjectStudy> studyFromJson(const JsonReader& r, const std::string
 }
 
 void checkStudyFile(const ProjectStudy& s) {
-    if (s.hazard)
-        (void)readProjectHazard(s);
-    else
-        (void)loadStudyFor(s);
-}
-
-HazardCurve readProjectHazard(const ProjectStudy& s) {
-    const StudySpec spec = loadStudyFor(s);
-    const std::string where = "study.hazard.file = " + quotedToken(s.hazard->file) + ": ";
-    // The study's measure picks the USGS response and refuses a curve of another measure.
-    const std::string name = intensityName(spec.intensity);
-    const std::optional<HazardMeasure> measure = measureFromStudy(name);
-    if (!measure)
-        throw JsonFieldError(where + "the study's intensity measure " + quotedToken(name) +
-                             " is no measure a hazard curve is given in");
-    try {
-        return readHazardFile(s.hazard->file, {s.hazard->format, s.hazard->site, measure});
-    } catch (const HazardError& e) {
-        throw JsonFieldError(where + e.what());
-    }
+    (void)loadStudyFor(s);
 }
 
 } // namespace kinstab

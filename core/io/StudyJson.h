@@ -11,12 +11,11 @@
 //   "hazard": {"file": "hazard.csv", "format": "auto", "site": [lon, lat],
 //              "target_rate": 2.0101e-4, "years": 50}
 // file is required; the rest optional (format auto, the file's first site, the code's 1 % in
-// 50 years, 50 years). The curve is read when the project is loaded, in the study's measure, so
-// that a bad curve or another measure is an error naming study.hazard.file at once.
+// 50 years, 50 years). Loading checks the fields; the curve itself is read by the assessment
+// (core/assessment/RiskCheck.h), in the study's measure, because reading hazard files is
+// core/risk's, a floor above io.
 
 #include "core/io/JsonReader.h"
-#include "core/risk/HazardFile.h"
-#include "core/risk/RiskTargets.h"
 
 #include <nlohmann/json.hpp>
 
@@ -26,18 +25,19 @@
 namespace kinstab {
 
 struct ProjectHazard {
-    std::string file; // the hazard curve (absolute once loaded)
-    HazardFormat format = HazardFormat::Auto;
-    std::optional<HazardSite> site;       // OpenQuake: the row of this site; none: the first
-    double targetRate = codeTargetRate(); // per year, the risk check's capacity
-    double years = 50;                    // of the probability of collapse in the report
-    bool operator==(const ProjectHazard& o) const {
-        const bool sameSite = site.has_value() == o.site.has_value() &&
-                              (!site || (site->lon == o.site->lon && site->lat == o.site->lat));
-        return file == o.file && format == o.format && sameSite && targetRate == o.targetRate &&
-               years == o.years;
-    }
+    std::string file;                              // the hazard curve (absolute once loaded)
+    std::string format = "auto";                   // a name of core/risk/HazardFile.h's formats
+    std::optional<std::pair<double, double>> site; // lon, lat; OpenQuake's row (none: the first)
+    std::optional<double> targetRate;              // per year; none: the code's 1 % in 50 years
+    double years = 50;                             // of the probability of collapse
+    bool operator==(const ProjectHazard&) const = default;
 };
+
+// The names hazardFormatName (core/risk/HazardFile.h) gives, and the most years kinstab-cli risk
+// takes (kMaxRiskYears): io sits below risk, so they are repeated here and tst_risk_check checks
+// that they agree.
+inline constexpr const char* kProjectHazardFormats[] = {"auto", "openquake", "usgs", "csv"};
+inline constexpr double kMaxProjectHazardYears = 10'000;
 
 struct ProjectStudy {
     std::string spec;    // the study file (absolute once loaded)
@@ -50,11 +50,7 @@ struct ProjectStudy {
 nlohmann::json studyToJson(const ProjectStudy& s, const std::string& baseDir);
 // Reads "study" (r is the project's top level). Throws JsonFieldError naming the field.
 std::optional<ProjectStudy> studyFromJson(const JsonReader& r, const std::string& baseDir);
-// Reads the study file once: throws JsonFieldError "study.spec = 'PATH': message"; and the
-// hazard curve in the study's measure: "study.hazard.file = 'PATH': message".
+// Reads the study file once: throws JsonFieldError "study.spec = 'PATH': message".
 void checkStudyFile(const ProjectStudy& s);
-// The hazard curve the study names, read in the study's measure (core/risk/HazardFile.h).
-// Throws JsonFieldError naming study.spec or study.hazard.file.
-HazardCurve readProjectHazard(const ProjectStudy& s);
 
 } // namespace kinstab

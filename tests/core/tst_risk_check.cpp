@@ -9,6 +9,7 @@
 
 #include "core/assessment/AssessmentJson.h"
 #include "core/assessment/RunAssessment.h"
+#include "core/base/InputError.h"
 #include "core/io/Project.h"
 #include "core/risk/RiskReport.h"
 
@@ -42,13 +43,17 @@ Assessment riskAssessment(const Project& p) {
     return composeAssessment(p, parts);
 }
 
-// The message loading the example's study with its "hazard" replaced gives ("" when it loads).
+// The message loading the example's study with its "hazard" replaced gives, or else reading
+// its curve as the assessment does ("" when both succeed).
 std::string hazardError(const nlohmann::json& hazard) {
     nlohmann::json j = projectToJson(paperExampleProject());
     j["study"] = {{"spec", "study-example.json"}, {"hazard", hazard}};
     try {
-        parseProject(j.dump(), kExamples);
+        const Project p = parseProject(j.dump(), kExamples);
+        (void)readProjectHazard(*p.study);
     } catch (const ProjectError& e) {
+        return e.what();
+    } catch (const InputError& e) {
         return e.what();
     }
     return {};
@@ -70,7 +75,8 @@ private slots:
         QCOMPARE(std::filesystem::path(p.study->hazard->file).filename().string(),
                  std::string("hazard-second-order.csv"));
         QVERIFY(std::filesystem::path(p.study->hazard->file).is_absolute());
-        QCOMPARE(p.study->hazard->targetRate, codeTargetRate());
+        QVERIFY(!p.study->hazard->targetRate); // none: the code's
+        QCOMPARE(riskSettingsOf(*p.study->hazard).targetRate, codeTargetRate());
         QCOMPARE(p.study->hazard->years, 50.0);
         // Written back relative to the project's folder, with every key, and read back equal.
         const nlohmann::json j = projectToJson(p, kExamples);
@@ -214,6 +220,18 @@ private slots:
         std::ofstream(path) << "# imt=SA(1.0)\nim_g,annual_rate\n0.1,0.01\n1,0.0001\n";
         const std::string e = hazardError({{"file", path}});
         QVERIFY2(contains(e, "study.hazard.file = '") && contains(e, "SA"), e.c_str());
+    }
+
+    // io repeats the format names and the years' limit of core/risk (a floor above it).
+    void ioNamesAgreeWithRisk() {
+        std::vector<std::string> names;
+        for (const char* n : kProjectHazardFormats)
+            names.push_back(n);
+        const std::vector<std::string> risk = {
+            hazardFormatName(HazardFormat::Auto), hazardFormatName(HazardFormat::OpenQuake),
+            hazardFormatName(HazardFormat::Usgs), hazardFormatName(HazardFormat::Csv)};
+        QVERIFY(names == risk);
+        QCOMPARE(kMaxProjectHazardYears, kMaxRiskYears);
     }
 
     // Every optional key in range (a site is for an OpenQuake file only: a CSV holds one site).
