@@ -81,7 +81,6 @@ AssessmentRun runAssessment(const Project& p, const std::optional<PlanarCase>& p
         AnalysisRequest rec = checkRequest(p, run.codes);
         rec.record = p.record;
         rec.parts.recordCheck = true;
-        rec.recordFit = false; // the assessment reads the verdicts alone
         run.record = runAnalysis(rec, control).record;
         if (run.record) {
             run.parts.record = run.record->verdicts;
