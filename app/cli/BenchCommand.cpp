@@ -1,12 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // kinstab-cli bench: the surface speed target (exact against paper at T/16, one process);
-// with --model planar, the planar surface against the 1-DOF one on the same grid.
+// with --model planar, the planar surface against the 1-DOF one on the same grid; with --record
+// FILE, the record path (a record run against a sine run, the envelope fit's share, the record's
+// critical search against the sine's).
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/ModelFlags.h"
 #include "app/cli/PlanarFlags.h"
+#include "app/cli/RecordFlags.h"
+#include "app/cli/SearchFlags.h"
+#include "core/check/RecordBenchmark.h"
 #include "core/io/JsonText.h"
+#include "core/records/RecordReader.h"
 #include "core/sweep/SurfaceBenchmark.h"
 
 #include <cstdio>
@@ -84,11 +90,61 @@ int runBenchVectorState(const Slab1DCase& c, const SweepGrid& grid, int threads,
                  b.ratioMedian, b.ratioCpu);
     return 0;
 }
+// The record path (issue 34): a record run against a sine run, the fit's share of the record run,
+// and the record's critical search against the sine's, each pair alternating in this process.
+int runBenchRecord(const Args& args, int repeats) {
+    const Slab1DCase c = slab1DCaseFromFlags(args, true);
+    const RecordExcitation record = recordExcitationFromFlags(args, "record");
+    const CriticalSearch search = criticalSearchFromFlags(args);
+    constexpr double amplitude = 1.0, frequency = 1.0; // g, Hz: the sine's point
+    RecordBenchmark b;
+    try {
+        b = benchmarkRecord(c, record, search, amplitude, frequency, repeats);
+    } catch (const RecordError& e) {
+        throw UsageError("--record " + args.text("record") + ": " + e.what());
+    } catch (const std::invalid_argument& e) {
+        throw UsageError("--record " + args.text("record") + ": " + e.what());
+    }
+    nlohmann::json j = {{"record", record.file},
+                        {"mu", c.slab.mu},
+                        {"tstar", c.tstar},
+                        {"sine_amplitude", amplitude},
+                        {"sine_frequency", frequency},
+                        {"record_run", timingJson(b.recordRun)},
+                        {"sine_run", timingJson(b.sineRun)},
+                        {"ratio_record_over_sine", b.recordOverSine},
+                        {"ratio_record_over_sine_cpu", b.recordOverSineCpu},
+                        {"envelope_fit", timingJson(b.fit)},
+                        {"fit_share_of_record_run", b.fitShare},
+                        {"fit_share_of_record_run_cpu", b.fitShareCpu},
+                        {"record_critical", timingJson(b.recordCritical)},
+                        {"sine_critical", timingJson(b.sineCritical)},
+                        {"ratio_record_critical_over_sine_critical", b.criticalRatio},
+                        {"ratio_record_critical_over_sine_critical_cpu", b.criticalRatioCpu},
+                        {"record_critical_runs", b.recordCriticalRuns},
+                        {"sine_critical_runs", b.sineCriticalRuns}};
+    std::cout << jsonText(j, 2) << "\n";
+    std::fprintf(stderr, "record %s, mu %g, %d alternating runs of each pair after a warm-up:\n",
+                 record.file.c_str(), c.slab.mu, b.recordRun.runs);
+    printTiming("record run (read, filter, fit, solve)", b.recordRun, 5);
+    printTiming("sine run                             ", b.sineRun, 6);
+    std::fprintf(stderr, "  record/sine %.1f (wall), %.1f (CPU)\n", b.recordOverSine,
+                 b.recordOverSineCpu);
+    printTiming("envelope fit                         ", b.fit, 5);
+    std::fprintf(stderr, "  fit/record run %.3f (wall), %.3f (CPU)\n", b.fitShare, b.fitShareCpu);
+    printTiming("record critical search               ", b.recordCritical, 4);
+    printTiming("sine critical search                 ", b.sineCritical, 4);
+    std::fprintf(stderr, "  record/sine search %.2f (wall), %.2f (CPU); %ld and %ld runs\n",
+                 b.criticalRatio, b.criticalRatioCpu, b.recordCriticalRuns, b.sineCriticalRuns);
+    return 0;
+}
 } // namespace
 
 int runBench(const ArgList& argv) {
     std::set<std::string> flags = modelFlagNames();
-    flags.insert({"amplitudes", "frequencies", "threads", "repeats"});
+    flags.insert({"amplitudes", "frequencies", "threads", "repeats", "amplitude", "scale-factor"});
+    flags.merge(recordReadFlagNames());
+    flags.merge(searchFlagNames());
     const Args args(argv, flags, {"vector-state"});
     if (args.has("solver"))
         throw UsageError("--solver: bench always runs both solvers (exact and paper)");
@@ -104,6 +160,15 @@ int runBench(const ArgList& argv) {
     const int repeats = args.integer("repeats", 5);
     if (repeats < 1 || repeats > 1000)
         throw UsageError("--repeats " + args.text("repeats") + ": must be 1 to 1000");
+    if (args.has("record")) {
+        if (planar || args.has("vector-state"))
+            throw UsageError("--record: times the 1-DOF record path alone");
+        return runBenchRecord(args, repeats);
+    }
+    for (const std::string f : {"amplitude", "scale-factor"})
+        if (args.has(f)) throw UsageError("--" + f + " " + args.text(f) + ": needs --record FILE");
+    for (const std::string& f : searchFlagNames())
+        if (args.has(f)) throw UsageError("--" + f + " " + args.text(f) + ": needs --record FILE");
     if (planar && args.has("vector-state"))
         throw UsageError("--vector-state: times the 1-DOF exact solver, not --model planar");
     if (planar) return runBenchPlanar(args, grid, threads, repeats);

@@ -25,10 +25,9 @@ std::vector<LevelCritical> levelCriticalPga(const Slab1DCase& slab,
     std::vector<LevelCritical> out;
     for (std::size_t i = 0; i < motions.size(); ++i) {
         if (control && control->isCancelled()) break;
-        const auto motion = std::make_shared<const Accelerogram>(motions[i]);
-        const double peak = std::abs(motion->peak().value);
+        const double peak = std::abs(motions[i].peak().value);
         const RecordCriticalScale c = criticalRecordScale(
-            cancellable(recordPoint(slab, motion), control), slab.slab.mu, peak, search);
+            cancellable(recordPoint(slab, motions[i]), control), slab.slab.mu, peak, search);
         if (control && control->isCancelled()) break;
         LevelCritical l;
         l.level = static_cast<int>(i) + 1;

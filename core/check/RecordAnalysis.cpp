@@ -37,7 +37,7 @@ std::optional<EnvelopeFit> fitOrNone(const Accelerogram& motion, std::string* wh
     }
 }
 
-RecordAnalysis recordMotions(const RecordExcitation& record, const Slab1DCase& slab) {
+RecordAnalysis recordMotions(const RecordExcitation& record, const Slab1DCase& slab, bool fit) {
     RecordAnalysis a;
     a.ground = readGroundRecord(record);
     a.motion = drivingMotion(record, a.ground);
@@ -45,7 +45,10 @@ RecordAnalysis recordMotions(const RecordExcitation& record, const Slab1DCase& s
     if (const std::string e = validateRecordedMotion(a.motion, slab.tstar, a.peak); !e.empty())
         throw std::invalid_argument("excitation.record: " + e);
     a.scaleFactor = a.peak / std::abs(a.motion.peak().value);
-    a.fit = fitOrNone(a.motion, &a.fitError);
+    if (fit)
+        a.fit = fitOrNone(a.motion, &a.fitError);
+    else
+        a.fitError = "not computed: nothing asked for the envelope fit";
     a.tauRef = recordTauRef(a.fit, slab);
     return a;
 }
@@ -75,7 +78,7 @@ long runEstimate(const CriticalSearch& s, double mu) {
 RecordAnalysis analyseRecord(const RecordAnalysisInput& in, SweepControl* control) {
     if (const std::string e = validateRecordAnalysis(in); !e.empty())
         throw std::invalid_argument(e);
-    RecordAnalysis a = recordMotions(in.record, in.slab);
+    RecordAnalysis a = recordMotions(in.record, in.slab, in.fit);
     RunOptions options;
     options.recordEvents = in.events;
     auto t0 = std::chrono::steady_clock::now();
@@ -83,8 +86,7 @@ RecordAnalysis analyseRecord(const RecordAnalysisInput& in, SweepControl* contro
     a.runSeconds = secondsSince(t0);
     if (!in.critical) return a;
     t0 = std::chrono::steady_clock::now();
-    const auto motion = std::make_shared<const Accelerogram>(a.motion);
-    const PointFunction point = watchedPoint(recordPoint(in.slab, motion), control,
+    const PointFunction point = watchedPoint(recordPoint(in.slab, a.motion), control,
                                              runEstimate(in.search, in.slab.slab.mu));
     a.critical =
         criticalRecordScale(point, in.slab.slab.mu, std::abs(a.motion.peak().value), in.search);

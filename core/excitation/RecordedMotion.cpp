@@ -2,6 +2,7 @@
 #include "core/excitation/RecordedMotion.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -26,31 +27,77 @@ std::string validateRecordedMotion(const Accelerogram& record, double tstar,
     return {};
 }
 
-RecordedMotion::RecordedMotion(const Accelerogram& record, double tstar,
-                               std::optional<double> targetPeak) {
-    if (const std::string e = validateRecordedMotion(record, tstar, targetPeak); !e.empty())
+namespace {
+std::atomic<long> samplesConstructed{0};
+} // namespace
+
+long RecordSamples::constructed() {
+    return samplesConstructed.load();
+}
+
+RecordSamples::RecordSamples(const Accelerogram& record, double tstar) {
+    if (const std::string e = validateRecordedMotion(record, tstar, std::nullopt); !e.empty())
         throw std::invalid_argument(e);
     h_ = record.dt / tstar;
-    scale_ = targetPeak ? *targetPeak / std::abs(record.peak().value) : 1.0;
     a_ = record.samples;
-    for (double& x : a_)
-        x *= scale_;
     const std::size_t n = a_.size();
-    v_.assign(n, 0.0);
-    d_.assign(n, 0.0);
-    for (std::size_t k = 0; k + 1 < n; ++k) { // exact integrals of the linear piece
-        v_[k + 1] = v_[k] + h_ * (a_[k] + a_[k + 1]) / 2.0;
-        d_[k + 1] = d_[k] + v_[k] * h_ + h_ * h_ * (2.0 * a_[k] + a_[k + 1]) / 6.0;
-    }
-    slopes_.assign(n, 0.0);
-    for (std::size_t k = 0; k + 1 < n; ++k)
-        slopes_[k] = (a_[k + 1] - a_[k]) / h_;
     endTau_ = h_ * static_cast<double>(n - 1);
     inverseH_ = 1.0 / h_;
     suffixMax_.assign(n, 0.0);
     suffixMax_[n - 1] = std::abs(a_[n - 1]);
     for (std::size_t k = n - 1; k-- > 0;)
         suffixMax_[k] = std::max(suffixMax_[k + 1], std::abs(a_[k]));
+    ++samplesConstructed;
+}
+
+RecordedMotion::RecordedMotion(const Accelerogram& record, double tstar,
+                               std::optional<double> targetPeak)
+    : RecordedMotion(std::make_shared<const RecordSamples>(record, tstar), targetPeak) {
+    // A motion of its own may be shared (a planar case's vertical record is read by every
+    // worker thread): form everything now, so that the accessors never write.
+    extendTo(samples_->size());
+}
+
+RecordedMotion::RecordedMotion(std::shared_ptr<const RecordSamples> samples,
+                               std::optional<double> targetPeak)
+    : samples_(std::move(samples)), h_(samples_->step()) {
+    if (targetPeak) {
+        if (!(*targetPeak > 0.0) || !std::isfinite(*targetPeak))
+            throw std::invalid_argument("target peak " + std::to_string(*targetPeak) +
+                                        " g: must be > 0");
+        if (samples_->peak() == 0.0)
+            throw std::invalid_argument("the record is all zeros: it cannot be scaled to a peak");
+        // The record's own peak is max |a|: the same number as |record.peak().value|.
+        scale_ = *targetPeak / samples_->peak();
+    }
+    // max_k |a_k s| = s max_k |a_k| exactly (rounding is monotone and symmetric), so the bounds
+    // and the peak come from the shared suffix maxima times the scale.
+}
+
+// The same expressions, in the same order, as the motion formed all at once: a_k s, then the
+// exact integrals of each linear piece.
+void RecordedMotion::extendTo(std::size_t count) const {
+    const std::size_t n = samples_->size();
+    count = std::min(count, n);
+    if (count <= built_) return;
+    if (pieces_.empty()) pieces_.resize(n);
+    for (std::size_t k = built_; k < count; ++k) {
+        Piece& p = pieces_[k];
+        p.a = samples_->raw(k) * scale_;
+        if (k == 0) continue;
+        Piece& q = pieces_[k - 1];
+        p.v = q.v + h_ * (q.a + p.a) / 2.0;
+        p.d = q.d + q.v * h_ + h_ * h_ * (2.0 * q.a + p.a) / 6.0;
+        q.slope = (p.a - q.a) / h_;
+    }
+    built_ = count;
+}
+
+std::vector<double> RecordedMotion::samples() const {
+    std::vector<double> out(samples_->size());
+    for (std::size_t k = 0; k < out.size(); ++k)
+        out[k] = piece(k).a;
+    return out;
 }
 
 std::size_t RecordedMotion::interval(double tau) const {
@@ -58,8 +105,8 @@ std::size_t RecordedMotion::interval(double tau) const {
     // of a planar run with a vertical record); near a knot, where the product's rounding could
     // land on the other side, by the quotient itself.
     if (!(tau > 0.0)) return 0;
-    const std::size_t last = a_.size() - 2;
-    const double q = tau * inverseH_;
+    const std::size_t last = samples_->size() - 2;
+    const double q = tau * samples_->inverseStep();
     if (!(q < static_cast<double>(last) + 1.0)) return last; // beyond the last knot but one
     auto k = static_cast<std::size_t>(q);
     const double frac = q - static_cast<double>(k), guard = 1e-9 * (1.0 + q);
@@ -73,7 +120,8 @@ std::size_t RecordedMotion::interval(double tau) const {
 double RecordedMotion::accel(double tau) const {
     if (tau < 0.0 || tau > endTau()) return 0.0;
     const std::size_t k = interval(tau);
-    return a_[k] + slope(k) * (tau - h_ * static_cast<double>(k));
+    const Piece& p = piece(k);
+    return p.a + p.slope * (tau - h_ * static_cast<double>(k));
 }
 
 double RecordedMotion::accelSlope(double tau) const {
@@ -83,18 +131,23 @@ double RecordedMotion::accelSlope(double tau) const {
 
 double RecordedMotion::firstIntegral(double tau) const {
     if (tau <= 0.0) return 0.0;
-    if (tau >= endTau()) return v_.back();
+    if (tau >= endTau()) return piece(samples_->size() - 1).v;
     const std::size_t k = interval(tau);
+    const Piece& p = piece(k);
     const double u = tau - h_ * static_cast<double>(k);
-    return v_[k] + u * (a_[k] + 0.5 * slope(k) * u);
+    return p.v + u * (p.a + 0.5 * p.slope * u);
 }
 
 double RecordedMotion::secondIntegral(double tau) const {
     if (tau <= 0.0) return 0.0;
-    if (tau >= endTau()) return d_.back() + v_.back() * (tau - endTau());
+    if (tau >= endTau()) {
+        const Piece& last = piece(samples_->size() - 1);
+        return last.d + last.v * (tau - endTau());
+    }
     const std::size_t k = interval(tau);
+    const Piece& p = piece(k);
     const double u = tau - h_ * static_cast<double>(k);
-    return d_[k] + u * (v_[k] + u * (a_[k] / 2.0 + slope(k) * u / 6.0));
+    return p.d + u * (p.v + u * (p.a / 2.0 + p.slope * u / 6.0));
 }
 
 // Inside one sample interval the local polynomial avoids the cancellation of the prefix sums.
@@ -134,11 +187,12 @@ Crossings RecordedMotion::crossings(double level, double lo, double hi) const {
         throw std::logic_error(
             "RecordedMotion::crossings: segment spans more than one sample interval");
     // At a sample time use the sample itself: a level touched at a sample is no crossing inside.
+    const double a0 = piece(k).a, a1 = pieces_[k + 1].a; // piece(k) formed k + 1 too
     const auto at = [&](double tau) {
         const double u = (tau - t0) / h_;
-        if (std::abs(u) <= 1e-12) return a_[k];
-        if (std::abs(u - 1.0) <= 1e-12) return a_[k + 1];
-        return a_[k] + (a_[k + 1] - a_[k]) * u;
+        if (std::abs(u) <= 1e-12) return a0;
+        if (std::abs(u - 1.0) <= 1e-12) return a1;
+        return a0 + (a1 - a0) * u;
     };
     const double fLo = at(lo) - level;
     const double fHi = at(hi) - level;
@@ -151,17 +205,17 @@ Crossings RecordedMotion::crossings(double level, double lo, double hi) const {
 
 double RecordedMotion::boundAfter(double tau) const {
     if (tau > endTau()) return 0.0;
-    return suffixMax_[interval(tau)];
+    return samples_->suffixMax(interval(tau)) * scale_;
 }
 
 double RecordedMotion::boundOn(double lo, double hi) const {
     if (lo > endTau() || hi < 0.0) return 0.0;
     const std::size_t kLo = interval(lo);
-    const std::size_t kHi = std::min(interval(hi) + 1, a_.size() - 1);
-    if (kHi - kLo > 16) return suffixMax_[kLo]; // a cheap bound is enough for long spans
+    const std::size_t kHi = std::min(interval(hi) + 1, samples_->size() - 1);
+    if (kHi - kLo > 16) return samples_->suffixMax(kLo) * scale_; // a cheap bound for long spans
     double m = 0.0;
     for (std::size_t k = kLo; k <= kHi; ++k)
-        m = std::max(m, std::abs(a_[k]));
+        m = std::max(m, std::abs(samples_->raw(k) * scale_));
     return m;
 }
 

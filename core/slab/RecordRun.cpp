@@ -8,7 +8,14 @@ namespace kinstab {
 
 SlabResult runRecord1D(const Slab1DCase& c, const Accelerogram& motion, double peak,
                        const RunOptions& options) {
-    return solveExact(RecordedMotion(motion, c.tstar, peak), c.slab, options);
+    // One run's own view: formed only as far as the run reaches.
+    return runRecord1D(c, std::make_shared<const RecordSamples>(motion, c.tstar), peak, options);
+}
+
+SlabResult runRecord1D(const Slab1DCase& c, // its tstar built the samples
+                       std::shared_ptr<const RecordSamples> samples, double peak,
+                       const RunOptions& options) {
+    return solveExact(RecordedMotion(std::move(samples), peak), c.slab, options);
 }
 
 } // namespace kinstab

@@ -7,10 +7,18 @@
 #include "core/records/Accelerogram.h"
 #include "core/slab/Slab1DCase.h"
 
+#include <memory>
+
 namespace kinstab {
+
+class RecordSamples;
 
 // peak: the peak |a| (g) the motion is scaled to. Throws std::invalid_argument on a bad motion.
 SlabResult runRecord1D(const Slab1DCase& c, const Accelerogram& motion, double peak,
                        const RunOptions& options = {});
+// The same run on samples built once for c.tstar (core/excitation/RecordedMotion.h): what every
+// run of a critical search uses, bit for bit the run above.
+SlabResult runRecord1D(const Slab1DCase& c, std::shared_ptr<const RecordSamples> samples,
+                       double peak, const RunOptions& options = {});
 
 } // namespace kinstab

@@ -1,23 +1,25 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/sweep/CriticalRecordScale.h"
 
+#include "core/excitation/RecordedMotion.h"
 #include "core/slab/RecordRun.h"
 
 #include <cmath>
 
 namespace kinstab {
 
-PointFunction recordPoint(const Slab1DCase& c, std::shared_ptr<const Accelerogram> motion) {
-    return [c, motion](double peak, double /*frequency: a record has none*/) {
-        const SlabResult r = runRecord1D(c, *motion, peak);
+PointFunction recordPoint(const Slab1DCase& c, const Accelerogram& motion) {
+    // The samples once for the whole search; each run scales its own view of them.
+    const auto samples = std::make_shared<const RecordSamples>(motion, c.tstar);
+    return [c, samples](double peak, double /*frequency: a record has none*/) {
+        const SlabResult r = runRecord1D(c, samples, peak);
         return PointResult{r.outcome, r.tauC};
     };
 }
 
 RecordCriticalScale criticalRecordScale(const Slab1DCase& c, const Accelerogram& motion,
                                         const CriticalSearch& search) {
-    const auto shared = std::make_shared<const Accelerogram>(motion);
-    return criticalRecordScale(recordPoint(c, shared), c.slab.mu, std::abs(motion.peak().value),
+    return criticalRecordScale(recordPoint(c, motion), c.slab.mu, std::abs(motion.peak().value),
                                search);
 }
 

@@ -21,8 +21,9 @@ struct RecordCriticalScale {
 };
 
 // The record run as a point function: amplitude = the peak (g) of the scaled motion; the
-// frequency is ignored (a record has none).
-PointFunction recordPoint(const Slab1DCase& c, std::shared_ptr<const Accelerogram> motion);
+// frequency is ignored (a record has none). The motion's samples are built here, once, and shared
+// by every run (throws std::invalid_argument when the motion cannot drive the slab).
+PointFunction recordPoint(const Slab1DCase& c, const Accelerogram& motion);
 
 RecordCriticalScale criticalRecordScale(const Slab1DCase& c, const Accelerogram& motion,
                                         const CriticalSearch& search = {});

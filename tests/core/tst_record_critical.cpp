@@ -17,6 +17,8 @@
 #include <QtTest>
 
 #include <cmath>
+#include <cstring>
+#include <memory>
 
 using namespace kinstab;
 
@@ -35,6 +37,10 @@ std::optional<double> bruteForce(const Accelerogram& m, const Slab1DCase& c, dou
         if (p > to) return std::nullopt;
         if (collapsesAt(m, c, p)) return p;
     }
+}
+
+bool sameBits(double x, double y) {
+    return std::memcmp(&x, &y, sizeof x) == 0;
 }
 
 } // namespace
@@ -85,6 +91,42 @@ private slots:
         // Below mu nothing slips, so the scan runs from mu = 0.6 to 0.65 in 0.01 steps: 6 runs
         // (0.6, 0.61, ..., 0.65), though (0.65 - 0.6) / 0.01 rounds to 5.000000000000004.
         QCOMPARE(r.runs, 6L);
+    }
+    // Issue 34: a search builds the record's samples once, and each of its runs (a scaled view
+    // formed lazily as far as the run reaches) gives the bits of a run on a motion formed whole.
+    void searchBuildsTheMotionOnceAndRunsAsBefore() {
+        const Accelerogram m = motionOf("RSN77_SFERN_PUL164.AT2", 1.0);
+        Slab1DCase c;
+        c.slab.mu = 0.6;
+        const long before = RecordSamples::constructed();
+        const RecordCriticalScale r =
+            criticalRecordScale(c, m, CriticalSearch{0.0, 5.0, 0.01, 1e-6});
+        QCOMPARE(RecordSamples::constructed() - before, 1L);
+        QVERIFY(r.runs > 10);
+        QVERIFY(r.peak);
+
+        const auto samples = std::make_shared<const RecordSamples>(m, c.tstar);
+        const double unit = std::abs(m.peak().value);
+        for (const double peak : {0.61, 0.8, *r.peak, *r.peak - 1e-6, 1.3, 4.9}) {
+            const SlabResult whole = solveExact(RecordedMotion(m, c.tstar, peak), c.slab);
+            const SlabResult view = runRecord1D(c, samples, peak);
+            QCOMPARE(view.outcome, whole.outcome);
+            QVERIFY(sameBits(view.tauC, whole.tauC)); // QCOMPARE of doubles is fuzzy
+            QVERIFY(sameBits(view.tauEnd, whole.tauEnd));
+            QVERIFY(sameBits(view.maxAbsDelta, whole.maxAbsDelta));
+            QVERIFY(sameBits(view.residualDelta, whole.residualDelta));
+            QCOMPARE(view.slipIntervals, whole.slipIntervals);
+            // The view's samples are the old motion's: each sample times peak / unscaled peak.
+            const RecordedMotion v(samples, peak);
+            const std::vector<double> a = v.samples();
+            const double s = peak / unit;
+            for (std::size_t k = 0; k < a.size(); ++k)
+                QVERIFY(sameBits(a[k], m.samples[k] * s));
+            double maxAbs = 0.0;
+            for (const double x : a)
+                maxAbs = std::max(maxAbs, std::abs(x));
+            QVERIFY(sameBits(v.peak(), maxAbs));
+        }
     }
     void verdictsAgainstTheCodes() {
         // Two ratios either side of a critical peak of 0.8 g: the sine's rule (ch. V).
