@@ -58,6 +58,11 @@ NumericsView::NumericsView(QWidget* parent) : QWidget(parent), m_job(this) {
     split->addWidget(m_chart);
     split->addWidget(m_table);
     split->setStretchFactor(0, 3);
+    // A readable plot (title, legend, log axes) and a few table lines whatever the splitter
+    // was given: after a run the table's text pushed the chart down to 30 px at 1280 × 800.
+    m_chart->setMinimumHeight(240);
+    m_table->setMinimumHeight(4 * m_table->fontMetrics().lineSpacing() + 12);
+    split->setChildrenCollapsible(false);
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(bar);

@@ -179,7 +179,9 @@ void paintSlab(QPainter& p, const Frame2D& f, const SlabScene& s) {
         p.drawPath(slabPiece(length, gap, side));
     p.restore();
     p.setBrush(Qt::NoBrush);
-    labelBox(p, f.at(kSpan / 2, kSlabT + 0.55), QStringLiteral("span not to scale"),
+    // Under the slab, between the walls, where nothing else is drawn: above it, where it used
+    // to be, the bearing dimensions' labels ran into it once the view was narrow.
+    labelBox(p, f.at(kSpan / 2, -0.45), QStringLiteral("span not to scale"),
              QColor(0x66, 0x66, 0x66));
     if (fr.direction != 0 && fr.fallDrop == 0.0 && fr.state != DisplayState::Collapse) {
         const QPointF from = f.at(kSpan / 2 + shift - 0.9 * fr.direction, kSlabT / 2);
