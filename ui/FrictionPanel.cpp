@@ -71,7 +71,9 @@ QChartView* makeChartView(const QString& title) {
     chart->legend()->setAlignment(Qt::AlignRight);
     auto* view = new QChartView(chart);
     view->setRenderHint(QPainter::Antialiasing);
-    view->setMinimumSize(420, 340);
+    // Two side by side fit the tab at 1280 × 800 (about 830 px): at 420 px each the tab
+    // scrolled sideways and "Use this μ" was cut at the right.
+    view->setMinimumSize(360, 340);
     return view;
 }
 

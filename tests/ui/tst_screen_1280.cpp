@@ -10,6 +10,7 @@
 
 #include "ui/ExampleProjects.h"
 #include "ui/MainWindow.h"
+#include "ui/NumericsView.h"
 #include "ui/StudyTab.h"
 #include "ui/teaching/PresentationMode.h"
 #include "ui/teaching/TeachingView.h"
@@ -23,6 +24,8 @@
 #include <QJsonObject>
 #include <QMenu>
 #include <QScreen>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -171,6 +174,34 @@ private slots:
         showTab(*w, tab);
         QWidget* page = currentTab(*w);
         QStringList problems;
+        if (tab == QLatin1String("Numerics")) {
+            auto* numerics = qobject_cast<NumericsView*>(page); // the tab itself
+            QVERIFY(numerics);
+            // A study's worth of lines (six cases, three solvers, three settings each): the
+            // plot itself, inside title, legend and axes, keeps a readable height.
+            WorkPrecisionStudy study;
+            for (const char* c : {"paper-1Hz", "grazing", "chattering", "high-f", "long", "x"})
+                for (const char* s : {"paper", "exact", "regularized"})
+                    for (int k = 1; k <= 3; ++k) {
+                        WorkPrecisionRow r;
+                        r.caseId = c;
+                        r.solver = s;
+                        r.error = std::pow(10.0, -2.0 * k);
+                        r.timing.minSeconds = 1e-4 * k;
+                        study.rows.push_back(r);
+                    }
+            numerics->showStudy(study);
+            QTest::qWait(100);
+            const QRectF plot = page->findChild<QChartView*>()->chart()->plotArea();
+            if (plot.height() < 120)
+                problems << QStringLiteral("the work-precision plot %1 px tall").arg(plot.height());
+        }
+        // Scrolling down is fine where the content is taller than the tab; sideways it is not.
+        if (auto* scroll = qobject_cast<QScrollArea*>(page);
+            scroll && scroll->horizontalScrollBar()->isVisible())
+            problems << QStringLiteral("the tab scrolls sideways: %1 px wide content in %2 px")
+                            .arg(scroll->widget()->minimumSizeHint().width())
+                            .arg(scroll->viewport()->width());
         for (QChartView* v : page->findChildren<QChartView*>())
             if (v->isVisible() && v->height() < 200)
                 problems << QStringLiteral("a chart %1 px tall").arg(v->height());
@@ -187,6 +218,11 @@ private slots:
                                 .arg(b->text())
                                 .arg(b->width())
                                 .arg(b->height());
+            else if (b->isVisible() && !shownRect(b).isEmpty() && shownRect(b).width() < b->width())
+                problems << QStringLiteral("\"%1\" cut to %2 of %3 px")
+                                .arg(b->text())
+                                .arg(shownRect(b).width())
+                                .arg(b->width());
         QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QStringLiteral("; "))));
     }
 
