@@ -71,7 +71,9 @@ QChartView* makeChartView(const QString& title) {
     chart->legend()->setAlignment(Qt::AlignRight);
     auto* view = new QChartView(chart);
     view->setRenderHint(QPainter::Antialiasing);
-    view->setMinimumSize(420, 340);
+    // Two side by side fit the tab at 1280 × 800 (about 830 px): at 420 px each the tab
+    // scrolled sideways and "Use this μ" was cut at the right.
+    view->setMinimumSize(360, 340);
     return view;
 }
 
@@ -107,8 +109,12 @@ void FrictionPanel::buildUi() {
     controls->addWidget(new QLabel(tr("A_b")));
     controls->addWidget(area_);
     controls->addWidget(slopeKind_);
-    controls->addWidget(muLabel_, 1);
-    controls->addWidget(useMu_);
+    controls->addStretch(1);
+    // The fitted μ and its button on a line of their own: beside the controls above they made
+    // the row wider than the tab at 1280 × 800 and the button was cut at the right.
+    auto* muRow = new QHBoxLayout;
+    muRow->addWidget(muLabel_, 1);
+    muRow->addWidget(useMu_);
 
     curves_ = makeChartView(tr("Shear force after fracture"));
     coulomb_ = makeChartView(tr("Asymptotic friction law"));
@@ -131,9 +137,16 @@ void FrictionPanel::buildUi() {
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 2);
     split->setSizes({560, 300});
+    // The header and four rows at least: the splitter squeezed the table to its header when
+    // the tab was short; the scroll area around the tab scrolls instead.
+    table_->setMinimumHeight(table_->horizontalHeader()->sizeHint().height() +
+                             4 * table_->verticalHeader()->defaultSectionSize() +
+                             2 * table_->frameWidth());
+    split->setChildrenCollapsible(false);
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(controls);
+    layout->addLayout(muRow);
     layout->addWidget(split, 1);
     layout->addWidget(status_);
 

@@ -25,10 +25,12 @@
 #include "ui/InputHistory.h"
 #include "ui/ModelPanel.h"
 #include "ui/PlanarHistoryChart.h"
+#include "ui/ProjectFolder.h"
 #include "ui/ProjectInfoPanel.h"
 #include "ui/RecentFiles.h"
 #include "ui/ReportExport.h"
 #include "ui/RunProgress.h"
+#include "ui/ScreenFit.h"
 #include "ui/SlabPanel.h"
 #include "ui/SliceChart.h"
 #include "ui/StaleFrame.h"
@@ -40,6 +42,7 @@
 
 #include <QAction>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -52,6 +55,7 @@
 #include <QStackedWidget>
 #include <QStatusBar>
 #include <QTabWidget>
+#include <QTimer>
 #include <QToolBar>
 
 #include <cmath>
@@ -157,7 +161,8 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_surface, &SurfaceView::pointSelected, this, &MainWindow::pickPoint);
     // "Use this mu" from the friction calibration goes to the slab's friction field.
     connect(m_friction, &FrictionPanel::useMu, m_slabPanel, &SlabPanel::useMu);
-    resize(1280, 800);
+    // 1280 × 800, or less on a smaller screen; the frame is added at the first show.
+    resize(sizeInside({1280, 800}, screen()->availableGeometry(), {}));
     arrangeDocks();
     restoreSettings();
     m_records->preview()->setPlanarBase(m_modelPanel->isPlanar());
@@ -185,7 +190,13 @@ void MainWindow::buildFileMenu() {
     connect(m_recent, &RecentFiles::openRequested, this, openAsked);
     file->addMenu(m_recent);
     file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
-    file->addAction(tr("Save &as…"), QKeySequence::SaveAs, this, &MainWindow::saveAsDialog);
+    QAction* saveAs = file->addAction(tr("Save &as…"), this, &MainWindow::saveAsDialog);
+    // QKeySequence::SaveAs is empty on X11 without GNOME or KDE (and on Windows): Ctrl+Shift+S,
+    // what those desktops bind, everywhere the platform gives none.
+    saveAs->setShortcuts(QKeySequence::keyBindings(QKeySequence::SaveAs).isEmpty()
+                             ? QList<QKeySequence>{QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)}
+                             : QKeySequence::keyBindings(QKeySequence::SaveAs));
+    saveAs->setObjectName(QStringLiteral("saveAsAction"));
     file->addAction(tr("Project &information…"), this, [this] {
         // Engineer, client, revisions: kept in the project, printed on the report's title block.
         if (ProjectInfoPanel::editInDialog(this, m_project.info))
@@ -205,7 +216,17 @@ void MainWindow::buildFileMenu() {
     QAction* report = file->addAction(tr("Export &report (PDF)…"), this, [this] {
         // The same document as `kinstab-cli report` (report/ReportWriter.h).
         report::exportReportDialog(this, project(), m_path, [this](const QString& out) {
-            statusBar()->showMessage(tr("Report written to %1").arg(out), 5000);
+            // In the status line, where it stays until the next message (a 5 s flash was easy
+            // to miss), and as a notice that does not block the window.
+            const QString text = tr("Report written to %1").arg(QDir::toNativeSeparators(out));
+            statusBar()->clearMessage();
+            m_status->setText(text);
+            auto* notice = new QMessageBox(QMessageBox::Information, tr("Export design report"),
+                                           text, QMessageBox::Ok, this);
+            notice->setObjectName(QStringLiteral("reportWrittenNotice"));
+            notice->setAttribute(Qt::WA_DeleteOnClose);
+            notice->setModal(false);
+            notice->show();
         });
     });
     report->setShortcut(Qt::CTRL | Qt::Key_E);
@@ -492,9 +513,9 @@ void MainWindow::exportSurface() {
     const SweepResult& sweep = m_results.surface()->sweep; // with the inputs it was run with
     const Slab1DCase& sweepCase = m_results.surface()->slabCase;
     const std::optional<PlanarCase>& sweepPlanar = m_results.surface()->planar;
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export surface"), QStringLiteral("surface.csv"),
-                                     tr("CSV (*.csv);;JSON (*.json)"));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export surface"), inProjectFolder(m_path, QStringLiteral("surface.csv")),
+        tr("CSV (*.csv);;JSON (*.json)"));
     if (path.isEmpty()) return;
     std::string text;
     try { // the writers refuse a non-finite number where one is promised
@@ -519,9 +540,9 @@ void MainWindow::exportSurface() {
 }
 
 void MainWindow::exportChart(QChartView* view, const QString& name) {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export chart"), name + QStringLiteral(".svg"),
-                                     tr("SVG vector (*.svg);;PNG image (*.png)"));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export chart"), inProjectFolder(m_path, name + QStringLiteral(".svg")),
+        tr("SVG vector (*.svg);;PNG image (*.png)"));
     if (path.isEmpty()) return;
     const QString error = ui::exportChart(view, path);
     if (!error.isEmpty())
@@ -541,6 +562,20 @@ QImage MainWindow::screenshot() {
         p.drawImage(target, graph);
     }
     return img;
+}
+
+void MainWindow::showEvent(QShowEvent* e) {
+    QMainWindow::showEvent(e);
+    if (m_fittedSize.isValid()) return; // only the first show: later the user placed it
+    fitToScreen(this, size());
+    m_fittedSize = size();
+    // On X11 the window manager frames the window after it is mapped, so its title bar is
+    // known only then: fit again, unless someone chose a size in between.
+    QTimer::singleShot(400, this, [this] {
+        if (size() != m_fittedSize) return;
+        fitToScreen(this, size());
+        m_fittedSize = size();
+    });
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {

@@ -130,6 +130,8 @@ signals:
 
 protected:
     void closeEvent(QCloseEvent* e) override;
+    // The first show fits the window, frame included, into the screen (ui/ScreenFit.h).
+    void showEvent(QShowEvent* e) override;
 
 private:
     void buildActions();
@@ -220,6 +222,7 @@ private:
     StaleFrame* m_criticalFrame = nullptr;
     StaleFrame* m_verdictFrame = nullptr;
     int m_selA = -1, m_selF = -1;
+    QSize m_fittedSize; // the size the first show fitted (invalid before it)
 };
 
 } // namespace kinstab::ui

@@ -13,6 +13,7 @@
 #include "ui/InputHistory.h"
 #include "ui/MainWindow.h"
 #include "ui/ModelPanel.h"
+#include "ui/ProjectFolder.h"
 #include "ui/RecentFiles.h"
 #include "ui/RecordsTab.h"
 #include "ui/SlabPanel.h"
@@ -158,7 +159,7 @@ bool MainWindow::openProject(const QString& path, bool quiet) {
 void MainWindow::openDialog() {
     if (askToSave() == Unsaved::Cancel) return;
     const QString path =
-        QFileDialog::getOpenFileName(this, tr("Open project"), QFileInfo(m_path).path(),
+        QFileDialog::getOpenFileName(this, tr("Open project"), inProjectFolder(m_path),
                                      tr("kinstab projects (*.json);;All files (*)"));
     if (!path.isEmpty()) openProject(path);
 }
@@ -192,7 +193,8 @@ bool MainWindow::save() {
 
 bool MainWindow::saveAsDialog() {
     QString path = QFileDialog::getSaveFileName(
-        this, tr("Save project"), m_path.isEmpty() ? QStringLiteral("project.json") : m_path,
+        this, tr("Save project"),
+        m_path.isEmpty() ? inProjectFolder(m_path, QStringLiteral("project.json")) : m_path,
         tr("kinstab projects (*.json)"));
     if (path.isEmpty()) return false;
     if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");

@@ -3,6 +3,7 @@
 
 #include <QCheckBox>
 #include <QFontDatabase>
+#include <QGraphicsLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPlainTextEdit>
@@ -12,6 +13,7 @@
 #include <QVBoxLayout>
 #include <QtCharts/QChart>
 #include <QtCharts/QChartView>
+#include <QtCharts/QLegendMarker>
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QLogValueAxis>
 #include <algorithm>
@@ -45,8 +47,13 @@ NumericsView::NumericsView(QWidget* parent) : QWidget(parent), m_job(this) {
     bar->addWidget(m_progress, 1);
 
     auto* chart = new QChart;
-    chart->setTitle(tr("Work-precision: error against run time (log-log)"));
+    chart->setTitle(tr("Work-precision: error against run time (log-log), a line per case"));
     chart->setAnimationOptions(QChart::NoAnimation);
+    // The legend (three solvers) beside the plot and no frame around the chart: at 1280 × 800
+    // the tab is about 400 px tall, and every pixel of chrome comes off the plot.
+    chart->legend()->setAlignment(Qt::AlignRight);
+    chart->layout()->setContentsMargins(0, 0, 0, 0);
+    chart->setBackgroundRoundness(0);
     m_chart = new QChartView(chart, this);
     m_chart->setRenderHint(QPainter::Antialiasing);
     m_table = new QPlainTextEdit(this);
@@ -58,6 +65,12 @@ NumericsView::NumericsView(QWidget* parent) : QWidget(parent), m_job(this) {
     split->addWidget(m_chart);
     split->addWidget(m_table);
     split->setStretchFactor(0, 3);
+    // A readable plot (title, legend, log axes) and a few table lines whatever the splitter
+    // was given: after a run the table's text pushed the chart down to 30 px at 1280 × 800.
+    m_chart->setMinimumHeight(240);
+    m_table->setMinimumHeight(4 * m_table->fontMetrics().lineSpacing() + 12);
+    split->setChildrenCollapsible(false);
+    split->setSizes({300, 100}); // in proportion: a quarter for the table
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(bar);
@@ -142,14 +155,28 @@ void NumericsView::showStudy(const WorkPrecisionStudy& study) {
     chart->addAxis(x, Qt::AlignBottom);
     chart->addAxis(y, Qt::AlignLeft);
     m_curves = 0;
+    // One line per case and solver, coloured by solver, with one legend entry per solver: a
+    // legend entry per line (15 and more) took all but 30 px of the chart at 1280 × 800. The
+    // table below names every case.
+    const QColor palette[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28),
+                              QColor(0x2c, 0xa0, 0x2c), QColor(0x94, 0x67, 0xbd),
+                              QColor(0xff, 0x7f, 0x0e)};
+    std::map<std::string, QColor> solverColour;
     for (auto& [name, points] : curves) {
+        const std::string solver = name.substr(name.rfind(" / ") + 3);
+        const bool firstOfSolver = !solverColour.count(solver);
+        if (firstOfSolver) solverColour[solver] = palette[solverColour.size() % std::size(palette)];
         auto* series = new QLineSeries;
-        series->setName(QString::fromStdString(name));
+        series->setName(QString::fromStdString(solver));
+        series->setColor(solverColour[solver]);
         series->setPointsVisible(true);
         series->replace(points);
         chart->addSeries(series);
         series->attachAxis(x);
         series->attachAxis(y);
+        if (!firstOfSolver)
+            for (QLegendMarker* m : chart->legend()->markers(series))
+                m->setVisible(false);
         ++m_curves;
     }
     m_table->setPlainText(QString::fromStdString(workPrecisionText(study)));

@@ -4,6 +4,7 @@
 #include "core/io/AtomicFile.h"
 
 #include "report/ReportWriter.h"
+#include "ui/ProjectFolder.h"
 #include "ui/ReportSectionsDialog.h"
 
 #include <QFile>
@@ -59,8 +60,9 @@ void exportReportDialog(QWidget* parent, const Project& project, const QString& 
                         const std::function<void(const QString&)>& written) {
     SectionSet sections = defaultSections();
     if (!ReportSectionsDialog::choose(parent, sections)) return;
-    const QString base = projectPath.isEmpty() ? QStringLiteral("report.pdf")
-                                               : QFileInfo(projectPath).completeBaseName() + ".pdf";
+    const QString base = inProjectFolder(
+        projectPath, projectPath.isEmpty() ? QStringLiteral("report.pdf")
+                                           : QFileInfo(projectPath).completeBaseName() + ".pdf");
     const QString out = QFileDialog::getSaveFileName(parent, QObject::tr("Export design report"),
                                                      base, QObject::tr("PDF (*.pdf)"));
     if (out.isEmpty()) return;

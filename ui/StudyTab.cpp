@@ -146,9 +146,15 @@ StudyTab::StudyTab(QWidget* parent)
         {tr("Record"), tr("μ"), tr("t* s"), tr("Driving motion"), tr("Critical IM g"), tr("Runs")});
     m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    // Four rows at least under the header (one was visible at 1920 × 1080): the tab's scroll
+    // area scrolls rather than the splitter squeezing the table.
+    m_table->setMinimumHeight(m_table->horizontalHeader()->sizeHint().height() +
+                              4 * m_table->verticalHeader()->defaultSectionSize() +
+                              2 * m_table->frameWidth());
     auto* split = new QSplitter(Qt::Vertical, this);
     split->addWidget(m_chart);
     split->addWidget(m_table);
+    split->setChildrenCollapsible(false);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(fileRow);
     layout->addLayout(form);

@@ -141,7 +141,9 @@ private slots:
         QTest::addColumn<bool>("record");
         QTest::newRow("paper 16-story") << 0 << "slab1d" << false;
         QTest::newRow("Pacoima Dam record") << 1 << "slab1d" << true;
-        QTest::newRow("planar") << 2 << "planar" << false;
+        QTest::newRow("floors") << 2 << "slab1d" << true;
+        QTest::newRow("study") << 3 << "slab1d" << false;
+        QTest::newRow("planar") << 4 << "planar" << false;
     }
     void openExamples() {
         // Copied out of the resources with the records they name, then opened as a user would:

@@ -59,7 +59,14 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
         tr("Planar: 2 wall length / wall width; collapse along the walls at |δy| > Θ (paper: 20)"),
         &TeachingParams::theta);
     tstarLabel_ = new QLabel(this);
+    tstarLabel_->setWordWrap(true);
     grid->addWidget(tstarLabel_, 11, 0, 1, 3);
+    // The panel has a fixed width (TeachingView's side column): combo boxes as wide as their
+    // longest entry made the grid wider than it, and the value column on the right was cut.
+    for (QComboBox* c : {model_, envelope_, scale_}) {
+        c->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        c->setMinimumContentsLength(10);
+    }
     grid->setColumnStretch(1, 1);
     setParams(TeachingParams{});
     connect(model_, &QComboBox::currentIndexChanged, this, &ParameterPanel::changed);
@@ -80,6 +87,11 @@ ParameterPanel::Row ParameterPanel::addRow(QGridLayout* grid, int quantity, cons
     r.spin->setSingleStep(step);
     r.spin->setSuffix(suffix);
     r.spin->setKeyboardTracking(false);
+    // Named for tests/ui/tst_screen_1280: the value beside each slider must show in full.
+    static const char* const names[] = {"aValue", "fValue", "muValue", "dValue"};
+    r.spin->setObjectName(QString::fromLatin1(names[quantity]));
+    // As wide as its widest value with the unit, at any text size; the slider gives way.
+    r.spin->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
     grid->addWidget(new QLabel(label, this), row, 0);
     grid->addWidget(r.slider, row, 1);
     grid->addWidget(r.spin, row, 2);

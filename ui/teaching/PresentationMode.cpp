@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/teaching/PresentationMode.h"
 
+#include "ui/ScreenFit.h"
 #include "ui/teaching/TeachingView.h"
 
 #include <QAction>
@@ -77,6 +78,9 @@ void PresentationMode::leave() {
     m_hidden.clear();
     m_window->restoreState(m_dockState);
     m_window->restoreGeometry(m_geometry);
+    // restoreGeometry keeps room for a title bar of the style's height above the window, which
+    // on a screen just the window's height pushed its bottom (the status bar) off the screen.
+    fitToScreen(m_window, m_window->size());
     m_tabs->setCurrentIndex(m_tabBefore);
     emit activeChanged(false);
 }

@@ -15,7 +15,9 @@ public:
     void setScene(const SlabScene& scene);
     const SlabScene& scene() const { return scene_; }
     QSize sizeHint() const override { return {760, 360}; }
-    QSize minimumSizeHint() const override { return {360, 200}; }
+    // 180 px still draws the header, the walls and the ruler; with the traces and the play bar
+    // it fits the Teaching tab at 1280 × 800 (about 400 px tall).
+    QSize minimumSizeHint() const override { return {360, 180}; }
 
 protected:
     void paintEvent(QPaintEvent*) override;

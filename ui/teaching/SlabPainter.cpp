@@ -8,6 +8,7 @@
 #include "ui/teaching/TopViewPainter.h"
 #include "ui/teaching/TracePainter.h"
 
+#include <QFontMetricsF>
 #include <QPainter>
 #include <QPainterPath>
 
@@ -179,7 +180,9 @@ void paintSlab(QPainter& p, const Frame2D& f, const SlabScene& s) {
         p.drawPath(slabPiece(length, gap, side));
     p.restore();
     p.setBrush(Qt::NoBrush);
-    labelBox(p, f.at(kSpan / 2, kSlabT + 0.55), QStringLiteral("span not to scale"),
+    // Under the slab, between the walls, where nothing else is drawn: above it, where it used
+    // to be, the bearing dimensions' labels ran into it once the view was narrow.
+    labelBox(p, f.at(kSpan / 2, -0.45), QStringLiteral("span not to scale"),
              QColor(0x66, 0x66, 0x66));
     if (fr.direction != 0 && fr.fallDrop == 0.0 && fr.state != DisplayState::Collapse) {
         const QPointF from = f.at(kSpan / 2 + shift - 0.9 * fr.direction, kSlabT / 2);
@@ -220,6 +223,16 @@ void paintWallWidth(QPainter& p, const Frame2D& f, const SlabScene& s) {
              QColor(0x22, 0x22, 0x22));
 }
 
+// font at fontPx, or smaller (down to 55 %) so that text fits width: in presentation mode at
+// 1280 × 800 the header's second line ran past the scene and "|a| vs μ" was cut off.
+QFont fitted(QFont font, double fontPx, const QString& text, double width) {
+    font.setPixelSize(static_cast<int>(fontPx));
+    const double needed = QFontMetricsF(font).horizontalAdvance(text);
+    if (needed > width && width > 0)
+        font.setPixelSize(static_cast<int>(fontPx * std::max(0.55, width / needed)));
+    return font;
+}
+
 void paintHeader(QPainter& p, const QRectF& area, const SlabScene& s, double fontPx) {
     const TeachingFrame& fr = s.frame;
     QFont big = p.font();
@@ -236,26 +249,26 @@ void paintHeader(QPainter& p, const QRectF& area, const SlabScene& s, double fon
         state += fr.direction > 0 ? QStringLiteral(" — off the left wall")
                                   : QStringLiteral(" — off the right wall");
     p.drawText(line1, Qt::AlignLeft | Qt::AlignVCenter, state);
+    const double stateW = p.fontMetrics().horizontalAdvance(state);
     QFont normal = p.font();
-    normal.setPixelSize(static_cast<int>(fontPx));
     normal.setBold(false);
-    p.setFont(normal);
     p.setPen(QColor(0x22, 0x22, 0x22));
-    p.drawText(line1, Qt::AlignRight | Qt::AlignVCenter,
-               QStringLiteral("τ = %1   t = %2 s")
-                   .arg(fr.tau, 0, 'f', 2)
-                   .arg(fr.tau * s.tstar, 0, 'f', 3));
+    const QString time =
+        QStringLiteral("τ = %1   t = %2 s").arg(fr.tau, 0, 'f', 2).arg(fr.tau * s.tstar, 0, 'f', 3);
+    p.setFont(fitted(normal, fontPx, time, line1.width() - stateW - fontPx));
+    p.drawText(line1, Qt::AlignRight | Qt::AlignVCenter, time);
     const double dM = s.params.wallWidthM;
     const QRectF line2(line1.left(), line1.bottom(), line1.width(), fontPx * 1.5);
-    p.drawText(
-        line2, Qt::AlignLeft | Qt::AlignVCenter,
+    const QString motion =
         QStringLiteral("δ = %1 (d/2) = %2     slab y_s = %3     |a| vs μ: %4 %5 %6")
             .arg(fr.delta, 0, 'f', 3)
             .arg(lengthText(fr.delta * dM / 2, s.units))
             .arg(lengthText((fr.baseDisp + fr.delta) * dM / 2, s.units))
             .arg(std::abs(fr.accel), 0, 'f', 2)
             .arg(std::abs(fr.accel) > s.params.mu ? QStringLiteral(">") : QStringLiteral("≤"))
-            .arg(s.params.mu, 0, 'f', 2));
+            .arg(s.params.mu, 0, 'f', 2);
+    p.setFont(fitted(normal, fontPx, motion, line2.width()));
+    p.drawText(line2, Qt::AlignLeft | Qt::AlignVCenter, motion);
 }
 
 } // namespace

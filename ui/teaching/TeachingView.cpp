@@ -47,6 +47,9 @@ TeachingView::TeachingView(QWidget* parent)
     left->addWidget(traces_, 4);
     left->addWidget(buildTransport());
     auto* root = new QHBoxLayout(this);
+    // Narrow margins: the tab at 1280 × 800 is about 400 px tall, and the scene, the traces and
+    // the play bar must all fit in it (ui/teaching/SlabAnimation.h, TracePlot.h).
+    root->setContentsMargins(4, 4, 4, 4);
     root->addLayout(left, 1);
     root->addWidget(buildSidePanel());
 
@@ -120,6 +123,7 @@ void TeachingView::setFontScale(double scale) {
 
 QWidget* TeachingView::buildTransport() {
     auto* bar = new QWidget(this);
+    bar->setObjectName(QStringLiteral("transport"));
     auto* h = new QHBoxLayout(bar);
     h->setContentsMargins(0, 0, 0, 0);
     auto tool = [&](QStyle::StandardPixmap icon, const QString& tip, auto slot) {
@@ -169,15 +173,20 @@ QWidget* TeachingView::buildTransport() {
         speed_->setCurrentIndex(best);
     });
     h->addWidget(speed_);
-    fontScaleBox_ = new QComboBox(bar);
+    return bar;
+}
+
+// The text size sits beside the presets, not in the play bar: there it made the bar wider
+// than the tab at 1280 × 800 (the whole view scrolled sideways, cutting the side panel).
+QComboBox* TeachingView::buildFontScaleBox() {
+    fontScaleBox_ = new QComboBox;
     fontScaleBox_->setObjectName(QStringLiteral("fontScale"));
     for (double f : {1.0, 1.5, 2.0, 2.5, 3.0})
         fontScaleBox_->addItem(tr("Text %1%").arg(f * 100, 0, 'f', 0), f);
     fontScaleBox_->setToolTip(tr("Text size, for a projector (F11: presentation mode)"));
     connect(fontScaleBox_, &QComboBox::activated, this,
             [this](int i) { setFontScale(fontScaleBox_->itemData(i).toDouble()); });
-    h->addWidget(fontScaleBox_);
-    return bar;
+    return fontScaleBox_;
 }
 
 QWidget* TeachingView::buildSidePanel() {
@@ -193,7 +202,12 @@ QWidget* TeachingView::buildSidePanel() {
         const QString id = presets_->itemData(i).toString();
         if (!id.isEmpty()) applyPreset(id);
     });
-    v->addWidget(presets_);
+    presets_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    presets_->setMinimumContentsLength(10);
+    auto* top = new QHBoxLayout;
+    top->addWidget(presets_, 1);
+    top->addWidget(buildFontScaleBox());
+    v->addLayout(top);
     caption_ = new QLabel(side);
     caption_->setWordWrap(true);
     caption_->setStyleSheet(QStringLiteral("color: #555;"));

@@ -74,6 +74,7 @@ signals:
 
 private:
     QWidget* buildTransport();
+    QComboBox* buildFontScaleBox();
     QWidget* buildSidePanel();
     void rerun(const TeachingParams& p);
     void showFrame(double tau);

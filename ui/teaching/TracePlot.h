@@ -18,7 +18,8 @@ public:
     void setCursor(double tau);
     double cursorTau() const { return cursor_; }
     QSize sizeHint() const override { return {760, 300}; }
-    QSize minimumSizeHint() const override { return {360, 180}; }
+    // Two strips of 60-odd px each: what the Teaching tab at 1280 × 800 leaves them.
+    QSize minimumSizeHint() const override { return {360, 150}; }
 
 signals:
     void seekRequested(double tau);
