@@ -13,9 +13,7 @@
 #
 # Prints one line per start that did not exit 0 (its log kept in the log folder) and a summary;
 # exits 1 when any start did not exit 0. Exit 3 is kinstab's "no display could be opened" (it was
-# Qt's SIGABRT before issue 31); exit 5 is xvfb-run's own "problem while cleaning up temporary
-# directory", seen when starts that exit at once (a bad project) run several at a time.
-# BUILD_DIR as for scripts/build.sh.
+# Qt's SIGABRT before issue 31). BUILD_DIR as for scripts/build.sh.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 build="${BUILD_DIR:-build}"
@@ -45,8 +43,10 @@ start() {
          -ex "thread apply all bt" --args "${cmd[@]}")
   fi
   # Settings of a start must not leak into the next (the window restores its state).
+  # Our own X authority file: with its own temporary folder xvfb-run may fail to remove it when
+  # the program exits at once, and then exits 5 leaving its Xvfb running.
   XDG_CONFIG_HOME="$logs/config-$i" QT_QPA_PLATFORM=xcb timeout -k 10 300 \
-    xvfb-run -a -s "-screen 0 1280x1024x24" "${cmd[@]}" >"$logs/$i.log" 2>&1
+    xvfb-run -a -f "$logs/auth-$i" -s "-screen 0 1280x1024x24" "${cmd[@]}" >"$logs/$i.log" 2>&1
   status=$?
   # Under gdb the signal stops the program, and gdb's own exit says nothing of it.
   if [ "$gdb" = 1 ] && grep -q "received signal" "$logs/$i.log"; then
@@ -55,7 +55,7 @@ start() {
   fi
   echo "$status" >"$logs/$i.status"
   rm -f "$shot"
-  rm -rf "$logs/config-$i"
+  rm -rf "$logs/config-$i" "$logs/auth-$i"
 }
 
 running=0
