@@ -46,11 +46,8 @@ std::optional<FloorFilterParams> floorFilterFromFlags(const Args& args) {
     FloorFilterParams p;
     p.period = args.requiredNumber("floor-period");
     p.damping = args.number("damping", 0.02);
-    if (const std::string e = validateFloorFilter(p); !e.empty()) {
-        const bool period = e.rfind("floor period", 0) == 0;
-        throw UsageError(std::string(period ? "--floor-period " : "--damping ") +
-                         args.text(period ? "floor-period" : "damping") + ": " + e);
-    }
+    const InputProblem e = checkFloorFilter(p);
+    args.refuse(e, e.key == "period_s" ? "floor-period" : "damping");
     return p;
 }
 

@@ -43,17 +43,24 @@ Recurrence nigamJennings(double w, double zeta, double dt) {
 
 } // namespace
 
-std::string validateFloorFilter(const FloorFilterParams& p) {
+InputProblem checkFloorFilter(const FloorFilterParams& p) {
     if (!(p.period >= kMinFloorPeriodS && p.period <= kMaxFloorPeriodS))
-        return "floor period " + formatDouble(p.period) + " s: must be at least " +
-               formatDouble(kMinFloorPeriodS) + " s and at most " + formatDouble(kMaxFloorPeriodS) +
-               " s";
+        return {"period_s", p.period, "s",
+                "floor period " + formatDouble(p.period) + " s: must be at least " +
+                    formatDouble(kMinFloorPeriodS) + " s and at most " +
+                    formatDouble(kMaxFloorPeriodS) + " s"};
     if (!(p.damping >= 0.0) || !(p.damping < 1.0))
-        return "damping " + formatDouble(p.damping) +
-               ": must be at least 0 and below 1 (fraction of critical)";
+        return {"damping", p.damping, "",
+                "damping " + formatDouble(p.damping) +
+                    ": must be at least 0 and below 1 (fraction of critical)"};
     if (p.tail && (!(*p.tail >= 0.0) || !std::isfinite(*p.tail) || *p.tail > 1e5))
-        return "tail " + formatDouble(*p.tail) + " s: must be between 0 and 1e5 s";
+        return {"tail_s", *p.tail, "s",
+                "tail " + formatDouble(*p.tail) + " s: must be between 0 and 1e5 s"};
     return {};
+}
+
+std::string validateFloorFilter(const FloorFilterParams& p) {
+    return checkFloorFilter(p).why;
 }
 
 std::vector<double> floorAcceleration(const std::vector<double>& ground, double dt, double period,

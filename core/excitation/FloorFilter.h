@@ -7,6 +7,7 @@
 // (Nigam & Jennings 1969, "Calculation of response spectra from strong-motion earthquake
 // records", BSSA 59(2)): a 2x2 recurrence whose coefficients depend only on T, zeta and dt.
 
+#include "core/base/NumberInput.h"
 #include "core/records/Accelerogram.h"
 
 #include <optional>
@@ -34,8 +35,11 @@ struct FloorFilterParams {
 
 // Empty when fine; else "floor period 1e-300 s: must be at least 0.01 s and at most 1000 s" (the
 // message starts "floor period", "damping" or "tail", which callers use to name their input).
-std::string validateFloorFilter(const FloorFilterParams& p);
-double floorTailSeconds(const FloorFilterParams& p); // the tail actually appended
+// The first parameter out of range, keyed period_s, damping or tail_s (each front end names
+// its own field from the key), with validateFloorFilter's words as its why; or nothing.
+InputProblem checkFloorFilter(const FloorFilterParams& p);
+std::string validateFloorFilter(const FloorFilterParams& p); // checkFloorFilter's why
+double floorTailSeconds(const FloorFilterParams& p);         // the tail actually appended
 
 struct OscillatorState {
     double x = 0; // relative displacement, g s^2

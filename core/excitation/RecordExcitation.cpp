@@ -30,12 +30,8 @@ std::string validateRecordExcitation(const RecordExcitation& e) {
     if (const InputProblem p = checkInput(kScaleFactorInput, e.scaleFactor); !p.empty())
         return describe(p, "excitation.record.");
     if (e.floor) {
-        const std::string f = validateFloorFilter(*e.floor);
-        if (!f.empty()) {
-            const bool period = f.rfind("floor period", 0) == 0;
-            return fieldError(period ? "floor_filter.period_s" : "floor_filter.damping",
-                              period ? e.floor->period : e.floor->damping, f);
-        }
+        if (const InputProblem f = checkFloorFilter(*e.floor); !f.empty())
+            return fieldError("floor_filter." + f.key, f.value, f.why);
     }
     return {};
 }

@@ -178,9 +178,11 @@ IntensityMeasure readIntensity(const JsonReader& top) {
     return im;
 }
 
-// A list of positive numbers in (0, max]; fallback when the key is absent.
-std::vector<double> positiveList(const JsonReader& r, const std::string& key, double max,
-                                 std::vector<double> fallback) {
+// A list under key (fallback when the key is absent) of at most kMaxStudyListValues values,
+// each of which problem(x) finds fine (empty) or says why not.
+template <class Problem>
+std::vector<double> checkedList(const JsonReader& r, const std::string& key,
+                                std::vector<double> fallback, const Problem& problem) {
     if (!r.has(key)) return fallback;
     const std::vector<double> v = r.numbers(key);
     if (v.empty()) r.fail(key, "the list is empty");
@@ -188,21 +190,24 @@ std::vector<double> positiveList(const JsonReader& r, const std::string& key, do
         r.fail(key, std::to_string(v.size()) + " values, more than the limit of " +
                         std::to_string(kMaxStudyListValues));
     for (std::size_t i = 0; i < v.size(); ++i)
-        if (!(v[i] > 0.0 && v[i] <= max))
-            badValue(r, key + "[" + std::to_string(i) + "]", formatDouble(v[i]),
-                     "must be > 0 and at most " + formatDouble(max));
+        if (const std::string why = problem(v[i]); !why.empty())
+            badValue(r, key + "[" + std::to_string(i) + "]", formatDouble(v[i]), why);
     return v;
+}
+
+// A list of positive numbers in (0, max].
+std::vector<double> positiveList(const JsonReader& r, const std::string& key, double max,
+                                 std::vector<double> fallback) {
+    return checkedList(r, key, std::move(fallback), [max](double x) {
+        return x > 0.0 && x <= max ? std::string() : "must be > 0 and at most " + formatDouble(max);
+    });
 }
 
 // A list of a declared input (core/base/NumberInput.h): each value in the input's range.
 std::vector<double> inputList(const JsonReader& r, const NumberInput& in,
                               std::vector<double> fallback) {
-    const std::string key(in.key);
-    const std::vector<double> v = positiveList(r, key, in.range.hi, std::move(fallback));
-    for (std::size_t i = 0; i < v.size(); ++i)
-        if (const InputProblem e = checkInput(in, v[i]); !e.empty())
-            badValue(r, key + "[" + std::to_string(i) + "]", formatDouble(v[i]), e.why);
-    return v;
+    return checkedList(r, std::string(in.key), std::move(fallback),
+                       [&in](double x) { return checkInput(in, x).why; });
 }
 
 void readFloors(const JsonReader& p, StudySpec& s) {
@@ -217,8 +222,8 @@ void readFloors(const JsonReader& p, StudySpec& s) {
     for (double t : periods)
         for (double z : dampings) {
             FloorFilterParams check{t, z, std::nullopt};
-            if (const std::string e = validateFloorFilter(check); !e.empty())
-                f->fail("periods_s", e);
+            if (const InputProblem e = checkFloorFilter(check); !e.empty())
+                f->fail(e.key == "damping" ? "dampings" : "periods_s", e.why);
             s.floors.push_back(FloorFilterChoice{t, z});
         }
 }

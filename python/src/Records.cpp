@@ -57,11 +57,11 @@ Accelerogram readRecordFile(const std::string& path, const std::string& format,
 
 FloorFilterParams floorParams(double period, double damping, std::optional<double> tail) {
     FloorFilterParams p{finite("period", period), finite("damping", damping), tail};
-    if (const std::string e = validateFloorFilter(p); !e.empty()) {
-        if (e.rfind("floor period", 0) == 0) badArgument("period", period, e);
-        if (e.rfind("damping", 0) == 0) badArgument("damping", damping, e);
-        badArgument("tail", *tail, e);
-    }
+    if (const InputProblem e = checkFloorFilter(p); !e.empty())
+        badArgument(e.key == "period_s" ? "period"
+                    : e.key == "tail_s" ? "tail"
+                                        : e.key,
+                    e.value, e.why);
     return p;
 }
 
