@@ -20,11 +20,10 @@ int runCritical(const ArgList& argv) {
     flags.insert(searchFlags.begin(), searchFlags.end());
     const Args args(argv, flags);
     const std::vector<double> freqs = args.list("frequencies");
+    // validateGrid checks each frequency against kFrequencyInput, the count against the limit.
     const std::string e = validateGrid(SweepGrid{{1.0}, freqs});
     if (!e.empty()) throw UsageError("--" + e);
     const CriticalSearch search = criticalSearchFromFlags(args);
-    for (double f : freqs)
-        args.refuse(checkInput(kFrequencyInput, f), "frequencies");
 
     if (isPlanar(args)) return runCriticalPlanar(args, freqs, search);
     const Slab1DCase c = slab1DCaseFromFlags(args);
