@@ -33,9 +33,9 @@ struct ProjectHazard {
     bool operator==(const ProjectHazard&) const = default;
 };
 
-// The names hazardFormatName (core/risk/HazardFile.h) gives, and the most years kinstab-cli risk
-// takes (kMaxRiskYears): io sits below risk, so they are repeated here and tst_risk_check checks
-// that they agree.
+// The hazard formats' names and the most years asked about, declared here, on the lowest floor
+// that reads them: the project file's reader checks them, and core/risk (a floor above) takes
+// its hazardFormatName and kMaxRiskYears from these. 10,000 years is beyond any structure's life.
 inline constexpr const char* kProjectHazardFormats[] = {"auto", "openquake", "usgs", "csv"};
 inline constexpr double kMaxProjectHazardYears = 10'000;
 

@@ -3,6 +3,7 @@
 
 #include "core/base/InputLimits.h"
 #include "core/base/TextInput.h"
+#include "core/io/StudyJson.h"
 #include "core/risk/HazardReaders.h"
 
 #include <algorithm>
@@ -12,11 +13,12 @@ namespace kinstab {
 
 namespace {
 
+// The project file's spelling (core/io/StudyJson.h), in the enum's order.
 constexpr std::array<std::pair<HazardFormat, const char*>, 4> kFormatNames = {{
-    {HazardFormat::Auto, "auto"},
-    {HazardFormat::OpenQuake, "openquake"},
-    {HazardFormat::Usgs, "usgs"},
-    {HazardFormat::Csv, "csv"},
+    {HazardFormat::Auto, kProjectHazardFormats[0]},
+    {HazardFormat::OpenQuake, kProjectHazardFormats[1]},
+    {HazardFormat::Usgs, kProjectHazardFormats[2]},
+    {HazardFormat::Csv, kProjectHazardFormats[3]},
 }};
 
 } // namespace

@@ -5,6 +5,7 @@
 // renders the keys its own way ("--target-rate" on the command line, "target_rate=" in Python),
 // including the keys a why names in braces ("needs {beta}").
 
+#include "core/io/StudyJson.h"
 #include "core/risk/HazardFile.h"
 #include "core/risk/RiskAnalysis.h"
 #include "core/study/Fragility.h"
@@ -28,8 +29,8 @@ struct RiskRequest {
     BootstrapSettings bootstrap; // of a set's fragility; its level is not used (5/50/95 %)
 };
 
-// The largest exposure asked about: 10,000 years is beyond any structure's life.
-inline constexpr double kMaxRiskYears = 10'000;
+// The largest exposure asked about, as the project file declares it (core/io/StudyJson.h).
+inline constexpr double kMaxRiskYears = kMaxProjectHazardYears;
 inline constexpr std::size_t kMaxRiskResamples = 100'000; // as kinstab-cli fragility
 
 struct RiskProblem {

@@ -222,7 +222,7 @@ private slots:
         QVERIFY2(contains(e, "study.hazard.file = '") && contains(e, "SA"), e.c_str());
     }
 
-    // io repeats the format names and the years' limit of core/risk (a floor above it).
+    // core/risk takes the format names and the years' limit from io's declaration.
     void ioNamesAgreeWithRisk() {
         std::vector<std::string> names;
         for (const char* n : kProjectHazardFormats)
