@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/NumberField.h"
 
+#include "ui/FieldError.h"
+
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -22,9 +24,7 @@ NumberField::NumberField(const QString& unit, QWidget* parent)
     row->addWidget(m_edit, 1);
     row->addWidget(m_unit);
     column->addLayout(row);
-    m_errorLabel->setStyleSheet("color: #c0392b;");
-    m_errorLabel->setWordWrap(true);
-    m_errorLabel->hide();
+    styleFieldError(m_errorLabel);
     column->addWidget(m_errorLabel);
     m_edit->setMinimumWidth(60);
     connect(m_edit, &QLineEdit::textChanged, this, [this] {
@@ -147,13 +147,7 @@ void NumberField::revalidate() {
                          .arg(stored, 0, 'g', 6)
                          .arg(storedSymbol());
     }
-    const bool changed = error != m_error;
-    m_error = error;
-    m_errorLabel->setText(error);
-    m_errorLabel->setVisible(!error.isEmpty());
-    m_edit->setStyleSheet(error.isEmpty() ? QString()
-                                          : QStringLiteral("border: 1px solid #c0392b;"));
-    if (changed) emit validityChanged();
+    if (showFieldError(error, m_error, m_errorLabel, m_edit)) emit validityChanged();
 }
 
 NumberField::Check positiveCheck() {

@@ -2,6 +2,7 @@
 #include "ui/TextField.h"
 
 #include "core/base/DisplayText.h"
+#include "ui/FieldError.h"
 
 #include <QLabel>
 #include <QLineEdit>
@@ -17,9 +18,7 @@ TextField::TextField(std::size_t maxChars, QWidget* parent)
     column->setSpacing(1);
     column->addWidget(m_edit);
     m_errorLabel->setObjectName(QStringLiteral("textError"));
-    m_errorLabel->setStyleSheet("color: #c0392b;");
-    m_errorLabel->setWordWrap(true);
-    m_errorLabel->hide();
+    styleFieldError(m_errorLabel);
     column->addWidget(m_errorLabel);
     setFocusProxy(m_edit);
     connect(m_edit, &QLineEdit::textChanged, this, [this] {
@@ -40,13 +39,7 @@ std::string TextField::text() const {
 void TextField::revalidate() {
     const QString error =
         QString::fromStdString(displayTextProblem(text(), m_maxChars, TextLines::Single));
-    const bool changed = error != m_error;
-    m_error = error;
-    m_errorLabel->setText(error);
-    m_errorLabel->setVisible(!error.isEmpty());
-    m_edit->setStyleSheet(error.isEmpty() ? QString()
-                                          : QStringLiteral("border: 1px solid #c0392b;"));
-    if (changed) emit validityChanged();
+    if (showFieldError(error, m_error, m_errorLabel, m_edit)) emit validityChanged();
 }
 
 } // namespace kinstab::ui
