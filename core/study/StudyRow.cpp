@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <tuple>
+#include <utility>
 
 namespace kinstab {
 
@@ -38,6 +40,16 @@ double positive(const nlohmann::json& j, const char* key) {
 std::optional<double> optionalPositive(const nlohmann::json& j, const char* key) {
     if (!j.contains(key) || j[key].is_null()) return std::nullopt;
     return positive(j, key);
+}
+
+// Two optional positive numbers that come together or not at all.
+std::pair<std::optional<double>, std::optional<double>>
+optionalPositivePair(const nlohmann::json& j, const char* first, const char* second) {
+    auto pair = std::pair(optionalPositive(j, first), optionalPositive(j, second));
+    if (pair.first.has_value() != pair.second.has_value())
+        throw StudyRowError(std::string("\"") + first + "\" and \"" + second +
+                            "\": one without the other");
+    return pair;
 }
 
 std::size_t count(const nlohmann::json& j, const char* key) {
@@ -122,10 +134,8 @@ void parseInputs(const nlohmann::json& j, StudyRow& r) {
     r.mu = positive(j, "mu");
     r.tstar = positive(j, "tstar");
     r.limit = positive(j, "limit");
-    r.floorPeriod = optionalPositive(j, "floor_period_s");
-    r.floorDamping = optionalPositive(j, "floor_damping");
-    if (r.floorPeriod.has_value() != r.floorDamping.has_value())
-        throw StudyRowError("\"floor_period_s\" and \"floor_damping\": one without the other");
+    std::tie(r.floorPeriod, r.floorDamping) =
+        optionalPositivePair(j, "floor_period_s", "floor_damping");
     r.measure = text(j, "measure");
     if (r.measure.empty()) throw StudyRowError("\"measure\": empty");
     if (j.contains("level")) {
@@ -142,10 +152,8 @@ void parseInputs(const nlohmann::json& j, StudyRow& r) {
 // The case's result: intensities > 0, a critical one (with its peak) at most the search limit.
 void parseResult(const nlohmann::json& j, StudyRow& r) {
     r.recordIntensity = positive(j, "record_im_g");
-    r.criticalIntensity = optionalPositive(j, "critical_im_g");
-    r.criticalPeak = optionalPositive(j, "critical_peak_g");
-    if (r.criticalIntensity.has_value() != r.criticalPeak.has_value())
-        throw StudyRowError("\"critical_im_g\" and \"critical_peak_g\": one without the other");
+    std::tie(r.criticalIntensity, r.criticalPeak) =
+        optionalPositivePair(j, "critical_im_g", "critical_peak_g");
     r.limitIntensity = positive(j, "limit_im_g");
     if (r.criticalIntensity && *r.criticalIntensity > r.limitIntensity)
         throw StudyRowError("\"critical_im_g\" = " + formatDouble(*r.criticalIntensity) +
