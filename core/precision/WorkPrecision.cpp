@@ -2,6 +2,7 @@
 #include "core/precision/WorkPrecision.h"
 
 #include "core/base/InternalError.h"
+#include "core/base/Stopwatch.h"
 #include "core/excitation/EnvelopedSine.h"
 #include "core/slab/ExactSolver.h"
 #include "core/slab/LongDoubleReplay.h"
@@ -153,10 +154,9 @@ TimingStats measureTime(const std::vector<Run>& runs, const Setting& s, int repe
         for (const Run& r : runs)
             sink = sink + s.solve(r).tauEnd;
     };
-    const auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = SteadyClock::now();
     pass();
-    const double once =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double once = secondsSince(t0);
     const int loops =
         static_cast<int>(std::clamp(std::ceil(2e-3 / std::max(once, 1e-9)), 1.0, 1e4));
     if (once > 0.5) repeats = std::min(repeats, 3);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/sweep/Sweep.h"
 
+#include "core/base/Stopwatch.h"
 #include "core/sweep/ParallelFor.h"
 
 #include <algorithm>
@@ -13,8 +14,7 @@ namespace kinstab {
 
 SweepResult runSweep(const SweepGrid& grid, const PointFunction& point, SweepControl* control,
                      int threads) {
-    using Clock = std::chrono::steady_clock;
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     SweepResult r;
     r.grid = grid;
     const std::size_t total = grid.size();
@@ -32,7 +32,7 @@ SweepResult runSweep(const SweepGrid& grid, const PointFunction& point, SweepCon
     });
     r.completed = completed.load();
     r.cancelled = r.completed < total;
-    r.wallTimeSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    r.wallTimeSeconds = secondsSince(start);
     return r;
 }
 
