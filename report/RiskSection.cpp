@@ -18,7 +18,7 @@ namespace kinstab::ui::report {
 
 namespace {
 
-const QColor kHazard(40, 90, 160), kIntegrand(200, 40, 40);
+const QColor kHazard(40, 90, 160);
 
 // A rate to 3 significant digits in the C locale's syntax ("2.01e-04").
 QString rate(double x) {
