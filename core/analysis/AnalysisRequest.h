@@ -36,10 +36,6 @@ struct AnalysisRequest {
     // 1-DOF: each run is checked (core/slab/FiniteResult.h) and an unsound one throws
     // InternalError instead of counting as an outcome (kinstab-cli's exit 3).
     bool requireSoundRuns = false;
-    // recordCheck: fit the record's envelope (Fig. 27) for the run's gamma_c and the figures.
-    // Off where only the verdicts are read (the assessment): the fit was 30 of a record check's
-    // 42 ms before issue 34 and nothing there shows it.
-    bool recordFit = true;
     int threads = 0; // 0: all hardware threads
 };
 

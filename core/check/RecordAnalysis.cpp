@@ -37,7 +37,7 @@ std::optional<EnvelopeFit> fitOrNone(const Accelerogram& motion, std::string* wh
     }
 }
 
-RecordAnalysis recordMotions(const RecordExcitation& record, const Slab1DCase& slab, bool fit) {
+RecordAnalysis recordMotions(const RecordExcitation& record, const Slab1DCase& slab) {
     RecordAnalysis a;
     a.ground = readGroundRecord(record);
     a.motion = drivingMotion(record, a.ground);
@@ -45,10 +45,7 @@ RecordAnalysis recordMotions(const RecordExcitation& record, const Slab1DCase& s
     if (const std::string e = validateRecordedMotion(a.motion, slab.tstar, a.peak); !e.empty())
         throw std::invalid_argument("excitation.record: " + e);
     a.scaleFactor = a.peak / std::abs(a.motion.peak().value);
-    if (fit)
-        a.fit = fitOrNone(a.motion, &a.fitError);
-    else
-        a.fitError = "not computed: nothing asked for the envelope fit";
+    a.fit = fitOrNone(a.motion, &a.fitError);
     a.tauRef = recordTauRef(a.fit, slab);
     return a;
 }
@@ -78,7 +75,7 @@ long runEstimate(const CriticalSearch& s, double mu) {
 RecordAnalysis analyseRecord(const RecordAnalysisInput& in, SweepControl* control) {
     if (const std::string e = validateRecordAnalysis(in); !e.empty())
         throw std::invalid_argument(e);
-    RecordAnalysis a = recordMotions(in.record, in.slab, in.fit);
+    RecordAnalysis a = recordMotions(in.record, in.slab);
     RunOptions options;
     options.recordEvents = in.events;
     auto t0 = std::chrono::steady_clock::now();

@@ -24,7 +24,6 @@ struct RecordAnalysisInput {
     std::vector<CodeResult> codes; // verdicts for these (none: no verdicts)
     bool critical = true;          // search the critical scale
     bool events = false;           // keep the single run's events (for a history)
-    bool fit = true; // the envelope fit and gamma_c's reference from it (false: neither computed)
 };
 
 struct RecordAnalysis {
@@ -48,9 +47,7 @@ std::string validateRecordAnalysis(const RecordAnalysisInput& in);
 // control: cancel (the critical search stops within one run) and progress (runs, estimate).
 RecordAnalysis analyseRecord(const RecordAnalysisInput& in, SweepControl* control = nullptr);
 // The motion alone (read, filtered), for previews: throws like analyseRecord.
-// fit = false leaves fit and (unless TauScale::One) tauRef empty, with fitError saying so.
-RecordAnalysis recordMotions(const RecordExcitation& record, const Slab1DCase& slab,
-                             bool fit = true);
+RecordAnalysis recordMotions(const RecordExcitation& record, const Slab1DCase& slab);
 // The envelope fitted to a motion (Fig. 27); none, with the reason in *why, when the motion has
 // fewer than 3 half cycles.
 std::optional<EnvelopeFit> fitOrNone(const Accelerogram& motion, std::string* why = nullptr);
