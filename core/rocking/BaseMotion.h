@@ -4,7 +4,8 @@
 // acceleration a_h(t) and vertical a_v(t), both in g (a_v > 0 upwards: gravity acts as
 // g (1 + a_v)). The rocking solver integrates between piece ends, where the motion may have a
 // kink or a jump, so its steps never straddle one; inside a piece both accelerations are smooth
-// and a_h is monotone, so the initiation search at rest (firstExceedance) misses nothing.
+// and either a_h is monotone or the motion finds its level crossings itself, so the initiation
+// search at rest (firstExceedance) misses nothing.
 
 #include "core/excitation/Excitation1D.h"
 
@@ -34,7 +35,8 @@ public:
 
 // An Excitation1D of kinstab's other models (enveloped sine, recorded motion) in physical time:
 // a_h(t) = e.accel(t / tstar), pieces the excitation's segments (a recorded motion's sample
-// intervals; an enveloped sine's half-periods, split at the hump's peak). vertical, when given,
+// intervals; an enveloped sine's half-periods, one hump each, whose level crossings the
+// excitation finds exactly). vertical, when given,
 // is a second Excitation1D in the same time (a record's vertical component, g, > 0 upwards).
 class ExcitationMotion final : public BaseMotion {
 public:
@@ -46,6 +48,7 @@ public:
     double end() const override { return end_; }
     double pieceEnd(double t) const override;
     double peak() const override { return horizontal_->peak(); }
+    double firstExceedance(int sign, double level, double t0, double t1) const override;
 
 private:
     std::shared_ptr<const Excitation1D> horizontal_;

@@ -3,7 +3,9 @@
 // Which amplitudes of a motion family overturn a block: the smallest one, and the intervals of
 // overturning amplitudes up to a maximum, so that a "safe cape" (Zhang & Makris 2001: amplitudes
 // above an overturning one that do not overturn) shows. A scan at a fixed step, then bisection of
-// every change to a tolerance; bounded.
+// every change to a tolerance; bounded. A run in which the block leaves its base (the model
+// cannot follow it further: RockingOutcome::LeavesBase) counts as overturning here: nothing
+// shows it survives.
 
 #include "core/rocking/BaseMotion.h"
 #include "core/rocking/RockingModel.h"

@@ -26,11 +26,13 @@ struct OverturningMapSpec {
 // Row-major over (frequency index i, amplitude index j): k = i * amplitudePoints + j.
 struct OverturningMap {
     OverturningMapSpec spec;
-    std::vector<double> amplitudes;       // a_p / (alpha g)
-    std::vector<double> frequencies;      // omega_p / p
-    std::vector<unsigned char> overturns; // 1: overturns, 0: survives
-    std::vector<float> maxThetaOverAlpha; // of the survivors; >= 1 where it overturns
-    bool complete = false; // false: cancelled, the rest of overturns is 0 and maxTheta NaN-free 0
+    std::vector<double> amplitudes;  // a_p / (alpha g)
+    std::vector<double> frequencies; // omega_p / p
+    // 0: survives, 1: overturns, 2: leaves the base (the corner's normal force vanished: the
+    // model cannot follow it, RockingOutcome::LeavesBase)
+    std::vector<unsigned char> overturns;
+    std::vector<float> maxThetaOverAlpha; // up to the end or the decision (>= 1 if it overturns)
+    bool complete = false;                // false: cancelled; points not run are 0 (survives, 0)
     std::size_t at(int i, int j) const {
         return static_cast<std::size_t>(i) * amplitudes.size() + static_cast<std::size_t>(j);
     }
