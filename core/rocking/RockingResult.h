@@ -2,6 +2,8 @@
 #pragma once
 // What one run of a free-standing block gives: how it ended and the figures of its motion.
 
+#include "core/base/InternalError.h"
+
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -55,10 +57,12 @@ struct RockingResult {
     long events = 0; // impacts and mode changes
 };
 
-// A run that hit one of RockingLimits: what() names the limit and where the run was.
-class RockingLimitError : public std::runtime_error {
+// A run that hit one of RockingLimits: what() names the limit and where the run was. A bounded
+// search that reached its bound is a result kinstab cannot stand behind (InternalError: the
+// command line's exit 4), not the user's fault.
+class RockingLimitError : public InternalError {
 public:
-    using std::runtime_error::runtime_error;
+    using InternalError::InternalError;
 };
 
 } // namespace kinstab

@@ -205,7 +205,9 @@ bool Run::locateAndApply(double t0, const BlockState& y0, const BlockState& f0, 
     } else {
         events[n++] = Event::Impact;
         events[n++] = Event::Overturn;
-        events[n++] = Event::Normal;
+        // Once overturning is decided the block is followed about its corner to |theta| =
+        // pi/2 for the time; a corner lifting on the way does not change that it falls.
+        if (!overturned_) events[n++] = Event::Normal;
         if (mode_ == BlockMode::SlideRock)
             events[n++] = Event::SlideStop;
         else if (canSlide_)
@@ -340,12 +342,13 @@ bool Run::startMode(BlockMode mode) {
         const BlockState f = derivative(t_, y_);
         if (mode == BlockMode::SlideRock) {
             r_.slideRocked = r_.slid = r_.rocked = true;
-            if (!(slideRockNormal(k_, z_, sigma_, y_, a) > 0.0)) return apply(Event::Normal);
+            if (!overturned_ && !(slideRockNormal(k_, z_, sigma_, y_, a) > 0.0))
+                return apply(Event::Normal);
             break;
         }
         r_.rocked = true;
         const ContactForce c = rockingContact(k_, z_, y_[0], y_[1], f[1], a);
-        if (!(c.normal > 0.0)) return apply(Event::Normal);
+        if (!overturned_ && !(c.normal > 0.0)) return apply(Event::Normal);
         if (canSlide_ && std::abs(c.friction) > k_.mu * c.normal) {
             sigma_ = -sgn(c.friction);
             mode = BlockMode::SlideRock;

@@ -23,13 +23,16 @@
 //   slide-rock -> rock  when the corner's sliding velocity reaches 0 and friction holds it;
 //   rock/slide-rock -> leaves base when N reaches 0 (the run stops: LeavesBase);
 //   impact at theta = 0: theta' -> eta theta', the block rocks on about the other corner; when
-//                       the rebound is too small to lift it again (|theta'| below 1e-9 p alpha
-//                       and no uplift at that instant) it comes to rest;
+//                       the rebounds that follow would all together lift it less than
+//                       1e-9 alpha (the Zeno end of rocking: infinitely many impacts in a
+//                       finite time), or |theta'| < 1e-9 p alpha, it is at rest (and lifts
+//                       again at once if the base demands it);
 //   overturning:        |theta| reaches pi/2 while the base moves; after the base motion has
 //                       ended, the fate of free rocking is decided by its energy (a block past
 //                       its corner's vertical, |theta| >= alpha, moving outwards never returns;
 //                       one below it returns and, after each impact, loses energy), and an
-//                       overturning block is followed to |theta| = pi/2 for its time.
+//                       overturning block is followed about its corner to |theta| = pi/2
+//                       for its time (its corner may lift on the way: it falls all the same).
 // Slide-rock is integrated with the exact equations (both equation choices); the linearised
 // choice concerns pure rocking, where the literature's closed forms hold.
 
