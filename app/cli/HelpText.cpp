@@ -87,9 +87,13 @@ const char* kPrecision =
 const char* kBench =
     "usage: kinstab-cli bench [--repeats N] [--threads N] [--amplitudes LIST --frequencies LIST]\n"
     "                         [--vector-state] [model flags]\n"
+    "       kinstab-cli bench --rocking [--map-points N] [--repeats N] [--threads N]\n"
     "Times the exact and the paper solver on one grid; prints JSON (min and median seconds).\n"
     "  --vector-state               instead: the exact solver with and without clearing the\n"
     "                               upper AVX state (vzeroupper) at each solver start\n"
+    "  --rocking                    instead: the free-standing block, one pulse run and the\n"
+    "                               N x N one-sine overturning map, linearised and exact\n"
+    "  --map-points N               points per axis of that map [257]\n"
     "  --repeats N                  timed repeats [5]\n"
     "  --threads N                  worker threads, 0 = all cores [0]\n"
     "  --amplitudes LIST            peak accelerations, g [a built-in grid]\n"
