@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// A free-standing rigid rectangular block (docs/theory.md, "Free-standing blocks"): half-width b
+// A free-standing rigid rectangular block (docs/theory.md §10): half-width b
 // and half-height h, uniform, on a rigid base. Its slenderness alpha = atan(b/h), the distance
 // R = sqrt(b^2 + h^2) from a base corner to the centre of mass, and its frequency parameter
 // p = sqrt(3 g / (4 R)) (Housner 1963): the polar moment about a corner is (4/3) m R^2.
@@ -20,7 +20,7 @@ double blockAlpha(const Block& b);     // atan(b/h), rad
 double blockRadius(const Block& b);    // R = sqrt(b^2 + h^2), m
 double blockFrequency(const Block& b); // p = sqrt(3 g / (4 R)), rad/s, g standard gravity
 // Housner's coefficient of restitution on the angular velocity at impact, from conservation of
-// angular momentum about the new pivot: 1 - 1.5 sin^2 alpha (Housner 1963, eq. 11).
+// angular momentum about the new pivot: 1 - 1.5 sin^2 alpha (Housner 1963).
 double housnerRestitution(double alpha);
 // The block of a given slenderness alpha (rad) and frequency parameter p (rad/s): R = 3g/(4p^2),
 // b = R sin alpha, h = R cos alpha. How the papers state their blocks.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The equations of motion of a free-standing block in each mode, and the contact forces at its
-// base, as pure functions (docs/theory.md, "Free-standing blocks"; sign convention in
+// base, as pure functions (docs/theory.md §10; sign convention in
 // RockingSolver.h). The state is y = (theta, theta', u, u') with u the base or pivot corner's
 // displacement relative to the base (m); the accelerations are in rad/s^2 and m/s^2.
 //

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // How a block is modelled in a run: the block, the impact, the equations and friction, where it
-// starts and how long the run lasts (docs/theory.md, "Free-standing blocks").
+// starts and how long the run lasts (docs/theory.md §10).
 
 #include "core/rocking/Block.h"
 

@@ -159,7 +159,7 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, simulateRocking(m, NoMotion{}));
     }
     void housnerRestitutionByDefault() {
-        // Housner 1963 eq. 11: eta = 1 - 1.5 sin^2 alpha (b 0.2, h 0.6: sin^2 alpha = 0.1).
+        // Housner 1963: eta = 1 - 1.5 sin^2 alpha (b 0.2, h 0.6: sin^2 alpha = 0.1).
         RockingModel m;
         m.block = {0.2, 0.6};
         QVERIFY(std::abs(restitutionOf(m) - 0.85) < 1e-15);
