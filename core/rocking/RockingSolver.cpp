@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/rocking/RockingSolver.h"
 
+#include "core/base/PhysicalConstants.h"
 #include "core/numerics/Dop853.h"
 #include "core/numerics/RootFinding.h"
 #include "core/rocking/FreeRocking.h"
@@ -53,6 +54,7 @@ private:
                       double* slope) const;
     bool restPhase();
     bool integrate();
+    bool finishSliding();
     void accept(double t1, const BlockState& y1);
     bool locateAndApply(double t0, const BlockState& y0, const BlockState& f0, double h,
                         const BlockState& y1, const BlockState& f1);
@@ -383,10 +385,38 @@ void Run::accept(double t1, const BlockState& y1) {
     r_.maxSliding = std::max(r_.maxSliding, std::abs(y_[2]));
 }
 
+// After the base motion has ended a block sliding flat decelerates at mu g (it cannot tip: it
+// slides flat only with mu <= tan alpha): its stop is closed form, however small mu.
+bool Run::finishSliding() {
+    const double v = y_[3], decel = k_.mu * kStandardGravity;
+    const double stopAt = t_ + std::abs(v) / decel;
+    const double t1 = std::min(stopAt, stopT_), dt = t1 - t_;
+    const double u1 = y_[2] + v * dt - 0.5 * sgn(v) * decel * dt * dt;
+    if (o_.recorder)
+        for (; nextSample_ <= t1; nextSample_ += o_.sampleInterval)
+            if (nextSample_ > t_) {
+                const double s = nextSample_ - t_;
+                record(nextSample_,
+                       BlockState(0.0, 0.0, y_[2] + v * s - 0.5 * sgn(v) * decel * s * s,
+                                  v - sgn(v) * decel * s));
+            }
+    y_[2] = u1;
+    y_[3] = t1 < stopAt ? v - sgn(v) * decel * dt : 0.0;
+    t_ = t1;
+    r_.maxSliding = std::max(r_.maxSliding, std::abs(u1));
+    if (t1 == stopAt) {
+        countEvent();
+        startMode(BlockMode::Rest);
+    }
+    stop_ = true;
+    return false;
+}
+
 // One DOP853 step (or its rejection) inside the current piece of the base motion.
 bool Run::integrate() {
     decideFree();
     if (stop_) return false;
+    if (mode_ == BlockMode::Slide && t_ >= endT_) return finishSliding();
     double pe = std::min(motion_.pieceEnd(t_), stopT_);
     if (t_ < endT_) pe = std::min(pe, endT_);
     const double wanted = std::min(h_, 0.5 / k_.p);

@@ -6,6 +6,10 @@
 
 #include "CliRun.h"
 
+#include "core/rocking/Block.h"
+#include "core/rocking/Pulse.h"
+
+#include <QElapsedTimer>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -13,6 +17,7 @@
 #include <QtTest>
 #include <cmath>
 #include <numbers>
+#include <random>
 
 namespace {
 
@@ -30,6 +35,52 @@ QString num(double x) {
 QStringList zhangMakrisBlock() {
     const double r = 3.0 * g / (4.0 * 2.14 * 2.14);
     return {"--half-width", num(r * std::sin(0.25)), "--half-height", num(r * std::cos(0.25))};
+}
+
+struct FlagCase {
+    const kinstab::NumberInput* input;
+    QStringList command; // runs with the flag added
+};
+
+// Every numeric flag of rocking with a command it runs in (issue 31's extremes, as
+// tst_cli_extremes does for the slab's flags).
+QList<FlagCase> flagCases() {
+    const QStringList block = {"rocking", "--half-width", "0.2", "--half-height", "0.6"};
+    const QStringList pulse = {"--pulse", "one-sine",    "--pulse-frequency",
+                               "2",       "--amplitude", "0.5"};
+    return {{&kinstab::kHalfWidthInput,
+             {"rocking", "--half-height", "0.6", "--pulse", "half-sine", "--pulse-frequency", "1",
+              "--amplitude", "0.5"}},
+            {&kinstab::kHalfHeightInput,
+             {"rocking", "--half-width", "0.2", "--pulse", "half-sine", "--pulse-frequency", "1",
+              "--amplitude", "0.5"}},
+            {&kinstab::kRestitutionInput, block + pulse},
+            {&kinstab::kBlockMuInput, block + pulse},
+            {&kinstab::kInitialTiltInput, block + QStringList{"--restitution", "0.9"}},
+            {&kinstab::kRockingDurationInput, block + pulse},
+            {&kinstab::kPulseAmplitudeInput,
+             block + QStringList{"--pulse", "half-sine", "--pulse-frequency", "1"}},
+            {&kinstab::kPulseFrequencyInput,
+             block + QStringList{"--pulse", "one-cosine", "--amplitude", "0.5"}},
+            {&kinstab::kPulseDurationInput,
+             block + QStringList{"--pulse", "rectangular", "--amplitude", "0.5"}}};
+}
+
+QList<double> valuesFor(const kinstab::NumberInput& in, std::mt19937_64& rng) {
+    QList<double> v{in.range.lo,
+                    in.range.hi,
+                    in.range.lo * (1 - 1e-9),
+                    in.range.hi * 1.001,
+                    1e-300,
+                    4.9e-324,
+                    1e308,
+                    0.0,
+                    -1.0,
+                    in.fallback};
+    std::uniform_real_distribution<double> exponent(-320.0, 308.0);
+    for (int k = 0; k < 4; ++k)
+        v.push_back(std::pow(10.0, exponent(rng)));
+    return v;
 }
 
 } // namespace
@@ -205,6 +256,36 @@ private slots:
         r = cli({"rocking-map", "--half-width", "0.2", "--half-height", "0.6", "--mu", "0.5"});
         QCOMPARE(r.code, 2);
         QVERIFY(r.err.contains("--mu 0.5"));
+    }
+    void everyFlagAtItsExtremes_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<bool>("inRange");
+        std::mt19937_64 rng(32);
+        for (const FlagCase& c : flagCases()) {
+            const QString flag = QString::fromStdString(kinstab::flagName(*c.input));
+            for (double x : valuesFor(*c.input, rng))
+                QTest::newRow(qPrintable(flag + " " + num(x)))
+                    << (c.command + QStringList{flag, num(x)}) << c.input->range.contains(x);
+        }
+    }
+    void everyFlagAtItsExtremes() {
+        // Each run ends in seconds with an answer (exit 0, no NaN) or a refusal naming the flag
+        // (exit 2): never a hang, a crash or a bug's exit 1.
+        QFETCH(QStringList, args);
+        QFETCH(bool, inRange);
+        QElapsedTimer clock;
+        clock.start();
+        const Run r = run(KINSTAB_CLI, args, 30000);
+        const qint64 ms = clock.elapsed();
+        QVERIFY2(r.code == 0 || r.code == 2,
+                 qPrintable(QString("exit %1 after %2 ms: %3").arg(r.code).arg(ms).arg(r.err)));
+        QVERIFY2(ms < 10000, qPrintable(QString("%1 ms").arg(ms)));
+        if (!inRange) {
+            QCOMPARE(r.code, 2);
+            QVERIFY2(r.err.contains(args[args.size() - 2].toUtf8()), r.err.constData());
+        }
+        if (r.code == 0)
+            QVERIFY2(!r.out.contains("NaN") && !r.out.contains("nan"), r.out.left(400));
     }
     void help() {
         Run r = cli({"--help"});
