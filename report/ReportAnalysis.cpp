@@ -128,6 +128,8 @@ Assessment assessReport(const Project& project, const ReportAnalysis& a) {
     }
     if (a.floors) parts.floors = floorCheckParts(*a.floors, project.building.stories);
     parts.risk = a.risk;
+    parts.blocks = a.blocks;
+    if (a.blocks && a.record) parts.recordName = a.record->ground.name;
     return composeAssessment(project, parts);
 }
 
@@ -193,6 +195,9 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
             designSlice(project, model, a.check, *fd, options.sliceStep, control, a.figureRuns);
     if (project.record) a.record = recordCheck(project, request, ctl);
     a.floors = computeReportFloors(project, control);
+    if (a.record && !project.blocks.empty())
+        a.blocks = blockCheckParts(project, a.record->ground, control);
+    a.blockMaps = computeReportBlockMaps(project, control);
     // The paper's RK4 solver is of the 1-DOF model only.
     if (options.crossCheck && c.solver == SolverKind::Exact && !planar)
         a.crossCheck = crossCheck(project, a.projectSweep, options.crossCheckSteps);

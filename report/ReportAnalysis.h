@@ -12,6 +12,7 @@
 #include "core/check/RecordAnalysis.h"
 #include "core/codes/CodeResult.h"
 #include "core/io/Project.h"
+#include "core/rocking/OverturningMap.h"
 #include "core/slab/PlanarSolver.h"
 #include "core/sweep/Sweep.h"
 #include "report/FigureData.h"
@@ -56,6 +57,10 @@ struct ReportAnalysis {
     // The study's sets against its hazard curve, when the study has results and a hazard curve
     // (core/assessment/RiskCheck.h): the risk section and the risk checks.
     std::optional<RiskCheckParts> risk;
+    // The project's free-standing blocks searched on their levels under the ground record
+    // (core/assessment/BlockCheck.h): the blocks section and the block checks.
+    std::optional<std::vector<BlockCheckPart>> blocks;
+    std::vector<OverturningMap> blockMaps; // each block's one-sine map (BlocksSection.cpp)
     // Every check the project implies, composed once from the analyses above (assessReport):
     // page 1 and every section show it and compose no verdict of their own.
     Assessment assessment;
@@ -80,6 +85,10 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
 // The floor-motion analysis of a project with "floors" and a record (FloorsSection.cpp);
 // none otherwise or after a cancel. Throws ProjectError on an unreadable record.
 std::optional<FloorAnalysis> computeReportFloors(const Project& p, SweepControl* control);
+
+// The one-sine overturning map of each of the project's blocks (BlocksSection.cpp); fewer after
+// a cancel.
+std::vector<OverturningMap> computeReportBlockMaps(const Project& p, SweepControl* control);
 
 // The project's assessment from what the report ran: the sine's (or planar) check, the record's
 // verdicts, the floor analysis at the slab's level (core/assessment/Assessment.h).

@@ -66,6 +66,10 @@ void addNumericsSection(ReportDocument& doc, const Project& p, const ReportAnaly
 void addReferences(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
 // The floor-motion section (FloorsSection.cpp): only when the project has "floors" and a record.
 void addFloorsSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
+// The free-standing blocks (BlocksSection.cpp): only when the project has blocks and a record.
+void addBlocksSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);
+// The rocking literature, when the blocks section shows (none otherwise).
+QStringList blockCitations(const ReportAnalysis& a);
 // The study section (StudySection.cpp): only when the project has a study. Throws ReportError
 // naming study.spec or study.results when they cannot be read, or a study too large to run here.
 void addStudySection(ReportDocument& doc, const Project& p, const ReportAnalysis& a);

@@ -225,6 +225,7 @@ void addReferences(ReportDocument& doc, const Project& p, const ReportAnalysis& 
     }
     refs << studyCitations(p);
     refs << riskCitations(a);
+    refs << blockCitations(a);
     for (int k = 0; k < refs.size(); ++k)
         doc.addParagraph(QStringLiteral("[%1]  %2").arg(k + 1).arg(refs[k]), true);
 }

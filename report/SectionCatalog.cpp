@@ -21,6 +21,7 @@ constexpr SectionEntry kSections[] = {
     {"excitation", "Excitation (enveloped sine)", true, addExcitationSection},
     {"record", "Recorded excitation", true, addRecordSection},
     {"floors", "Floor motion", true, addFloorsSection},
+    {"blocks", "Free-standing blocks: rocking and overturning", true, addBlocksSection},
     {"surface", "γc surface, A_crit(f) and slice", true, addSurfaceSections},
     {"check", "Design check: which failure governs", true, addCheckSection},
     {"study", "Study: collapse fragility over a record suite", true, addStudySection},

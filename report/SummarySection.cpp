@@ -30,6 +30,8 @@ QString basisPhrase(CheckBasis b) {
         return QStringLiteral("the building's floor motions");
     case CheckBasis::Risk:
         return QStringLiteral("the study's fragilities against the site's hazard curve");
+    case CheckBasis::Block:
+        return QStringLiteral("the free-standing blocks on the building's floors");
     }
     return {};
 }
@@ -57,6 +59,12 @@ QString basisText(const Assessment& a, CheckBasis b) {
                               "(section \"Risk\"); excitation: %2; %3: %4 against %5.")
             .arg(qs(checkBasisName(b)), qs(c.excitation), qs(x.intensity), qs(x.demandName),
                  qs(x.capacityName));
+    if (b == CheckBasis::Block) // each block is its own model: the model is per check
+        return QStringLiteral("%1.NAME.*: the free-standing block NAME rocking on its level "
+                              "(section \"Free-standing blocks\"); excitation: %2; %3: %4 "
+                              "against the ground PGA at which it overturns, and the code's "
+                              "floor formula against its critical floor peak.")
+            .arg(qs(checkBasisName(b)), qs(c.excitation), qs(x.intensity), qs(x.demandName));
     QString s = QStringLiteral("%1.*: %2; excitation: %3; %4: %5 against %6.")
                     .arg(qs(checkBasisName(b)), qs(c.model), qs(c.excitation), qs(x.intensity),
                          qs(x.demandName), qs(x.capacityName));

@@ -20,6 +20,9 @@ const std::vector<ExampleProject>& exampleProjects() {
         {QObject::tr("The same building's floor motions under that record (16 levels)"),
          QStringLiteral(":/examples/paper-16-story-floors.json"),
          {QStringLiteral("records/RSN77_SFERN_PUL164.AT2")}},
+        {QObject::tr("The same building with free-standing blocks on the roof (rocking)"),
+         QStringLiteral(":/examples/paper-16-story-blocks.json"),
+         {QStringLiteral("records/RSN77_SFERN_PUL164.AT2")}},
         // The study spec names ../records/*.AT2 without the vertical components: the six
         // horizontal records below, all of which must sit beside the copy or the study shrinks.
         {QObject::tr("The same building with a record-suite study (collapse fragility)"),

@@ -46,20 +46,8 @@ std::string verdictWords(CheckBasis basis, CheckLevel level, bool holds) {
     return (holds ? "slab stays seated " : "slab slides off ") + at;
 }
 
-// The first comparison is the check's own; another governs only where it disagrees, i.e. does
-// not hold while the first does (then the failing one with the smallest margin). So the
-// margin follows the first comparison wherever the verdicts agree, and the verdict is the
-// more cautious one where they do not.
 void finish(Check& c) {
-    c.holds = true;
-    c.governingComparison = 0;
-    for (std::size_t k = 0; k < c.comparisons.size(); ++k) {
-        const Comparison& x = c.comparisons[k];
-        c.holds = c.holds && x.holds();
-        const Comparison& g = c.comparisons[c.governingComparison];
-        if (!x.holds() && (g.holds() || x.orderingMargin() < g.orderingMargin()))
-            c.governingComparison = k;
-    }
+    settleComparisons(c);
     c.verdict = verdictWords(c.basis, c.level, c.holds);
 }
 
@@ -217,6 +205,25 @@ std::optional<Check> riskCheck(const RiskCheckParts& r, const RiskSetPart& set,
     return c;
 }
 
+// Each block's checks; a note for a block that could not be checked, and for the blocks of a
+// project without a record (the blocks stand on the building's floors under the ground record).
+void addBlockChecks(const Project& p, const AssessmentParts& parts, Assessment& a) {
+    if (!parts.blocks) {
+        if (!p.blocks.empty() && !p.record)
+            a.notes.push_back("blocks: the project's block checks need a ground record "
+                              "(excitation.record); none ran");
+        return;
+    }
+    for (const BlockCheckPart& b : *parts.blocks) {
+        if (b.demands.empty())
+            a.notes.push_back(blockCheckPrefix(b.block) +
+                              ": not checked: no code of the project gives a floor demand "
+                              "(codes.asce7_22 or codes.ec8)");
+        for (Check& c : blockChecks(b, parts.recordName))
+            a.checks.push_back(std::move(c));
+    }
+}
+
 void pickGoverning(Assessment& a) {
     for (std::size_t k = 0; k < a.checks.size(); ++k)
         if (!a.governing || a.checks[k].governing().orderingMargin() <
@@ -310,6 +317,7 @@ Assessment composeAssessment(const Project& p, const AssessmentParts& parts) {
     else if (p.floors && !p.record)
         a.notes.push_back("floors: the project's floor check needs a ground record "
                           "(excitation.record); none ran");
+    addBlockChecks(p, parts, a);
     if (parts.risk)
         for (const RiskSetPart& set : parts.risk->sets)
             if (std::optional<Check> c = riskCheck(*parts.risk, set, a.notes))

@@ -17,8 +17,12 @@
 // - risk.setK   per parameter set K of the project's study (numbered from 0, as kinstab-cli risk
 //               --set K), the annual rate of the slab falling lambda_C (the set's fitted
 //               fragility against the study's hazard curve) against the target rate (when the
-//               study has results and a hazard curve; core/assessment/RiskCheck.h).
+//               study has results and a hazard curve; core/assessment/RiskCheck.h);
+// - block.NAME.CODE.LEVEL per free-standing block of the project's "blocks", the ground PGA at
+//               which it overturns on its level against the same code levels as the floor
+//               checks (when the project has a record; core/assessment/BlockCheck.h).
 
+#include "core/assessment/BlockCheck.h"
 #include "core/assessment/Check.h"
 #include "core/assessment/RiskCheck.h"
 #include "core/base/ModelKind.h"
@@ -48,7 +52,8 @@ struct AssessmentParts {
     std::optional<std::vector<CodeVerdict>> record; // against the record's critical peak
     std::string recordName;                         // the ground record's name
     std::optional<FloorCheckParts> floors;
-    std::optional<RiskCheckParts> risk; // the study's sets against its hazard curve
+    std::optional<RiskCheckParts> risk;                // the study's sets against its hazard curve
+    std::optional<std::vector<BlockCheckPart>> blocks; // the project's blocks, searched
 };
 
 struct Assessment {

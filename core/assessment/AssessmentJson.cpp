@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/assessment/AssessmentJson.h"
 
+#include <algorithm>
 #include <iomanip>
 #include <locale>
 #include <sstream>
@@ -66,12 +67,16 @@ nlohmann::json assessmentJson(const Assessment& a) {
 std::string assessmentTable(const Assessment& a) {
     std::ostringstream s;
     s.imbue(std::locale::classic());
-    s << std::left << std::setw(24) << "check" << std::setw(10) << "demand" << std::setw(10)
+    // Block ids carry the block's name: the column grows to the longest id.
+    int width = 24;
+    for (const Check& c : a.checks)
+        width = std::max(width, static_cast<int>(c.id.size()) + 2);
+    s << std::left << std::setw(width) << "check" << std::setw(10) << "demand" << std::setw(10)
       << "capacity" << std::setw(9) << "margin"
       << "verdict\n";
     for (const Check& c : a.checks) {
         const Comparison& x = c.governing();
-        s << std::setw(24) << c.id << std::setw(10) << quantityText(x, x.demand) << std::setw(10)
+        s << std::setw(width) << c.id << std::setw(10) << quantityText(x, x.demand) << std::setw(10)
           << (x.capacity ? quantityText(x, *x.capacity) : "none") << std::setw(9) << marginText(x)
           << c.verdict << "\n";
     }

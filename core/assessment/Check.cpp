@@ -21,6 +21,8 @@ std::string checkBasisName(CheckBasis b) {
         return "planar";
     case CheckBasis::Risk:
         return "risk";
+    case CheckBasis::Block:
+        return "block";
     }
     return "sine";
 }
@@ -35,6 +37,18 @@ std::string checkLevelName(CheckLevel l) {
         return "collapse";
     }
     return "design";
+}
+
+void settleComparisons(Check& c) {
+    c.holds = true;
+    c.governingComparison = 0;
+    for (std::size_t k = 0; k < c.comparisons.size(); ++k) {
+        const Comparison& x = c.comparisons[k];
+        c.holds = c.holds && x.holds();
+        const Comparison& g = c.comparisons[c.governingComparison];
+        if (!x.holds() && (g.holds() || x.orderingMargin() < g.orderingMargin()))
+            c.governingComparison = k;
+    }
 }
 
 double Comparison::orderingMargin() const {

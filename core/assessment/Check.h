@@ -17,8 +17,10 @@ namespace kinstab {
 // not), the building's floor motions under a ground record, the planar slab of ch. VI, or a
 // study's collapse fragility integrated against the site's hazard curve (the annual rate of the
 // slab falling against a target rate).
-enum class CheckBasis { Sine, Record, Floors, Planar, Risk };
-std::string checkBasisName(CheckBasis b); // "sine" | "record" | "floors" | "planar" | "risk"
+// A free-standing block on a level of the building (Block) is checked like the slab on its floor.
+enum class CheckBasis { Sine, Record, Floors, Planar, Risk, Block };
+// "sine" | "record" | "floors" | "planar" | "risk" | "block"
+std::string checkBasisName(CheckBasis b);
 
 // The code level the demand belongs to: the design level (the paper's ch. V question: does the
 // structure reach its code strength before the slab slides off?) or MCE_R (does the slab stay
@@ -64,5 +66,10 @@ struct Check {
 
     const Comparison& governing() const { return comparisons.at(governingComparison); }
 };
+
+// Sets holds (every comparison holds) and governingComparison: the first comparison is the
+// check's own; another governs only where it disagrees (does not hold while the first does),
+// then the failing one with the smallest margin. The verdict is the caller's.
+void settleComparisons(Check& c);
 
 } // namespace kinstab

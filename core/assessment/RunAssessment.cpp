@@ -88,6 +88,8 @@ AssessmentRun runAssessment(const Project& p, const std::optional<PlanarCase>& p
             run.parts.record = run.record->verdicts;
             run.parts.recordName = run.record->ground.name;
             if (p.floors) run.parts.floors = slabLevelFloors(p, run.record->ground, control);
+            if (!p.blocks.empty())
+                run.parts.blocks = blockCheckParts(p, run.record->ground, &control.sweepControl());
         }
     }
     run.cancelled = control.isCancelled();

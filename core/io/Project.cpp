@@ -5,6 +5,7 @@
 #include "core/base/InputLimits.h"
 #include "core/base/TextInput.h"
 #include "core/io/AtomicFile.h"
+#include "core/io/BlockJson.h"
 #include "core/io/CodesJson.h"
 #include "core/io/FloorsJson.h"
 #include "core/io/JsonReader.h"
@@ -63,6 +64,7 @@ std::string validateProject(const Project& p) {
     if (e.empty()) e = validatePlanarSettings(p.planar);
     if (e.empty() && p.record) e = validateRecordExcitation(*p.record);
     if (e.empty() && p.floors) e = validateFloorSettings(*p.floors, p.building.stories);
+    if (e.empty()) e = validateFreeBlocks(p.blocks, p.building.stories);
     return e;
 }
 
@@ -168,8 +170,9 @@ json projectToJson(const Project& p, const std::string& baseDir) {
               {"check", checkToJson(p.critical)},
               {"excitation", excitationToJson(p.record, baseDir)},
               {"floors", p.floors ? floorSettingsToJson(*p.floors) : json()}};
-    if (!p.info.empty()) j["info"] = projectInfoToJson(p.info); // older files have none
-    if (p.study) j["study"] = studyToJson(*p.study, baseDir);   // nor a study
+    if (!p.info.empty()) j["info"] = projectInfoToJson(p.info);      // older files have none
+    if (p.study) j["study"] = studyToJson(*p.study, baseDir);        // nor a study
+    if (!p.blocks.empty()) j["blocks"] = freeBlocksToJson(p.blocks); // nor blocks
     return j;
 }
 
@@ -199,6 +202,7 @@ Project projectFromJson(const json& j, const std::string& baseDir) {
         p.record = excitationFromJson(r, baseDir);
         if (auto f = r.optionalObject("floors")) p.floors = floorSettingsFromJson(*f);
         p.study = studyFromJson(r, baseDir);
+        if (r.has("blocks")) p.blocks = freeBlocksFromJson(r);
         if (const std::string e = validateProject(p); !e.empty()) throw ProjectError(e);
         if (p.record) checkRecordFile(*p.record);
         if (p.study) checkStudyFile(*p.study);

@@ -13,6 +13,7 @@
 #include "core/excitation/RecordExcitation.h"
 #include "core/io/ProjectInfo.h"
 #include "core/io/StudyJson.h"
+#include "core/rocking/FreeBlock.h"
 #include "core/slab/PlanarSettings.h"
 #include "core/slab/Slab1DCase.h"
 #include "core/sweep/CriticalAmplitude.h"
@@ -48,6 +49,7 @@ struct Project {
     std::optional<RecordExcitation> record; // a record drives the slab; none: the enveloped sine
     std::optional<FloorSettings> floors;    // the floor-motion check; present: the report shows it
     std::optional<ProjectStudy> study;      // a record-suite study; present: the report shows it
+    std::vector<FreeBlock> blocks; // free-standing blocks on levels, each a check (with a record)
 };
 
 // The paper's 16-story building (chapter V) with the paper's slab, envelope and grid.

@@ -142,9 +142,10 @@ private slots:
         QTest::newRow("paper 16-story") << 0 << "slab1d" << false;
         QTest::newRow("Pacoima Dam record") << 1 << "slab1d" << true;
         QTest::newRow("floors") << 2 << "slab1d" << true;
-        QTest::newRow("study") << 3 << "slab1d" << false;
-        QTest::newRow("risk") << 4 << "slab1d" << false;
-        QTest::newRow("planar") << 5 << "planar" << false;
+        QTest::newRow("blocks") << 3 << "slab1d" << true;
+        QTest::newRow("study") << 4 << "slab1d" << false;
+        QTest::newRow("risk") << 5 << "slab1d" << false;
+        QTest::newRow("planar") << 6 << "planar" << false;
     }
     void openExamples() {
         // Copied out of the resources with the records they name, then opened as a user would:
