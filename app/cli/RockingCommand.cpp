@@ -204,9 +204,11 @@ nlohmann::json criticalJson(const RockingModel& m, const RockingExcitation& e, c
 int runRocking(const ArgList& argv) {
     std::set<std::string> flags = rockingModelFlagNames();
     flags.merge(recordReadFlagNames());
-    flags.insert({"pulse", "pulse-frequency", "pulse-duration", "amplitude", "frequency",
-                  "envelope", "alpha", "beta", "record", "scale-factor", "vertical", "project",
-                  "level", "max-amplitude", "scan-points", "tolerance", "history", "history-step"});
+    flags.insert({"pulse",       "pulse-frequency", "pulse-duration", "amplitude",
+                  "frequency",   "envelope",        "alpha",          "beta",
+                  "record",      "scale-factor",    "floor-period",   "damping",
+                  "vertical",    "project",         "level",          "max-amplitude",
+                  "scan-points", "tolerance",       "history",        "history-step"});
     const Args args(argv, flags, {"linear", "critical"});
     const RockingModel m = rockingModelFromFlags(args);
     if (args.has("history")) checkOutputPath("history", args.text("history"));

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The block flags of `kinstab-cli rocking`, `rocking-map` and `bench --rocking`
-// (docs/theory.md "Free-standing blocks"):
+// (docs/theory.md §10):
 //   --half-width B --half-height H (m) [--restitution E] [--linear] [--mu M]
 //   [--initial-tilt R] [--duration S]
 

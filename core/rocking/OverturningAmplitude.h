@@ -38,8 +38,9 @@ struct OverturningIntervals {
     long runs = 0;
 };
 
-// Throws what simulateRocking throws; a cancel stops between runs and returns what is known so
-// far with `complete` false in control's sense (the caller checks control->isCancelled()).
+// Throws what simulateRocking throws. control: progress (scan points done, of scanPoints) and
+// cancel, which stops between runs and returns the intervals found so far (the caller tells a
+// cancelled search by control->isCancelled()).
 OverturningIntervals overturningIntervals(const RockingModel& model, const MotionFamily& family,
                                           const OverturningSearch& search = {},
                                           const SweepControl* control = nullptr);

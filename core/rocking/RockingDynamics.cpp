@@ -30,10 +30,17 @@ double rockingAcceleration(const BlockConstants& k, double z, double theta, Base
 
 ContactForce rockingContact(const BlockConstants& k, double z, double theta, double omega,
                             double thetaAccel, BaseAccel a) {
+    ContactForce f;
+    if (k.linear) {
+        // To the first order of the linearised equation: the rotation's own terms R s theta''
+        // and R theta'^2 are of second order in (alpha, theta), so N is gravity's.
+        f.friction = g * z * a.h + k.radius * z * thetaAccel;
+        f.normal = g * (1.0 + a.v);
+        return f;
+    }
     const double d = k.alpha - z * theta;
     const double s = std::sin(d), c = std::cos(d);
     const double tz = z * thetaAccel, wz = z * omega;
-    ContactForce f;
     f.friction = g * z * a.h + k.radius * (c * tz + s * wz * wz);
     f.normal = g * (1.0 + a.v) + k.radius * (s * tz - c * wz * wz);
     return f;

@@ -43,7 +43,10 @@ struct BaseAccel {
 double rockingAcceleration(const BlockConstants& k, double z, double theta, BaseAccel a);
 
 // The base's force per unit mass on the corner z while the block rocks with theta'', in the
-// corner's frame (F along its +x), m/s^2.
+// corner's frame (F along its +x), m/s^2. Linearised equations: to their order,
+// F = g a_z + R theta_z'' and N = g (1 + a_v) (the terms R s theta'' and R c theta'^2 are of
+// second order in alpha and theta), so a linearised block leaves its base only with the base
+// falling faster than gravity, as the literature's linear analyses assume.
 struct ContactForce {
     double friction = 0; // F
     double normal = 0;   // N

@@ -27,8 +27,9 @@ struct RockingModel {
     // theta0 / alpha in [0, 1): the block is released from rest at theta0 = initialTilt alpha
     // (rotating about the corner at +x, the sign convention of RockingSolver.h).
     double initialTilt = 0.0;
-    // s: the run ends here at the latest; none: when the base motion has ended and the block's
-    // fate is decided (at rest, or free rocking that cannot overturn, or overturned), bounded by
+    // s: the run ends here at the latest. None: it ends once the base motion has ended and the
+    // block is at rest or overturned, or rocks freely without being able to overturn (then
+    // followed to rest, or for 200 impacts when it never comes to rest: eta = 1); bounded by
     // RockingLimits.
     std::optional<double> duration;
 };

@@ -47,7 +47,9 @@ struct RockingRunOptions {
     RockingLimits limits;
     RockingRecorder recorder;     // none: no history
     double sampleInterval = 0.01; // s between recorded samples (events are always recorded)
-    // Stop as soon as the outcome is Overturns (the map and critical searches need no time).
+    // Stop as soon as the fate is decided: overturning (no overturning time then), or, without a
+    // duration, free rocking that cannot overturn (the map and the critical searches need no
+    // more).
     bool stopAtOverturnDecision = false;
 };
 

@@ -109,6 +109,34 @@ private slots:
         QVERIFY(!held.slideRocked && !held.slid);
         QCOMPARE(held.maxSliding, 0.0);
     }
+    void ampleFrictionIsAHeldBase() {
+        // With friction to spare (mu = 10, far above what the pivot needs while it rocks) the
+        // block never slides: the run is the one of a base that holds it (mu absent), to the
+        // bit. A block already falling over is the exception: near theta = pi/2 its normal force
+        // vanishes and the corner slips (slide-rock), but it overturns all the same.
+        RockingModel held;
+        held.block = {0.2, 0.6};
+        RockingModel rough = held;
+        rough.mu = 10.0;
+        Pulse pulse;
+        pulse.shape = PulseShape::OneSine;
+        pulse.frequencyHz = 1.5;
+        for (double a : {0.35, 0.4, 0.45, 0.5, 0.8}) {
+            pulse.amplitude = a;
+            const RockingResult h = simulateRocking(held, PulseMotion(pulse));
+            RockingModel withDuration = rough;
+            // mu given: no energy shortcut after the motion, so give it time to fall or rest
+            withDuration.duration = h.endTime + 10.0;
+            const RockingResult r = simulateRocking(withDuration, PulseMotion(pulse));
+            QCOMPARE(r.outcome, h.outcome);
+            if (h.outcome == RockingOutcome::Overturns) continue;
+            QVERIFY(!r.slid);
+            QVERIFY(h.impactTimes.size() > 3);
+            QCOMPARE(r.impactTimes.size(), h.impactTimes.size());
+            for (std::size_t i = 0; i < h.impactTimes.size(); ++i)
+                QCOMPARE(r.impactTimes[i], h.impactTimes[i]);
+        }
+    }
     void baseDroppingAwayLiftsTheBlock() {
         // With a vertical base acceleration below -g the base falls faster than the block: the
         // normal force vanishes and the run stops there (LeavesBase), at the instant 1 + a_v = 0.
