@@ -258,3 +258,98 @@ def read_hazard(
     ``source`` and ``zero_rate_points_dropped``. ``measure`` picks a USGS file's curve and is
     checked against the file's; a bad file raises ValueError naming the file and line."""
     return _core._read_hazard(str(path), hazard_format, site, measure)
+
+
+class RockingRun(dict):
+    """A free-standing block's run: the keys of ``kinstab-cli rocking``'s JSON (``outcome``,
+    ``max_theta_over_alpha``, ``impact_times_s``, ``overturn_time_s``, ...), also readable as
+    attributes (``r.outcome``)."""
+
+    def __getattr__(self, name: str):
+        try:
+            return self[name]
+        except KeyError:
+            raise AttributeError(name) from None
+
+
+def _record_of(record):
+    if record is None or isinstance(record, Record):
+        return record
+    return read_record(str(record))
+
+
+def rocking(
+    *,
+    half_width: float,
+    half_height: float,
+    restitution: Optional[float] = None,
+    linear: bool = False,
+    mu: Optional[float] = None,
+    initial_tilt: float = 0.0,
+    duration: Optional[float] = None,
+    pulse: Optional[str] = None,
+    amplitude: Optional[float] = None,
+    pulse_frequency: Optional[float] = None,
+    pulse_duration: Optional[float] = None,
+    record=None,
+    history: bool = False,
+    history_step: float = 0.01,
+) -> RockingRun:
+    """One run of a free-standing rigid block (half-width ``half_width``, half-height
+    ``half_height``, m; docs/theory.md §10): under ``pulse`` ('half-sine', 'one-sine',
+    'one-cosine' with ``amplitude`` g and ``pulse_frequency`` Hz, 'rectangular' with
+    ``pulse_duration`` s), under ``record`` (a path or a :class:`Record`, scaled to peak
+    ``amplitude`` g when given), or free rocking from ``initial_tilt`` (theta0 / alpha).
+    ``restitution`` None is Housner's; ``mu`` None: it never slides. ``history=True`` adds
+    ``t_s``, ``theta_rad``, ``omega_rad_s``, ``sliding_m`` arrays every ``history_step`` s."""
+    return RockingRun(_core._rocking(
+        half_width, half_height, restitution, linear, mu, initial_tilt, duration, pulse,
+        _record_of(record), amplitude, pulse_frequency, pulse_duration, history,
+        history_step))
+
+
+def rocking_critical(
+    *,
+    half_width: float,
+    half_height: float,
+    restitution: Optional[float] = None,
+    linear: bool = False,
+    mu: Optional[float] = None,
+    pulse: Optional[str] = None,
+    pulse_frequency: Optional[float] = None,
+    pulse_duration: Optional[float] = None,
+    record=None,
+    max_amplitude: float = 5.0,
+    scan_points: int = 200,
+    tolerance: float = 1e-4,
+) -> dict:
+    """The amplitudes (g; a record: its peak) that overturn the block under a pulse shape or a
+    record, as ``kinstab-cli rocking --critical``: ``critical_amplitude_g`` (None when nothing
+    up to ``max_amplitude`` overturns) and ``overturning_intervals_g`` [(from, to), ...], where
+    a gap above the first interval is a safe cape (Zhang & Makris 2001)."""
+    return _core._rocking_critical(
+        half_width, half_height, restitution, linear, mu, pulse, _record_of(record),
+        pulse_frequency, pulse_duration, max_amplitude, scan_points, tolerance)
+
+
+def overturning_map(
+    *,
+    half_width: float,
+    half_height: float,
+    restitution: Optional[float] = None,
+    linear: bool = False,
+    mu: Optional[float] = None,
+    shape: str = "one-sine",
+    amplitudes: Tuple[float, float] = (0.5, 10.0),
+    frequencies: Tuple[float, float] = (0.5, 10.0),
+    amplitude_points: int = 101,
+    frequency_points: int = 101,
+    threads: int = 0,
+) -> dict:
+    """The overturning map of a pulse shape (Zhang & Makris 2001, figs. 7-9), as
+    ``kinstab-cli rocking-map``: ``amplitudes`` a_p / (alpha g) and ``frequencies`` omega_p / p
+    (1-D arrays), ``overturns`` (uint8, [frequency, amplitude]: 0 stands, 1 overturns, 2 leaves
+    the base) and ``max_theta_over_alpha`` (float, same shape); also ``alpha_rad``, ``p_rad_s``."""
+    return _core._overturning_map(
+        half_width, half_height, restitution, linear, mu, shape, tuple(amplitudes),
+        tuple(frequencies), amplitude_points, frequency_points, threads)

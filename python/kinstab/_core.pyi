@@ -210,3 +210,46 @@ def _core_seconds(
 
 def study_case_count(spec: str) -> int: ...
 def study_rows(spec: str, cases: list[int]) -> list[str]: ...
+def _rocking(
+    half_width: float,
+    half_height: float,
+    restitution: Optional[float],
+    linear: bool,
+    mu: Optional[float],
+    initial_tilt: float,
+    duration: Optional[float],
+    pulse: Optional[str],
+    record: Optional[Record],
+    amplitude: Optional[float],
+    pulse_frequency: Optional[float],
+    pulse_duration: Optional[float],
+    history: bool,
+    history_step: float,
+) -> dict: ...
+def _rocking_critical(
+    half_width: float,
+    half_height: float,
+    restitution: Optional[float],
+    linear: bool,
+    mu: Optional[float],
+    pulse: Optional[str],
+    record: Optional[Record],
+    pulse_frequency: Optional[float],
+    pulse_duration: Optional[float],
+    max_amplitude: float,
+    scan_points: int,
+    tolerance: float,
+) -> dict: ...
+def _overturning_map(
+    half_width: float,
+    half_height: float,
+    restitution: Optional[float],
+    linear: bool,
+    mu: Optional[float],
+    shape: str,
+    amplitudes: tuple[float, float],
+    frequencies: tuple[float, float],
+    amplitude_points: int,
+    frequency_points: int,
+    threads: int,
+) -> dict: ...

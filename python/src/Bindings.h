@@ -16,5 +16,6 @@ void bindFriction(pybind11::module_& m); // calibrate: the friction law of ch. I
 void bindStudy(pybind11::module_& m);    // study_case_count, study_rows (the Dask driver)
 void bindAssess(pybind11::module_& m);   // assess: a project's assessment
 void bindRisk(pybind11::module_& m);     // _risk_json, _read_hazard: collapse risk
+void bindRocking(pybind11::module_& m);  // _rocking, _rocking_critical, _overturning_map
 
 } // namespace kinstab::python

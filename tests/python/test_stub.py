@@ -25,7 +25,8 @@ def test_stub_covers_the_extension():
 
 def test_public_functions_documented():
     for name in ("simulate", "surface", "critical", "simulate_record", "codes", "slab_case",
-                 "read_record", "floor_filter", "risk", "read_hazard"):
+                 "read_record", "floor_filter", "risk", "read_hazard", "rocking",
+                 "rocking_critical", "overturning_map"):
         assert inspect.getdoc(getattr(kinstab, name)), name
     assert inspect.getdoc(kinstab.friction.calibrate)
     assert inspect.getdoc(kinstab.Envelope)
