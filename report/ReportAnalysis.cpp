@@ -195,9 +195,10 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
             designSlice(project, model, a.check, *fd, options.sliceStep, control, a.figureRuns);
     if (project.record) a.record = recordCheck(project, request, ctl);
     a.floors = computeReportFloors(project, control);
-    if (a.record && !project.blocks.empty())
+    if (a.record && !project.blocks.empty()) {
         a.blocks = blockCheckParts(project, a.record->ground, control);
-    a.blockMaps = computeReportBlockMaps(project, control);
+        a.blockMaps = computeReportBlockMaps(project, control);
+    }
     // The paper's RK4 solver is of the 1-DOF model only.
     if (options.crossCheck && c.solver == SolverKind::Exact && !planar)
         a.crossCheck = crossCheck(project, a.projectSweep, options.crossCheckSteps);
