@@ -128,6 +128,12 @@ void addAcceptanceCriterion(ReportDocument& doc, const Project& p, const ReportA
             "it governs where it fails while the ground comparison holds): above 1 the slab stays "
             "seated at that level of shaking, "
             "below 1 it slides off");
+    if (hasBasis(s, CheckBasis::Block))
+        criteria << QStringLiteral(
+            "for the block checks, margin = the ground PGA at which the free-standing block on "
+            "its level overturns / the ground acceleration of the code level (the code's floor "
+            "formula beside it, as for the floor checks): above 1 the block stays standing at "
+            "that level of shaking, below 1 it overturns and must be anchored or restrained");
     doc.addParagraph(
         QStringLiteral("Acceptance criterion: every check's margin must exceed 1; %1. A check "
                        "that does not hold asks for a longer slab seating or a restrained slab. "

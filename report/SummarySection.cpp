@@ -117,10 +117,13 @@ void addChecksTable(ReportDocument& doc, const Assessment& a) {
     // each cell instead.
     const bool allG = std::all_of(a.checks.begin(), a.checks.end(),
                                   [](const Check& c) { return c.governing().unit == "g"; });
+    const bool wideIds = hasBasis(a, CheckBasis::Block);
     Table t{{"check", allG ? "demand (g)" : "demand", allG ? "capacity (g)" : "capacity", "margin",
              "verdict"},
             {},
-            {1.9, allG ? 0.8 : 1.35, allG ? 0.9 : 1.35, 0.7, allG ? 3.0 : 2.6},
+            // Block ids carry the block's name: a wider id column keeps each on one line.
+            {wideIds ? 2.6 : 1.9, allG ? 0.8 : 1.35, allG ? 0.9 : 1.35, 0.7,
+             (allG ? 3.0 : 2.6) - (wideIds ? 0.7 : 0.0)},
             {Align::Left, Align::Right, Align::Right, Align::Right, Align::Left},
             {}};
     for (std::size_t k = 0; k < a.checks.size(); ++k) {
