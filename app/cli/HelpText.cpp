@@ -169,7 +169,8 @@ const char* kReport =
     "  --figure-grid N              grid points per axis of the surface figure [41]\n"
     "  --sections LIST              optional sections, comma-separated, or all [all]:\n"
     "                               assumptions, symbols, inputs, codes, excitation, record,\n"
-    "                               floors, surface, check, study, numerics, references (the\n"
+    "                               floors, blocks, surface, check, study, numerics, references\n"
+    "                               (blocks: when the project names free-standing blocks; the\n"
     "                               title block, the verdict and the signature block are\n"
     "                               always printed; study: when the project names a study)\n";
 

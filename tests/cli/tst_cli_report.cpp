@@ -137,7 +137,7 @@ private slots:
         // The help names every section key.
         const QString help = QString::fromUtf8(cli({"report", "--help"}).out);
         for (const char* key : {"assumptions", "symbols", "inputs", "codes", "excitation", "record",
-                                "floors", "surface", "check", "numerics", "references"})
+                                "floors", "blocks", "surface", "check", "numerics", "references"})
             QVERIFY2(help.contains(QString::fromUtf8(key)), key);
     }
 
