@@ -129,13 +129,18 @@ void VerdictPanel::setAssessment(const Assessment& a, const QString& scope) {
         const Comparison& x = c.governing();
         m_codes << report::shortCodeName(c.code);
         m_ids << QString::fromStdString(c.id);
-        const QString level = c.basis == CheckBasis::Floors && c.code == "asce7_22"
+        const bool perLevel = c.basis == CheckBasis::Floors || c.basis == CheckBasis::Block;
+        const QString level = perLevel && c.code == "asce7_22"
                                   ? (c.level == CheckLevel::MceR ? tr("\nMCE_R") : tr("\ndesign"))
                                   : QString();
+        // A block's check names its block ("block.parapet.ec8": the name between the dots).
+        const QString basis =
+            c.basis == CheckBasis::Block
+                ? QStringLiteral("block\n") + m_ids.back().section(QLatin1Char('.'), 1, 1)
+                : QString::fromStdString(checkBasisName(c.basis));
         setRow(
             i,
-            {QString::fromStdString(checkBasisName(c.basis)), m_codes.back() + level,
-             QString::fromStdString(quantityText(x, x.demand)),
+            {basis, m_codes.back() + level, QString::fromStdString(quantityText(x, x.demand)),
              x.capacity ? QString::fromStdString(quantityText(x, *x.capacity)) : tr("none ≤ limit"),
              marginCell(x), QString::fromStdString(c.verdict)},
             tr("%1: %2\n%3 against %4 (%5)\nModel: %6\nExcitation: %7")
