@@ -29,9 +29,7 @@ import numpy as np
 
 from . import _core
 from ._api import Default as _D
-from ._api import given as _given
 from ._api import public as _public
-from ._api import value as _value
 from ._core import (
     EXIT_SIDES,
     OUTCOMES,
@@ -110,15 +108,23 @@ def slab_case(
                       normalization=planar.normalization, vertical=planar.vertical)
 
 
+_default_case: Optional[SlabCase] = None
+
+
 def _case(function: str, case: Optional[Union[SlabCase, PlanarCase]],
           keywords: dict) -> Union[SlabCase, PlanarCase]:
-    set_ = _given(keywords)
+    global _default_case
+    set_ = {k: v for k, v in keywords.items() if v.__class__ is not _D}
     if case is not None:
         if set_:
             raise ValueError(f"{function}(): give either case= or the case keywords, not both ("
                              + ", ".join(sorted(set_)) + ")")
         return case
-    return slab_case(**{k: _value(v) for k, v in keywords.items()})
+    if set_:
+        return slab_case(**set_)  # slab_case's defaults are the keywords' defaults
+    if _default_case is None:  # a case is immutable: the default one is made once
+        _default_case = slab_case()
+    return _default_case
 
 
 @_public

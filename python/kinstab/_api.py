@@ -18,7 +18,7 @@ import inspect
 import numbers
 import os
 import re
-from typing import Any, Callable, Dict, TypeVar
+from typing import Any, Callable, TypeVar
 
 import numpy as np
 
@@ -43,16 +43,6 @@ class Default:
 
     def __repr__(self) -> str:
         return repr(self.value)
-
-
-def value(v: Any) -> Any:
-    """The value itself, a default unwrapped."""
-    return v.value if isinstance(v, Default) else v
-
-
-def given(keywords: Dict[str, Any]) -> Dict[str, Any]:
-    """The keywords the caller set."""
-    return {k: v for k, v in keywords.items() if not isinstance(v, Default)}
 
 
 def _kind(v: Any) -> str:
@@ -107,14 +97,21 @@ def _binding_error(function: str, sig: inspect.Signature, e: TypeError) -> TypeE
 
 
 def public(f: F) -> F:
-    """Checks the call against f's signature and annotations before running f."""
+    """Runs f; when the call goes wrong, says how in f's own terms.
+
+    The happy path costs one extra call (``simulate`` is called in loops): the arguments are
+    checked up front only for a function that reads files (a missing file is then
+    FileNotFoundError before the engine's "cannot open"); otherwise only when f raises
+    TypeError, which Python's binding (a misspelt keyword) or the engine's (a list where a number
+    belongs) gives, the arguments are checked against the annotations to name the one at fault.
+    """
     sig = inspect.signature(f)
     name = f.__qualname__
     checked = {n: p.annotation for n, p in sig.parameters.items()
                if isinstance(p.annotation, str)}
+    reads_files = any(a in _FILE for a in checked.values())
 
-    @functools.wraps(f)
-    def wrapper(*args: Any, **kwargs: Any) -> Any:
+    def check_all(args: Any, kwargs: Any) -> None:
         try:
             bound = sig.bind(*args, **kwargs)
         except TypeError as e:
@@ -122,7 +119,17 @@ def public(f: F) -> F:
         for arg, v in bound.arguments.items():
             if arg in checked:
                 _check(name, arg, checked[arg], v)
-        return f(*args, **kwargs)
+
+    @functools.wraps(f)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        if reads_files:
+            check_all(args, kwargs)
+        try:
+            return f(*args, **kwargs)
+        except TypeError as e:
+            error = e
+        check_all(args, kwargs)  # raises the named error when an argument is at fault
+        raise error
 
     return wrapper  # type: ignore[return-value]
 

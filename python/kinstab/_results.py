@@ -34,7 +34,9 @@ class Floors(dict):
     def to_dataframe(self) -> Any:
         """One row per level, bottom first, with the keys of ``self["levels"]``."""
         levels = self["levels"]
-        return frame(levels, list(levels[0].keys()) if levels else [])
+        keys = list(levels[0].keys()) if levels else []
+        first = [k for k in ("level", "height", "weight") if k in keys]
+        return frame(levels, first + [k for k in keys if k not in first])
 
 
 _SET_COLUMNS = ["set", "mu", "tstar", "limit", "floor_period_s", "floor_damping", "level",
