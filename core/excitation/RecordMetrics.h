@@ -12,6 +12,13 @@
 // (PEER NGA AT2, COSMOS and CSMIP V2) are processed, baseline-corrected records, and a
 // correction of our own would change their PGV and PGD away from the published ones. The
 // velocity left at the end (`finalVelocity`) shows how much drift an uncorrected file carries.
+//
+// Sources: Arias, A. (1970), "A measure of earthquake intensity", in Hansen (ed.), Seismic Design
+// for Nuclear Power Plants, MIT Press, 438-483; Trifunac, M.D. & Brady, A.G. (1975), "A study on
+// the duration of strong earthquake ground motion", BSSA 65(3), 581-626; Rathje, E.M.,
+// Abrahamson, N.A. & Bray, J.D. (1998), "Simplified frequency content estimates of earthquake
+// ground motions", J. Geotech. Geoenviron. Eng. 124(2), 150-159; Nigam, N.C. & Jennings, P.C.
+// (1969), "Calculation of response spectra from strong-motion earthquake records", BSSA 59(2).
 
 #include "core/records/Accelerogram.h"
 

@@ -5,7 +5,9 @@
 
 #include "core/base/PhysicalConstants.h"
 #include "core/excitation/RecordMetrics.h"
+#include "core/io/StudySpecJson.h"
 #include "core/records/RecordReader.h"
+#include "core/study/StudyRecordMetrics.h"
 
 #include <QtTest>
 
@@ -45,6 +47,7 @@ private slots:
     void spectralAccelerationOfAStep();
     void elCentroAgainstNumpy();
     void zeroRecordHasNoDuration();
+    void studyRecordsAsTheSuiteGivesThem();
 };
 
 // a = A sin(2 pi f t) from rest, A = 0.3 g, f = 1 Hz, 20 s: v = A g (1 - cos w t) / w, so
@@ -142,6 +145,38 @@ void TestRecordMetrics::zeroRecordHasNoDuration() {
     QCOMPARE(m.arias, 0.0);
     QVERIFY(!m.d5_95 && !m.t5 && !m.meanPeriod);
     QCOMPARE(m.sa->g, 0.0);
+}
+
+// A study's record table: each record times its scale (PGA and PGV scale with it, Arias with its
+// square), Sa at the study's Sa period, none for a PGA study without floor filters.
+void TestRecordMetrics::studyRecordsAsTheSuiteGivesThem() {
+    const std::string elCentro =
+        KINSTAB_SOURCE_DIR "/resources/records/RSN6_IMPVALL.I_I-ELC180.AT2";
+    const std::string text = R"({"format": "kinstab-study", "version": 1,
+        "records": [{"path": ")" +
+                             elCentro + R"(", "scale": 2},
+                    {"path": ")" +
+                             elCentro + R"("}],
+        "intensity": {"measure": "sa", "period_s": 1.0},
+        "parameters": {"mu": [0.6], "tstar": [0.099]}})";
+    const StudySpec spec = studyFromJsonText(text, "");
+    QCOMPARE(studySaPeriod(spec), std::optional<double>(1.0));
+    const std::vector<StudyRecordMetrics> m = studyRecordMetrics(spec);
+    QCOMPARE(m.size(), std::size_t(2));
+    QCOMPARE(m[1].record, spec.records[1].label);
+    closeRel(m[1].metrics.pga, 0.2807955, 1e-9); // the NumPy figures above
+    closeRel(m[1].metrics.sa->g, 0.4728542132, 1e-7);
+    closeRel(m[0].metrics.pga, 2 * 0.2807955, 1e-9);
+    closeRel(m[0].metrics.pgv, 2 * 0.309286895, 1e-8);
+    closeRel(m[0].metrics.arias, 4 * 1.541858564, 1e-8);
+    closeRel(m[0].metrics.sa->g, 2 * 0.4728542132, 1e-7);
+    closeRel(*m[0].metrics.d5_95, *m[1].metrics.d5_95, 1e-12); // a scale keeps the shape
+    const StudySpec pga =
+        studyFromJsonText(R"({"format": "kinstab-study", "version": 1, "records": [{"path": ")" +
+                              elCentro + R"("}], "parameters": {"mu": [0.6], "tstar": [0.099]}})",
+                          "");
+    QVERIFY(!studySaPeriod(pga));
+    QVERIFY(!studyRecordMetrics(pga)[0].metrics.sa);
 }
 
 QTEST_APPLESS_MAIN(TestRecordMetrics)
