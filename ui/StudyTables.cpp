@@ -31,6 +31,7 @@ QTableWidget* makeTable(QWidget* parent, const QStringList& headers) {
     auto* t = new QTableWidget(0, static_cast<int>(headers.size()), parent);
     t->setHorizontalHeaderLabels(headers);
     t->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    t->horizontalHeader()->setStretchLastSection(true);
     t->setMinimumHeight(t->horizontalHeader()->sizeHint().height() +
                         4 * t->verticalHeader()->defaultSectionSize() + 2 * t->frameWidth());
     return t;
@@ -48,7 +49,11 @@ QTableWidget* makeStudyCaseTable(QWidget* parent) {
                            tr("Critical IM g"), tr("Runs")};
     headers += recordMetricsHeaders();
     QTableWidget* t = makeTable(parent, headers);
-    t->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    // Thirteen columns: the record's path elided on the left keeps its file name in view (the
+    // whole path in the cell's tooltip).
+    t->setWordWrap(false);
+    t->setTextElideMode(Qt::ElideLeft);
+    t->setColumnWidth(0, 240);
     for (int c = 6; c < t->columnCount(); ++c)
         t->horizontalHeaderItem(c)->setToolTip(recordMetricsToolTip());
     return t;
@@ -64,7 +69,6 @@ QTableWidget* makeStudySetTable(QWidget* parent) {
                      "standard deviation (n − 1) of the critical intensity and of its natural "
                      "logarithm; censored: records that did not collapse up to the search "
                      "limit. Fit: the lognormal fragility with the censored records."));
-    t->horizontalHeader()->setSectionResizeMode(3, QHeaderView::Stretch);
     return t;
 }
 
@@ -87,7 +91,10 @@ void fillStudyCaseTable(QTableWidget* t, const std::vector<StudyRow>& rows,
         if (const auto it = byRecord.find(r.record); it != byRecord.end())
             cells += recordMetricsCells(*it->second);
         setRow(t, i, cells);
+        t->item(i, 0)->setToolTip(cells[0]);
     }
+    for (int c = 1; c < t->columnCount(); ++c)
+        t->resizeColumnToContents(c);
 }
 
 void fillStudySetTable(QTableWidget* t, const std::vector<Fragility>& sets) {
@@ -103,6 +110,7 @@ void fillStudySetTable(QTableWidget* t, const std::vector<Fragility>& sets) {
                 f.fit ? number(f.fit->median) : tr("no fit"),
                 f.fit ? number(f.fit->beta) : QStringLiteral("–")});
     }
+    t->resizeColumnsToContents();
 }
 
 } // namespace kinstab::ui
