@@ -101,12 +101,16 @@ const char* kBench =
 
 const char* kRecord =
     "usage: kinstab-cli record --file FILE [record flags] [--peaks N] [--spectrum-csv FILE]\n"
-    "Reads an accelerogram and prints what was read: format, samples, dt, peak, and with\n"
-    "--floor-period the floor motion that a slab on that floor feels.\n"
+    "                          [--sa-period S]\n"
+    "Reads an accelerogram and prints what was read: format, samples, dt, peak, its metrics\n"
+    "(PGA, PGV, PGD, Arias intensity, D5-95, mean period, Sa) and with --floor-period the\n"
+    "floor motion that a slab on that floor feels.\n"
     "  --file FILE                  the accelerogram (AT2, COSMOS, CSMIP V2, values, time-accel)\n"
     "  --peaks N                    list the N largest peaks [5]\n"
     "  --spectrum-csv FILE          write the Fourier amplitude spectra as "
-    "CSV\n" KINSTAB_RECORD_FLAGS;
+    "CSV\n"
+    "  --sa-period S                Sa(T, 5 %) at this period, s [the floor period, if "
+    "given]\n" KINSTAB_RECORD_FLAGS;
 
 const char* kCodes =
     "usage: kinstab-cli codes --project FILE\n"

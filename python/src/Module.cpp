@@ -17,5 +17,6 @@ PYBIND11_MODULE(_core, m) {
     kinstab::python::bindStudy(m);
     kinstab::python::bindAssess(m);
     kinstab::python::bindRisk(m);
+    kinstab::python::bindProjectRuns(m);
     kinstab::python::bindRocking(m);
 }
