@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // kinstab-cli report --project FILE -o FILE.pdf [--page a4|letter] [--figure-grid N]
-// Runs the analyses the report needs and writes the same PDF as the GUI's File → Export
-// report…; `-o -` writes the PDF to stdout and the summary to stderr. Needs no display: a
-// QGuiApplication on the offscreen platform unless the caller chose another.
+// Built into kinstab-report, which kinstab-cli report runs (ReportLauncher.cpp). Runs the analyses
+// the report needs and writes the same PDF as the GUI's File → Export report…; `-o -` writes the
+// PDF to stdout and the summary to stderr. Needs no display: a QGuiApplication on the offscreen
+// platform unless the caller chose another.
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
@@ -56,7 +57,7 @@ QByteArray readProjectBytes(const std::string& path) {
 
 } // namespace
 
-int runReport(const ArgList& argv) {
+int writeReport(const ArgList& argv) {
     const Args args(argv, {"project", "o", "page", "figure-grid", "sections"});
     using namespace kinstab::ui::report;
     const auto t0 = std::chrono::steady_clock::now();

@@ -5,37 +5,15 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/ExitCode.h"
 #include "app/cli/HelpText.h"
-#include "core/io/AtomicFile.h"
 #include "core/io/SignalCleanup.h"
 
-#include <exception>
-#include <functional>
 #include <iostream>
 #include <map>
 
-namespace {
-
-using namespace kinstab::cli;
-
-int runCommand(const std::function<int(const ArgList&)>& command, const char* name,
-               const ArgList& args) {
-    try {
-        const int code = command(args);
-        kinstab::flushStandardOutput(); // a full stdout is a failed run, not a silent loss
-        return code;
-    } catch (const std::exception& e) {
-        const Failure f = failureOf(e);
-        std::cerr << "kinstab-cli " << name << ": " << f.prefix << e.what() << "\n";
-        return f.code;
-    }
-}
-
-} // namespace
-
 int main(int argc, char** argv) {
-    const std::map<std::string, std::function<int(const ArgList&)>> commands = {
+    using namespace kinstab::cli;
+    const std::map<std::string, int (*)(const ArgList&)> commands = {
         {"simulate", runSimulate},
         {"surface", runSurface},
         {"critical", runCritical},

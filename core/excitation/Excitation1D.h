@@ -56,6 +56,10 @@ public:
     virtual double humpCrossing(double level, double lo, double hi, bool rising) const;
     // Largest |a| anywhere.
     virtual double peak() const = 0;
+    // Evaluations of a or its integrals that this excitation made on the calling thread so far
+    // for its own root solves (crossings, hump peaks): a solver adds the change over its run to
+    // the evaluations it counts itself, so that its work counter misses none (issue 34).
+    virtual long threadEvaluations() const { return 0; }
 };
 
 inline double Excitation1D::humpCrossing(double level, double lo, double hi, bool rising) const {
