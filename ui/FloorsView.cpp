@@ -213,9 +213,7 @@ void FloorsView::onFinished(std::shared_ptr<Outcome> o) {
     }
     m_shown = o;
     const Building& b = o->building;
-    const QString unit = QString::fromStdString(unitName(b.unit));
-    fillProfileChart(m_profile->chart(), o->analysis, levelHeights(b), unit);
-    fillCriticalChart(m_critical->chart(), o->analysis, levelHeights(b), unit);
+    drawHeightCharts();
     m_pick->setEnabled(true);
     m_pick->setRange(1, b.stories);
     if (m_pick->value() == o->analysis.slabLevel)
@@ -224,6 +222,25 @@ void FloorsView::onFinished(std::shared_ptr<Outcome> o) {
         m_pick->setValue(o->analysis.slabLevel); // draws through valueChanged
     showVerdicts();
     emit analysisShown();
+}
+
+void FloorsView::setUnitSystem(UnitSystem s) {
+    if (s == m_units) return;
+    m_units = s;
+    if (m_shown) drawHeightCharts();
+}
+
+// Heights are kept in the building's unit (ft or m) and shown in the unit system's.
+void FloorsView::drawHeightCharts() {
+    const Building& b = m_shown->building;
+    const double k = (b.unit == LengthUnit::Feet ? kMetresPerFoot : 1.0) /
+                     metresPerUnit(m_units, LengthScale::Structure);
+    std::vector<double> heights = levelHeights(b);
+    for (double& h : heights)
+        h *= k;
+    const QString unit = lengthSymbol(m_units, LengthScale::Structure);
+    fillProfileChart(m_profile->chart(), m_shown->analysis, heights, unit);
+    fillCriticalChart(m_critical->chart(), m_shown->analysis, heights, unit);
 }
 
 void FloorsView::pickLevel(int level) {

@@ -113,7 +113,8 @@ MainWindow::MainWindow(QWidget* parent)
     m_friction = new FrictionPanel;
     // In scroll areas: their minimum sizes must not grow the window past 1280×800.
     m_centre->addTab(scrollable(m_friction), tr("Friction"));
-    m_centre->addTab(scrollable(new FloorsView([this] { return project(); })), tr("Floors"));
+    m_floors = new FloorsView([this] { return project(); });
+    m_centre->addTab(scrollable(m_floors), tr("Floors"));
     m_study = new StudyTab;
     m_centre->addTab(scrollable(m_study), tr("Study"));
     connect(m_study, &StudyTab::studyChosen, this,
@@ -132,7 +133,7 @@ MainWindow::MainWindow(QWidget* parent)
     installHelpMenu(this);
     buildDocks();
     installPresentationMode(this, m_viewMenu, m_centre, m_teaching);
-    installUnitsMenu(m_viewMenu, this, [this](UnitSystem s) { m_teaching->setUnitSystem(s); });
+    installUnitsMenu(m_viewMenu, this, [this](UnitSystem s) { setUnits(s); });
     m_status->setTextFormat(Qt::PlainText);
     statusBar()->addWidget(m_status, 1);
     statusBar()->addPermanentWidget(m_progress);

@@ -56,6 +56,7 @@ SlabPanel::SlabPanel(QWidget* parent)
     });
     connect(m_solver, &QComboBox::currentIndexChanged, this, &InputPanel::changed);
     connect(m_width, &NumberField::edited, this, &SlabPanel::updateDerived);
+    connect(m_tstar, &NumberField::edited, this, &SlabPanel::updateDerived);
     load(Slab1DCase{}, 7.625 * inch);
 }
 
@@ -66,11 +67,22 @@ void SlabPanel::updateMode() {
     updateDerived();
 }
 
+// One wall width per case: the greyed field shows the width the entered t* stands for
+// (d = 2g t*²), as Teaching and the report do, never a width left over from another case.
 void SlabPanel::updateDerived() {
-    const auto d = wallWidthMetres();
-    if (d) m_tstar->setValue(tstarFromWallWidth(*d));
-    m_derived->setText(d ? tr("t* = √(d / 2g) = %1 s").arg(tstarFromWallWidth(*d), 0, 'f', 4)
-                         : QString());
+    if (const auto d = wallWidthMetres()) {
+        m_tstar->setValue(tstarFromWallWidth(*d));
+        m_derived->setText(tr("t* = √(d / 2g) = %1 s").arg(tstarFromWallWidth(*d), 0, 'f', 4));
+        return;
+    }
+    const auto t = m_mode->currentIndex() == 1 ? m_tstar->value() : std::nullopt;
+    if (t) m_width->setValue(wallWidthFromTstar(*t));
+    m_derived->setText(
+        t ? tr("d = 2g t*² = %1 %2")
+                .arg(QString::fromStdString(lengthText(wallWidthFromTstar(*t),
+                                                       m_width->unitSystem(), LengthScale::Detail)),
+                     lengthSymbol(m_width->unitSystem(), LengthScale::Detail))
+          : QString());
 }
 
 std::optional<double> SlabPanel::wallWidthMetres() const {

@@ -154,13 +154,15 @@ const char* kFriction =
 
 const char* kReport =
     "usage: kinstab-cli report --project FILE -o FILE.pdf [--page a4|letter] [--figure-grid N]\n"
-    "                          [--sections LIST]\n"
+    "                          [--sections LIST] [--units si|us]\n"
     "Writes the design-check report as PDF: title and signature blocks, verdict, inputs, code\n"
     "trails, figures. Run times go to the JSON printed on stdout.\n"
     "  --project FILE               a kinstab project (.json)\n"
     "  -o FILE.pdf                  the report to write\n"
     "  --page a4|letter             paper size [a4]\n"
     "  --figure-grid N              grid points per axis of the surface figure [41]\n"
+    "  --units si|us                lengths in m and mm or in ft and in [the project's \"units\",\n"
+    "                               else us for a building in ft, si for one in m]\n"
     "  --sections LIST              optional sections, comma-separated, or all [all]:\n"
     "                               assumptions, symbols, inputs, codes, excitation, record,\n"
     "                               floors, surface, check, study, numerics, references (the\n"
