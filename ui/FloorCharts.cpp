@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/FloorCharts.h"
+#include "ui/NiceAxisTicks.h"
 
 #include "core/excitation/RecordedMotion.h"
 #include "core/slab/History.h"
@@ -22,6 +23,7 @@ QValueAxis* axis(QChart* chart, const QString& title, Qt::Alignment side, double
     a->setTitleText(title);
     a->setRange(lo, hi);
     a->applyNiceNumbers();
+    useNiceTicks(a);
     chart->addAxis(a, side);
     return a;
 }

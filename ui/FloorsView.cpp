@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/FloorsView.h"
+#include "ui/ProjectFolder.h"
 
 #include "core/assessment/RunAssessment.h"
 #include "core/io/FloorsJson.h"
@@ -108,8 +109,8 @@ FloorsView::FloorsView(std::function<Project()> source, QWidget* parent)
     layout->addWidget(m_verdicts);
 
     connect(browse, &QPushButton::clicked, this, [this] {
-        const QString f = QFileDialog::getOpenFileName(this, tr("Ground record"), QString(),
-                                                       RecordPreview::fileDialogFilter());
+        const QString f = QFileDialog::getOpenFileName(
+            this, tr("Ground record"), inOpenProjectFolder(), RecordPreview::fileDialogFilter());
         if (!f.isEmpty()) m_record->setText(f);
     });
     connect(m_run, &QPushButton::clicked, this, &FloorsView::run);

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/FrictionPanel.h"
+#include "ui/NiceAxisTicks.h"
+#include "ui/ProjectFolder.h"
 
 #include "core/friction/TripletCsv.h"
 
@@ -37,7 +39,8 @@ struct ShownUnits {
 ShownUnits shownUnits(UnitSystem s) {
     if (s == UnitSystem::US) return {1.0, 1.0, 1.0, 1.0, "kip", "psi", "in", "in²"};
     // 1 lbf = 4.4482216152605 N and 1 in = 25.4 mm exactly (NIST SP 811, appendix B).
-    const double kN = 4.4482216152605, kPa = kN / (0.0254 * 0.0254);
+    // psi = lbf/in²: 4.4482216152605e-3 kN over 0.0254² m² = 6.894757 kPa.
+    const double kN = 4.4482216152605, kPa = kN * 1e-3 / (0.0254 * 0.0254);
     return {kN, kPa, 25.4, 6.4516, "kN", "kPa", "mm", "cm²"};
 }
 
@@ -52,7 +55,7 @@ QValueAxis* axis(const QString& title, double lo, double hi) {
     auto* a = new QValueAxis;
     a->setTitleText(title);
     a->setRange(lo, hi);
-    a->setLabelFormat("%.4g");
+    useNiceTicks(a);
     return a;
 }
 
@@ -166,7 +169,10 @@ void FrictionPanel::buildUi() {
     connect(open, &QPushButton::clicked, this, &FrictionPanel::openFile);
     connect(configuration_, &QComboBox::currentTextChanged, this, &FrictionPanel::refresh);
     connect(slopeKind_, &QComboBox::currentIndexChanged, this, &FrictionPanel::refresh);
-    connect(area_, &QDoubleSpinBox::valueChanged, this, &FrictionPanel::recalibrate);
+    connect(area_, &QDoubleSpinBox::valueChanged, this, [this](double shown) {
+        areaIn2_ = shown * shownUnits(units_).area;
+        recalibrate();
+    });
     connect(useMu_, &QPushButton::clicked, this, [this] {
         if (const auto mu = currentMu()) emit useMu(*mu);
     });
@@ -207,15 +213,16 @@ void FrictionPanel::setConfiguration(const QString& c) {
     configuration_->setCurrentText(c);
 }
 void FrictionPanel::setBearingArea(double in2) {
-    area_->setValue(in2 / shownUnits(units_).area);
-}
-double FrictionPanel::bearingAreaIn2() const {
-    return area_->value() * shownUnits(units_).area;
+    areaIn2_ = in2;
+    {
+        QSignalBlocker block(area_);
+        area_->setValue(in2 / shownUnits(units_).area);
+    }
+    recalibrate();
 }
 
 void FrictionPanel::setUnitSystem(UnitSystem s) {
     if (s == units_) return;
-    const double in2 = bearingAreaIn2();
     units_ = s;
     const ShownUnits u = shownUnits(s);
     table_->setHorizontalHeaderLabels({tr("Configuration"), tr("CP %1").arg(u.p), tr("Tests"),
@@ -225,7 +232,7 @@ void FrictionPanel::setUnitSystem(UnitSystem s) {
     {
         QSignalBlocker block(area_);
         area_->setSuffix(QStringLiteral(" ") + u.a);
-        area_->setValue(in2 / u.area);
+        area_->setValue(areaIn2_ / u.area);
     }
     recalibrate();
 }
@@ -248,7 +255,7 @@ std::optional<double> FrictionPanel::currentMu() const {
 
 void FrictionPanel::recalibrate() {
     CalibrationOptions o;
-    if (area_->value() > 0.0) o.bearingAreaIn2 = bearingAreaIn2();
+    if (areaIn2_ > 0.0) o.bearingAreaIn2 = areaIn2_;
     try {
         calibration_ = calibrateFriction(runs_, o);
         status_->setText(
@@ -317,7 +324,7 @@ void FrictionPanel::fillCurveChart() {
 void FrictionPanel::fillCoulombChart() {
     // Fig. 21: V_inf (or tau_inf with A_b) against CP, with the least-squares line for CP <= limit.
     const ShownUnits u = shownUnits(units_);
-    const bool withArea = area_->value() > 0.0;
+    const bool withArea = areaIn2_ > 0.0;
     // kips -> psi over A_b, then into the shown pressure (or force) unit.
     const double scale = withArea ? u.pressure * 1000.0 / bearingAreaIn2() : u.force;
     const bool intercept = slopeKind_->currentIndex() == 0;
@@ -398,8 +405,8 @@ void FrictionPanel::fillTable() {
 }
 
 void FrictionPanel::openFile() {
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Triplet shear tests"), {}, tr("CSV (*.csv)"));
+    const QString path = QFileDialog::getOpenFileName(this, tr("Triplet shear tests"),
+                                                      inOpenProjectFolder(), tr("CSV (*.csv)"));
     if (!path.isEmpty()) loadCsv(path);
 }
 

@@ -35,7 +35,7 @@ public:
 
     void setConfiguration(const QString& configuration);
     void setBearingArea(double in2); // 0: not set (no mu_inf)
-    double bearingAreaIn2() const;   // as shown, converted back to in²
+    double bearingAreaIn2() const { return areaIn2_; }
     // kip, psi, in, in² (US) or kN, kPa, mm, cm² (SI); the data stay in the paper's US units.
     void setUnitSystem(UnitSystem s);
     void setWithIntercept(bool withIntercept);
@@ -71,6 +71,7 @@ private:
     QChartView* coulomb_ = nullptr;
     QTableWidget* table_ = nullptr;
     UnitSystem units_ = UnitSystem::US;
+    double areaIn2_ = 0.0; // A_b as set or typed: a switch of units re-shows, never rounds it
 };
 
 } // namespace kinstab::ui

@@ -2,6 +2,7 @@
 #include "ui/MainWindow.h"
 
 #include "ui/AtomicSave.h"
+#include "ui/ChartMenu.h"
 #include "ui/FloorsView.h"
 #include "ui/FrictionPanel.h"
 #include "ui/NumericsView.h"
@@ -131,6 +132,7 @@ MainWindow::MainWindow(QWidget* parent)
     setCentralWidget(m_centre);
     buildActions();
     installHelpMenu(this);
+    installChartMenus(); // right-click Save image… / Copy image on every chart
     buildDocks();
     installPresentationMode(this, m_viewMenu, m_centre, m_teaching);
     installUnitsMenu(m_viewMenu, this, [this](UnitSystem s) { setUnits(s); });

@@ -133,6 +133,7 @@ void MainWindow::updateCodes() {
 }
 
 void MainWindow::updateTitle() {
+    setOpenProjectPath(m_path); // where the views' Open and Export dialogs start
     // [*]: Qt shows the modified mark there (setWindowModified).
     const QString name = !m_path.isEmpty()        ? QFileInfo(m_path).fileName()
                          : !m_shownName.isEmpty() ? m_shownName

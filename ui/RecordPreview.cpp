@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/RecordPreview.h"
+#include "ui/NiceAxisTicks.h"
 
 #include "core/excitation/FourierSpectrum.h"
 #include "report/PlanarVertical.h"
@@ -36,6 +37,7 @@ QChartView* makeView(const QString& title, const QString& xTitle, const QString&
     y->setTitleText(yTitle);
     chart->addAxis(x, Qt::AlignBottom);
     chart->addAxis(y, Qt::AlignLeft);
+    useNiceTicks(chart);
     auto* view = new QChartView(chart);
     view->setRenderHint(QPainter::Antialiasing);
     view->setMinimumHeight(250); // below this the axis labels are elided to "…"

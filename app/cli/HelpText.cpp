@@ -13,6 +13,8 @@ namespace {
     "  --alpha X --beta Y           a user envelope exp(-alpha t) - exp(-beta t), 1/s\n"           \
     "  --tstar S                    characteristic time t* = sqrt(d / 2g), s [0.099]\n"            \
     "  --wall-width-in D            wall width d, inches (gives t*; excludes --tstar)\n"           \
+    "  --wall-width-mm D            wall width d, millimetres (excludes --tstar, "                 \
+    "--wall-width-in)\n"                                                                           \
     "  --mu M                       friction coefficient [0.6]\n"                                  \
     "  --limit L                    bearing / (d/2): collapse when |delta| > L [1]\n"              \
     "  --duration TAU               stop the excitation at tau = TAU (dimensionless) [none]\n"     \
@@ -42,7 +44,8 @@ const char* kSimulate =
     "                            [record flags] [model flags] [--critical [search flags]]\n"
     "One run of the slab; prints a JSON object (outcome, tau_c, gamma_c, slip_intervals,\n"
     "max_abs_delta, residual_delta, work, wall_time_s).\n"
-    "  --amplitude A                peak floor acceleration, g (with --record: target peak)\n"
+    "  --amplitude A                peak floor acceleration, g (with --record: target peak);\n"
+    "                               above 4 g a warning: m/s² typed as g? (1 g = 9.80665 m/s²)\n"
     "  --frequency F                excitation frequency, Hz\n"
     "  --history FILE.csv           write the sampled history (tau, a, delta, velocity, state)\n"
     "  --history-step DTAU          history sample step, dimensionless time [0.05]\n"
@@ -58,7 +61,8 @@ const char* kSurface =
     "usage: kinstab-cli surface --amplitudes LIST --frequencies LIST [model flags] [--threads N]\n"
     "                           [--format json|csv|table] [-o FILE]\n"
     "The gamma_c(A, f) surface: one run per grid point.\n"
-    "  --amplitudes LIST            peak accelerations, g (a,b,c or start:stop:step)\n"
+    "  --amplitudes LIST            peak accelerations, g (a,b,c or start:stop:step); a warning\n"
+    "                               when every one is above 4 g (m/s² typed as g?)\n"
     "  --frequencies LIST           frequencies, Hz\n"
     "  --threads N                  worker threads, 0 = all cores [0]\n"
     "  --format json|csv|table      output format [json]\n"
@@ -281,7 +285,8 @@ std::string usageText() {
          "Exit codes: 0 success, 2 bad input (the message names the flag and value), 3 an output\n"
          "could not be written (full disk, closed stdout), 4 the model gave no finite result,\n"
          "1 a bug in kinstab. Every JSON output carries \"kinstab_version\".\n"
-         "Manual: man kinstab-cli.\n";
+         "Manual: man kinstab-cli (installed), or from a build tree: man -l\n"
+         "build/packaging/kinstab-cli.1.\n";
     return s;
 }
 
