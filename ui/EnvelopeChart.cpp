@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/EnvelopeChart.h"
-#include "ui/NiceAxisTicks.h"
 
+#include "ui/NiceAxisTicks.h"
 #include <QLineSeries>
 #include <QScatterSeries>
 #include <QValueAxis>

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/FloorCharts.h"
-#include "ui/NiceAxisTicks.h"
 
 #include "core/excitation/RecordedMotion.h"
 #include "core/slab/History.h"
 #include "core/slab/RecordRun.h"
 #include "ui/DockedChart.h"
+#include "ui/NiceAxisTicks.h"
 
 #include <QLineSeries>
 #include <QScatterSeries>
@@ -22,7 +22,6 @@ QValueAxis* axis(QChart* chart, const QString& title, Qt::Alignment side, double
     auto* a = new QValueAxis;
     a->setTitleText(title);
     a->setRange(lo, hi);
-    a->applyNiceNumbers();
     useNiceTicks(a);
     chart->addAxis(a, side);
     return a;
@@ -43,7 +42,7 @@ QLineSeries* profile(const QString& name, const QColor& c, Qt::PenStyle style,
 }
 
 QString heightTitle(const QString& unit) {
-    return QObject::tr("height above the base, %1").arg(unit);
+    return QObject::tr("height, %1").arg(unit); // above the base; longer was elided
 }
 
 } // namespace

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/FloorsView.h"
-#include "ui/ProjectFolder.h"
 
 #include "core/assessment/RunAssessment.h"
 #include "core/io/FloorsJson.h"
 #include "core/records/RecordReader.h"
 #include "core/records/RecordText.h"
+#include "ui/DockedChart.h"
 #include "ui/FloorCharts.h"
+#include "ui/ProjectFolder.h"
 #include "ui/RecordPreview.h"
 
 #include <QChartView>
@@ -39,9 +40,10 @@ namespace {
 QChartView* chartView(QWidget* parent) {
     auto* chart = new QChart;
     chart->setAnimationOptions(QChart::NoAnimation);
-    chart->legend()->setAlignment(Qt::AlignBottom);
-    auto* v = new QChartView(chart, parent);
-    v->setRenderHint(QPainter::Antialiasing);
+    chart->setMargins(QMargins(4, 4, 4, 4));
+    auto* v = new QChartView(parent);
+    // Title and legend wrap onto more lines instead of eliding ("ASCE …" at 1280 × 800).
+    installDockedChart(v, chart, QString());
     v->setMinimumSize(320, 260);
     return v;
 }

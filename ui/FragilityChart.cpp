@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/FragilityChart.h"
-#include "ui/NiceAxisTicks.h"
 
+#include "ui/NiceAxisTicks.h"
 #include <QChart>
 #include <QLegend>
 #include <QLegendMarker>

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/FrictionPanel.h"
-#include "ui/NiceAxisTicks.h"
-#include "ui/ProjectFolder.h"
 
 #include "core/friction/TripletCsv.h"
+#include "ui/NiceAxisTicks.h"
+#include "ui/ProjectFolder.h"
 
 #include <QChart>
 #include <QChartView>
@@ -76,8 +76,6 @@ void resetChart(QChart* chart, const QList<QAbstractSeries*>& series, QValueAxis
             for (QLegendMarker* m : chart->legend()->markers(s))
                 m->setVisible(false);
     }
-    x->applyNiceNumbers();
-    y->applyNiceNumbers();
 }
 
 QChartView* makeChartView(const QString& title) {

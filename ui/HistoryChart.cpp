@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/HistoryChart.h"
-#include "ui/NiceAxisTicks.h"
 
 #include "ui/DockedChart.h"
+#include "ui/NiceAxisTicks.h"
 
 #include <QAreaSeries>
 #include <QLineSeries>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/RecordInput.h"
-#include "ui/ProjectFolder.h"
 
 #include "core/base/InputLimits.h"
+#include "ui/ProjectFolder.h"
 
 #include "ui/NumberField.h"
 #include "ui/RecordPreview.h"

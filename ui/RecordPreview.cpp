@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/RecordPreview.h"
-#include "ui/NiceAxisTicks.h"
 
 #include "core/excitation/FourierSpectrum.h"
 #include "report/PlanarVertical.h"
+#include "ui/NiceAxisTicks.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>

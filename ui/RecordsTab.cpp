@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/RecordsTab.h"
-#include "ui/ProjectFolder.h"
 
+#include "ui/ProjectFolder.h"
 #include "ui/RecordPreview.h"
 
 #include <QFileDialog>

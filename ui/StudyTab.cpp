@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/StudyTab.h"
-#include "ui/ProjectFolder.h"
 #include "ui/StudyTabOutcome.h"
 
 #include "core/base/TextInput.h"
@@ -11,6 +10,7 @@
 #include "core/study/StudyRecords.h"
 #include "core/study/StudyRunner.h"
 #include "ui/FragilityChart.h"
+#include "ui/ProjectFolder.h"
 #include "ui/StaleFrame.h"
 
 #include <nlohmann/json.hpp>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/teaching/TeachingView.h"
-#include "ui/ProjectFolder.h"
 
+#include "ui/ProjectFolder.h"
 #include "ui/teaching/EventLog.h"
 #include "ui/teaching/FrameExport.h"
 #include "ui/teaching/ParameterPanel.h"
