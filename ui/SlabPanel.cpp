@@ -9,6 +9,8 @@
 #include <QFormLayout>
 #include <QLabel>
 
+#include <cmath>
+
 namespace kinstab::ui {
 
 namespace {
@@ -71,7 +73,9 @@ void SlabPanel::updateMode() {
 // (d = 2g t*²), as Teaching and the report do, never a width left over from another case.
 void SlabPanel::updateDerived() {
     if (const auto d = wallWidthMetres()) {
-        m_tstar->setValue(tstarFromWallWidth(*d));
+        // Greyed, to 0.1 ms as the line below says it (not 0.08745211031 for a 150 mm wall);
+        // the case takes t* from d itself (apply()).
+        m_tstar->setValue(std::round(tstarFromWallWidth(*d) * 1e4) / 1e4);
         m_derived->setText(tr("t* = √(d / 2g) = %1 s").arg(tstarFromWallWidth(*d), 0, 'f', 4));
         return;
     }
