@@ -61,7 +61,7 @@ void fillProfileChart(QChart* chart, const FloorAnalysis& a, const std::vector<d
     for (const FloorDemand& d : a.demands)
         hi = std::max(hi, *std::max_element(d.pfa.begin(), d.pfa.end()));
     QValueAxis* x = axis(chart, QObject::tr("PFA, g"), Qt::AlignBottom, 0.0, 1.05 * hi);
-    QValueAxis* y = axis(chart, heightTitle(unit), Qt::AlignLeft, 0.0, heights.back());
+    QValueAxis* y = axis(chart, heightTitle(unit), Qt::AlignLeft, 0.0, 1.05 * heights.back());
     QLineSeries* model =
         profile(QObject::tr("model"), QColor(0, 90, 181), Qt::SolidLine, a.pfa, heights);
     model->insert(0, QPointF(a.pga, 0.0)); // the ground's own peak at the base
@@ -104,7 +104,7 @@ void fillCriticalChart(QChart* chart, const FloorAnalysis& a, const std::vector<
             hi = std::max(hi, *l.criticalPga);
         }
     QValueAxis* x = axis(chart, QObject::tr("PGA, g"), Qt::AlignBottom, 0.0, 1.1 * hi);
-    QValueAxis* y = axis(chart, heightTitle(unit), Qt::AlignLeft, 0.0, heights.back());
+    QValueAxis* y = axis(chart, heightTitle(unit), Qt::AlignLeft, 0.0, 1.05 * heights.back());
     attach(chart, crit, x, y);
     QLineSeries* pga =
         chartLine(QObject::tr("record's PGA"), QColor(0, 90, 181), 1.5, Qt::DashLine);
