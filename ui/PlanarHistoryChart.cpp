@@ -2,6 +2,7 @@
 #include "ui/PlanarHistoryChart.h"
 
 #include "ui/DockedChart.h"
+#include "ui/NiceAxisTicks.h"
 
 #include <QLineSeries>
 #include <QValueAxis>
@@ -47,6 +48,7 @@ PlanarHistoryChart::PlanarHistoryChart(QWidget* parent)
     }
     m_dy->attachAxis(m_x);
     m_dy->attachAxis(m_yy);
+    useNiceTicks(c); // 1-2-5 ticks whatever range an update sets
     installDockedChart(this, c,
                        tr("Planar history of one point (after Run: pick a point on the surface)"));
     hideFromLegend(c, {m_limitDown});

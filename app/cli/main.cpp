@@ -6,6 +6,7 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/HelpText.h"
+#include "app/cli/Suggest.h"
 #include "core/io/SignalCleanup.h"
 
 #include <iostream>
@@ -43,7 +44,10 @@ int main(int argc, char** argv) {
     }
     const auto it = commands.find(first);
     if (it == commands.end()) {
-        std::cerr << "kinstab-cli: unknown command '" << first << "'\n" << usageText();
+        const std::string near = kinstab::cli::nearest(first, commandNames());
+        std::cerr << "kinstab-cli: unknown command '" << first << "'"
+                  << (near.empty() ? std::string() : " (did you mean '" + near + "'?)") << "\n"
+                  << usageText();
         return 2;
     }
     for (int i = 2; i < argc; ++i) {
@@ -53,6 +57,7 @@ int main(int argc, char** argv) {
             return 0;
         }
     }
-    kinstab::removeTemporariesOnSignals();
+    // Ctrl+C: one line naming the command on stderr, then the signal's own exit status.
+    kinstab::removeTemporariesOnSignals(("kinstab-cli " + first).c_str());
     return runCommand(it->second, argv[1], ArgList(argv + 2, argv + argc));
 }
