@@ -54,8 +54,7 @@ Vec2 SlabModel2D::accelSlope(double tau) const {
         const auto s = series_->slope(tau);
         return {s[0], s[1]};
     }
-    return {x_.covers(tau) ? x_.piece.slope : ax_->accelSlope(tau),
-            y_.covers(tau) ? y_.piece.slope : ay_ ? ay_->accelSlope(tau) : 0.0};
+    return {x_.slope(*ax_, tau), ay_ ? y_.slope(*ay_, tau) : 0.0};
 }
 double SlabModel2D::normalSlope(double tau) const {
     if (z_.covers(tau)) return z_.piece.slope;

@@ -48,8 +48,7 @@ public:
             const auto a = series_->accel(tau);
             return {a[0], a[1]};
         }
-        return {x_.covers(tau) ? x_.piece.accel(tau) : ax_->accel(tau),
-                y_.covers(tau) ? y_.piece.accel(tau) : ay_ ? ay_->accel(tau) : 0.0};
+        return {x_.accel(*ax_, tau), ay_ ? y_.accel(*ay_, tau) : 0.0};
     }
     Vec2 accelSlope(double tau) const; // a_h'
     double normal(double tau) const {  // n = 1 + a_z
@@ -93,6 +92,12 @@ private:
         double lo = 0, hi = 0; // empty: covers nothing
         LinearPiece piece;
         bool covers(double tau) const { return tau >= lo && tau < hi; }
+        double accel(const Excitation1D& a, double tau) const {
+            return covers(tau) ? piece.accel(tau) : a.accel(tau);
+        }
+        double slope(const Excitation1D& a, double tau) const {
+            return covers(tau) ? piece.slope : a.accelSlope(tau);
+        }
         void enter(const Excitation1D* a, double l, double h);
     };
     std::shared_ptr<const Excitation1D> ax_, ay_, az_;
