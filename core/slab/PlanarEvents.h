@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The planar slab's events as root functions, as SUNDIALS CVODE's g_i(t, y) (Hindmarsh et al.
-// 2005, "SUNDIALS", ACM TOMS 31(3), §2.3 rootfinding): each event is a row of one table,
+// 2005, "SUNDIALS", ACM TOMS 31(3), CVODE's rootfinding): each event is a row of one table,
 // (function, direction, kind), and every row is found the same way.
 //  - Time events (slip onset |a_h| = mu n, lift-off n = 0) depend on tau alone: their roots are
 //    scanned ahead on each window (core/numerics/LevelCrossings.h) and become step boundaries.

@@ -10,6 +10,15 @@
 
 namespace kinstab::planar {
 
+namespace {
+// A Radau IIA step whose Newton iteration failed is retried at half its length (RADAU5's choice,
+// Hairer & Wanner 1996, IV.8).
+constexpr double kNewtonFailureRetry = 0.5;
+// A step over which the velocity turned over is retaken at half its length, until the stop ahead
+// is predicted and approached in s.
+constexpr double kTurnoverRetry = 0.5;
+} // namespace
+
 Vec4 PlanarRun::rhs(double tau, const Vec4& y) {
     ++r_.slab.work.accelEvaluations;
     const Vec2 a = m_.accel(tau);
@@ -42,6 +51,7 @@ PlanarRun::Step PlanarRun::slipTo(double end) {
         // The derivative at the state an accepted step ended on is that step's last stage (FSAL).
         const Vec4 f0 = t_ == fsalT_ && y_ == fsalY_ ? fsalF_ : rhs(t_, y_);
         const double d = -(y_[2] * f0[2] + y_[3] * f0[3]) / rho; // -d|u|/dtau
+        // Without a proposal: the time |u| takes to change by itself at a rate of about mu + 1.
         double h = std::min(hNext_ > 0.0 ? hNext_ : rho / (mu_ + 1.0), end - t_);
         const bool implicit = isStiff(t_, rho);
         if (d > 0.0 && rho <= d * h) { // a stop predicted within the step
@@ -106,7 +116,7 @@ PlanarRun::Step PlanarRun::step(bool implicit, const Vec4& f0, double h) {
         // The velocity turned over within one step: it passed a stop; retake it shorter so
         // the stop is approached in s.
         ++r_.slab.work.restarts;
-        hNext_ = 0.5 * h;
+        hNext_ = kTurnoverRetry * h;
         return Step::Continue;
     }
     accept(st, h, implicit, extrema);
@@ -125,7 +135,8 @@ PlanarRun::Trial PlanarRun::trial(bool implicit, double t0, const Vec4& y0, cons
         r_.slab.work.accelEvaluations += st.evaluations;
         r_.slab.work.rootIterations += st.newton;
         const double factor = radau::stepFactor(st.err, st.newton, kSlipRadauMaxNewton);
-        return {st.y, st.f, st.err, factor, std::isfinite(st.err) ? factor : 0.5, st.poly};
+        const double retry = std::isfinite(st.err) ? factor : kNewtonFailureRetry;
+        return {st.y, st.f, st.err, factor, retry, st.poly};
     }
     const auto st =
         dop853Step<4>([&](double t, const Vec4& y) { return rhs(t, y); }, t0, y0, f0, h);
