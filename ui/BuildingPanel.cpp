@@ -81,7 +81,7 @@ BuildingPanel::BuildingPanel(QWidget* parent)
     m_period = addField("period", tr("&Period T:"), tr("s"),
                         tr("Fundamental period of the building. The floor motion's frequency is "
                            "taken as f = 1/T; the paper's building has T = 1.0 s."));
-    m_period->setCheck(rangeCheck(0, kMaxPeriodS, false));
+    m_period->setCheck(rangeCheck(kMinPeriodS, kMaxPeriodS));
     m_estimates->setWordWrap(true);
     form()->addRow(QString(), m_estimates);
     for (const auto& entry : systems)

@@ -3,6 +3,7 @@
 
 #include "core/excitation/FourierSpectrum.h"
 #include "report/PlanarVertical.h"
+#include "ui/RecordMetricsText.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
@@ -92,6 +93,8 @@ RecordPreview::RecordPreview(QWidget* parent) : QWidget(parent) {
     info_ = new QLabel(tr("No record loaded."));
     info_->setWordWrap(true);
     info_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    info_->setToolTip(recordMetricsToolTip());
+    info_->setObjectName(QStringLiteral("recordInfo")); // tests find it by name
     filterOn_ = new QCheckBox(tr("Floor filter"));
     filterOn_->setChecked(true);
     filterOn_->setToolTip(
@@ -180,6 +183,7 @@ void RecordPreview::clear() {
     ground_.reset();
     floor_.reset();
     fit_.reset();
+    metrics_.reset();
     error_.clear();
     for (QChart* c : {groundChart(), floorChart(), spectrumChart()})
         clearSeries(c);
@@ -236,6 +240,7 @@ void RecordPreview::rebuild() {
         fit_ = fitEnvelope(floor_ ? *floor_ : *ground_);
     } catch (const std::invalid_argument&) {
     }
+    metrics_ = recordMetrics(*ground_, period_->value()); // the spin box's range is Sa's
     plotGround();
     plotFloor();
     plotSpectra();
@@ -316,6 +321,7 @@ void RecordPreview::showInfo() {
             .arg(p.value, 0, 'f', 4)
             .arg(p.time, 0, 'f', 2)
             .arg(QString::fromStdString(accelUnitName(a.fileUnit)));
+    if (metrics_) text += "<br>" + recordMetricsLine(*metrics_);
     if (floor_) text += tr("<br>Floor motion peak %1 g").arg(floor_->peak().value, 0, 'f', 4);
     if (fit_)
         text += tr(" · envelope fit α = %1 /s, β = %2 /s, peak %3 g at %4 s")

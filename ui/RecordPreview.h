@@ -7,6 +7,7 @@
 
 #include "core/excitation/EnvelopeFit.h"
 #include "core/excitation/FloorFilter.h"
+#include "core/excitation/RecordMetrics.h"
 #include "core/records/RecordReader.h"
 #include "report/DecimatedSeries.h"
 
@@ -40,6 +41,8 @@ public:
     const std::optional<Accelerogram>& floorMotion() const { return floor_; }
     std::optional<FloorFilterParams> floorFilter() const;
     const std::optional<EnvelopeFit>& envelope() const { return fit_; }
+    // The ground record's catalogue numbers, Sa at the period T shown (the building's).
+    const std::optional<RecordMetrics>& metrics() const { return metrics_; }
     QString errorText() const { return error_; }
 
     // The shipped stand-in for the paper's Pacoima Dam vertical, and the note the UI shows with it.
@@ -64,6 +67,7 @@ private:
 
     std::optional<Accelerogram> ground_, floor_;
     std::optional<EnvelopeFit> fit_;
+    std::optional<RecordMetrics> metrics_;
     QString error_;
     QLabel* info_ = nullptr;
     QCheckBox* filterOn_ = nullptr;

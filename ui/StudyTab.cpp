@@ -7,10 +7,12 @@
 #include "core/io/StudySpecJson.h"
 #include "core/study/CpuAffinity.h"
 #include "core/study/FragilityText.h"
+#include "core/study/StudyRecordMetrics.h"
 #include "core/study/StudyRecords.h"
 #include "core/study/StudyRunner.h"
 #include "ui/FragilityChart.h"
 #include "ui/StaleFrame.h"
+#include "ui/StudyTables.h"
 
 #include <nlohmann/json.hpp>
 
@@ -100,7 +102,8 @@ StudyTab::StudyTab(QWidget* parent)
       m_status(new QLabel(this)),
       m_stale(
           new QLabel(tr("The results below are for the previous parameters — run again."), this)),
-      m_chart(new QChartView(new QChart, this)), m_table(new QTableWidget(0, 6, this)) {
+      m_chart(new QChartView(new QChart, this)), m_sets(makeStudySetTable(this)),
+      m_table(makeStudyCaseTable(this)) {
     m_measure->addItems({"pga", "sa"});
     m_floors->setPlaceholderText(tr("none: the ground record drives the slab"));
     m_folder->setPlaceholderText(tr("a folder of accelerograms (AT2, COSMOS, CSMIP V2, ...)"));
@@ -142,17 +145,9 @@ StudyTab::StudyTab(QWidget* parent)
     m_stale->hide();
     m_chart->setRenderHint(QPainter::Antialiasing);
     m_chart->setMinimumHeight(280);
-    m_table->setHorizontalHeaderLabels(
-        {tr("Record"), tr("μ"), tr("t* s"), tr("Driving motion"), tr("Critical IM g"), tr("Runs")});
-    m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
-    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    // Four rows at least under the header (one was visible at 1920 × 1080): the tab's scroll
-    // area scrolls rather than the splitter squeezing the table.
-    m_table->setMinimumHeight(m_table->horizontalHeader()->sizeHint().height() +
-                              4 * m_table->verticalHeader()->defaultSectionSize() +
-                              2 * m_table->frameWidth());
     auto* split = new QSplitter(Qt::Vertical, this);
     split->addWidget(m_chart);
+    split->addWidget(m_sets);
     split->addWidget(m_table);
     split->setChildrenCollapsible(false);
     auto* layout = new QVBoxLayout(this);
@@ -374,6 +369,7 @@ void StudyTab::showResults(const Outcome& o) {
     m_rows = o.rows;
     m_parsed = o.parsed;
     m_fragility = o.fragility;
+    m_metrics = o.metrics;
     m_resultsSpec = o.spec;
     m_resultsFile = o.file;
     fillFragilityChart(m_chart->chart(), m_fragility);
@@ -391,21 +387,8 @@ void StudyTab::showResults(const Outcome& o) {
 }
 
 void StudyTab::fillTable() {
-    m_table->setRowCount(static_cast<int>(m_parsed.size()));
-    auto number = [](double x) { return QString::number(x, 'g', 4); };
-    for (int i = 0; i < m_table->rowCount(); ++i) {
-        const StudyRow& r = m_parsed[static_cast<std::size_t>(i)];
-        const QStringList cells = {QString::fromStdString(r.record),
-                                   number(r.mu),
-                                   number(r.tstar),
-                                   QString::fromStdString(studyDriverText(r)),
-                                   r.criticalIntensity
-                                       ? number(*r.criticalIntensity)
-                                       : tr("none up to %1 g").arg(number(r.limitIntensity)),
-                                   QString::number(r.runs)};
-        for (int c = 0; c < cells.size(); ++c)
-            m_table->setItem(i, c, new QTableWidgetItem(cells[c]));
-    }
+    fillStudySetTable(m_sets, m_fragility);
+    fillStudyCaseTable(m_table, m_parsed, m_metrics);
 }
 
 bool StudyTab::exportRows(const QString& path) {
@@ -443,6 +426,7 @@ std::shared_ptr<StudyTab::Outcome> runWorker(const std::string& json, SweepContr
         for (std::string line; std::getline(in, line);)
             o->parsed.push_back(parseStudyRow(line));
         o->fragility = studyFragility(o->parsed, {});
+        o->metrics = studyRecordMetrics(spec);
     } catch (const StudyError& e) {
         o->error = e.what();
     }

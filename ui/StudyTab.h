@@ -10,6 +10,7 @@
 
 #include "core/io/StudyJson.h"
 #include "core/study/Fragility.h"
+#include "core/study/StudyRecordMetrics.h"
 #include "core/sweep/SweepControl.h"
 
 #include <nlohmann/json.hpp>
@@ -76,7 +77,8 @@ public:
     QString message() const;
     const std::string& rows() const { return m_rows; } // JSONL of the last finished run
     const std::vector<Fragility>& fragility() const { return m_fragility; }
-    QTableWidget* table() const { return m_table; }
+    QTableWidget* table() const { return m_table; }   // one row per case
+    QTableWidget* setTable() const { return m_sets; } // one row per parameter set
     QChartView* chartView() const { return m_chart; }
     bool exportRows(const QString& path);      // false, with the reason in message()
     bool exportFragility(const QString& path); // JSON
@@ -112,12 +114,14 @@ private:
     QLabel* m_status;
     QLabel* m_stale; // "results are for the previous parameters — run again"
     QChartView* m_chart;
+    QTableWidget* m_sets;
     QTableWidget* m_table;
     QFutureWatcher<std::shared_ptr<Outcome>> m_watcher;
     std::shared_ptr<SweepControl> m_control;
     std::string m_rows;
     std::vector<StudyRow> m_parsed;
     std::vector<Fragility> m_fragility;
+    std::vector<StudyRecordMetrics> m_metrics; // the suite's records, for the case table
     std::string m_resultsSpec; // studyJson() of the fields the shown results are for
     QString m_resultsFile;     // the file they were read from ("" after a run)
     unsigned m_generation = 0; // bumped by clear(): a job of an older generation is dropped

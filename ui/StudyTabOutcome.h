@@ -3,6 +3,7 @@
 // What a Study tab job (a run, or results read back) hands to the GUI thread (ui/StudyTab.h).
 
 #include "core/study/Fragility.h"
+#include "core/study/StudyRecordMetrics.h"
 #include "ui/StudyTab.h"
 
 #include <QString>
@@ -18,6 +19,7 @@ struct StudyTab::Outcome {
     bool cancelled = false;
     std::vector<StudyRow> parsed;
     std::vector<Fragility> fragility;
+    std::vector<StudyRecordMetrics> metrics; // the suite's records' catalogue numbers
     unsigned generation = 0;
     std::string spec; // studyJson() of the fields the results are for
     QString file;     // the results file read ("": a run)

@@ -3,6 +3,7 @@
 // read back; made the project's by "Use in project"; results marked stale when the fields change.
 
 #include "core/io/StudySpecJson.h"
+#include "core/study/StudyRecordMetrics.h"
 #include "core/study/StudyRecords.h"
 #include "core/study/StudyResults.h"
 #include "core/study/StudyRowsMatch.h"
@@ -78,6 +79,7 @@ void StudyTab::clear() {
     m_rows.clear();
     m_parsed.clear();
     m_fragility.clear();
+    m_metrics.clear();
     m_resultsSpec.clear();
     m_resultsFile.clear();
     fillFragilityChart(m_chart->chart(), m_fragility);
@@ -141,6 +143,7 @@ std::shared_ptr<StudyTab::Outcome> readStudyResults(const QString& specPath,
         o->rows = std::move(text);
         o->fragility = studyFragility(rows, {});
         o->parsed = std::move(rows);
+        o->metrics = studyRecordMetrics(spec); // reads the records: the rows did not need them
     } catch (const std::exception& e) {
         o->notice = QObject::tr("The results %1 are not shown: %2")
                         .arg(rowsPath, QString::fromStdString(e.what()));

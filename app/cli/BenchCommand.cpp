@@ -13,6 +13,7 @@
 #include "core/check/RecordBenchmark.h"
 #include "core/io/JsonText.h"
 #include "core/records/RecordReader.h"
+#include "core/rocking/RockingBenchmark.h"
 #include "core/sweep/SurfaceBenchmark.h"
 
 #include <cstdio>
@@ -138,6 +139,32 @@ int runBenchRecord(const Args& args, int repeats) {
                  b.criticalRatio, b.criticalRatioCpu, b.recordCriticalRuns, b.sineCriticalRuns);
     return 0;
 }
+// The free-standing block (issue 32): one pulse run, and the 257 x 257 overturning map
+// (target: under 2 s on two cores).
+int runBenchRocking(const Args& args, int threads, int repeats) {
+    const int points = args.integer("map-points", 257);
+    if (points < 2 || points > 4097)
+        throw UsageError("--map-points " + args.text("map-points") + ": must be 2 to 4097");
+    const RockingBenchmark b = benchmarkRocking(points, repeats, threads);
+    const nlohmann::json j = {{"pulse_run", timingJson(b.pulseRun)},
+                              {"pulse_runs_per_timing", b.runsPerTiming},
+                              {"map_points", b.mapPoints},
+                              {"map_threads", b.threads},
+                              {"map_linear", timingJson(b.mapLinear)},
+                              {"map_exact", timingJson(b.mapExact)},
+                              {"map_linear_overturning_points", b.overturnsLinear},
+                              {"map_exact_overturning_points", b.overturnsExact}};
+    std::cout << jsonText(j, 2) << "\n";
+    std::fprintf(stderr, "free-standing block, %d timed runs of each after a warm-up:\n",
+                 b.mapLinear.runs);
+    std::fprintf(stderr, "  one pulse run      median %.1f us (min %.1f us)\n",
+                 b.pulseRun.medianSeconds * 1e6, b.pulseRun.minSeconds * 1e6);
+    std::fprintf(stderr, "%dx%d overturning map, one-sine, %d threads:\n", points, points,
+                 b.threads);
+    printTiming("linearised ", b.mapLinear, 3);
+    printTiming("exact      ", b.mapExact, 3);
+    return 0;
+}
 } // namespace
 
 int runBench(const ArgList& argv) {
@@ -145,7 +172,8 @@ int runBench(const ArgList& argv) {
     flags.insert({"amplitudes", "frequencies", "threads", "repeats", "amplitude", "scale-factor"});
     flags.merge(recordReadFlagNames());
     flags.merge(searchFlagNames());
-    const Args args(argv, flags, {"vector-state"});
+    flags.insert("map-points");
+    const Args args(argv, flags, {"vector-state", "rocking"});
     if (args.has("solver"))
         throw UsageError("--solver: bench always runs both solvers (exact and paper)");
     const bool planar = isPlanar(args);
@@ -160,6 +188,8 @@ int runBench(const ArgList& argv) {
     const int repeats = args.integer("repeats", 5);
     if (repeats < 1 || repeats > 1000)
         throw UsageError("--repeats " + args.text("repeats") + ": must be 1 to 1000");
+    if (args.has("rocking")) return runBenchRocking(args, threads, repeats);
+    if (args.has("map-points")) throw UsageError("--map-points: needs --rocking");
     if (args.has("record")) {
         if (planar || args.has("vector-state"))
             throw UsageError("--record: times the 1-DOF record path alone");

@@ -25,6 +25,8 @@ int runStudyCommand(const ArgList& args); // study (StudyCommand.cpp)
 int runMerge(const ArgList& args);
 int runFragility(const ArgList& args);
 int runRisk(const ArgList& args);
+int runRocking(const ArgList& args);    // rocking (RockingCommand.cpp)
+int runRockingMap(const ArgList& args); // rocking-map (RockingMapCommand.cpp)
 
 class Args;
 // simulate --record FILE (SimulateRecord.cpp), called by runSimulate.

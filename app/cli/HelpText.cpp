@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/cli/HelpText.h"
 
+#include <algorithm>
+
 namespace kinstab::cli {
 
 namespace {
@@ -85,9 +87,13 @@ const char* kPrecision =
 const char* kBench =
     "usage: kinstab-cli bench [--repeats N] [--threads N] [--amplitudes LIST --frequencies LIST]\n"
     "                         [--vector-state] [model flags]\n"
+    "       kinstab-cli bench --rocking [--map-points N] [--repeats N] [--threads N]\n"
     "Times the exact and the paper solver on one grid; prints JSON (min and median seconds).\n"
     "  --vector-state               instead: the exact solver with and without clearing the\n"
     "                               upper AVX state (vzeroupper) at each solver start\n"
+    "  --rocking                    instead: the free-standing block, one pulse run and the\n"
+    "                               N x N one-sine overturning map, linearised and exact\n"
+    "  --map-points N               points per axis of that map [257]\n"
     "  --repeats N                  timed repeats [5]\n"
     "  --threads N                  worker threads, 0 = all cores [0]\n"
     "  --amplitudes LIST            peak accelerations, g [a built-in grid]\n"
@@ -95,12 +101,16 @@ const char* kBench =
 
 const char* kRecord =
     "usage: kinstab-cli record --file FILE [record flags] [--peaks N] [--spectrum-csv FILE]\n"
-    "Reads an accelerogram and prints what was read: format, samples, dt, peak, and with\n"
-    "--floor-period the floor motion that a slab on that floor feels.\n"
+    "                          [--sa-period S]\n"
+    "Reads an accelerogram and prints what was read: format, samples, dt, peak, its metrics\n"
+    "(PGA, PGV, PGD, Arias intensity, D5-95, mean period, Sa) and with --floor-period the\n"
+    "floor motion that a slab on that floor feels.\n"
     "  --file FILE                  the accelerogram (AT2, COSMOS, CSMIP V2, values, time-accel)\n"
     "  --peaks N                    list the N largest peaks [5]\n"
     "  --spectrum-csv FILE          write the Fourier amplitude spectra as "
-    "CSV\n" KINSTAB_RECORD_FLAGS;
+    "CSV\n"
+    "  --sa-period S                Sa(T, 5 %) at this period, s [the floor period, if "
+    "given]\n" KINSTAB_RECORD_FLAGS;
 
 const char* kCodes =
     "usage: kinstab-cli codes --project FILE\n"
@@ -187,6 +197,60 @@ const char* kFloors =
     "  --record-unit g|m/s2|cm/s2|ft/s2|in/s2  unit of the values [from the file, else g]\n"
     "  --record-channel N|NAME      channel of a multi-channel file [the first]\n";
 
+const char* kRocking =
+    "usage: kinstab-cli rocking --half-width B --half-height H [block flags] EXCITATION\n"
+    "                           [--critical [--max-amplitude G]] [--history FILE.csv]\n"
+    "One run of a free-standing rigid block: rest, slide, rock, slide-rock or overturn. Prints\n"
+    "JSON: outcome (rest|slides|rocks|slide-rock|overturns|leaves-base), max_theta_over_alpha,\n"
+    "impact_times_s, overturn_time_s (null unless it overturns), sliding_displacement_m.\n"
+    "block flags:\n"
+    "  --half-width B               half-width b of the block, m (0.001-100)\n"
+    "  --half-height H              half-height h of the block, m (0.001-100)\n"
+    "  --restitution E              angular velocity kept at an impact, (0, 1]\n"
+    "                               [Housner: 1 - 1.5 sin^2 alpha]\n"
+    "  --linear                     linearised equations (slender blocks) [exact]\n"
+    "  --mu M                       Coulomb friction at the base [none: it never slides]\n"
+    "  --initial-tilt R             released from rest at theta0 = R alpha, 0 <= R < 1 [0]\n"
+    "  --duration S                 stop at S seconds [when its fate is decided]\n"
+    "EXCITATION, one of:\n"
+    "  --pulse half-sine|one-sine|one-cosine|rectangular  a pulse from t = 0, with\n"
+    "      --amplitude A_G          its amplitude, g (negative: the other direction)\n"
+    "      --pulse-frequency F      its frequency f_p, Hz (sine shapes)\n"
+    "      --pulse-duration S       its duration, s (rectangular)\n"
+    "  --frequency F --amplitude A  the paper's enveloped sine, Hz and g, with\n"
+    "      --envelope fast|moderate|slow or --alpha X --beta Y (1/s) [moderate]\n"
+    "  --record FILE                an accelerogram [record flags], scaled by\n"
+    "      --amplitude PEAK_G | --scale-factor K [as recorded]\n"
+    "      --vertical FILE          its vertical component, g up: gravity becomes g (1 + a_v)\n"
+    "      --project FILE --level N the motion of level N of the project's building under\n"
+    "                               the record as ground motion (0: the ground)\n"
+    "  none, with --initial-tilt    free rocking\n"
+    "  --critical                   also the smallest overturning amplitude "
+    "(critical_amplitude_g,\n"
+    "                               null if none) and overturning_intervals_g [[from, to], ...]\n"
+    "  --max-amplitude G            largest amplitude (record: peak) searched, g [5]\n"
+    "  --scan-points N              amplitudes scanned before bisection [200]\n"
+    "  --tolerance T                relative tolerance of each interval end [1e-4]\n"
+    "  --history FILE.csv           write t, theta, theta/alpha, omega, sliding, mode, a_h\n"
+    "  --history-step S             its sample step, s [0.01]\n" KINSTAB_RECORD_FLAGS;
+
+const char* kRockingMap =
+    "usage: kinstab-cli rocking-map --half-width B --half-height H [--restitution E] [--linear]\n"
+    "                               [--pulse SHAPE] [--amplitudes MIN,MAX] [--frequencies "
+    "MIN,MAX]\n"
+    "                               [--points N] [--threads N] [--format json|csv] [-o FILE]\n"
+    "The overturning map of a pulse over a_p / (alpha g) and omega_p / p (Zhang & Makris 2001):\n"
+    "per point survives (0), overturns (1) or leaves the base (2), and max theta / alpha.\n"
+    "  --pulse SHAPE                half-sine|one-sine|one-cosine|rectangular [one-sine]\n"
+    "                               (rectangular: duration 2 pi / omega_p)\n"
+    "  --amplitudes MIN,MAX         a_p / (alpha g) [0.5,10]\n"
+    "  --frequencies MIN,MAX        omega_p / p [0.5,10]\n"
+    "  --points N                   points per axis [101]; --amplitude-points N,\n"
+    "                               --frequency-points N for each\n"
+    "  --threads N                  worker threads, 0 = all cores [0]\n"
+    "  --format json|csv            the grid as JSON rows or one CSV line per point [json]\n"
+    "  -o FILE                      output file [stdout]\n";
+
 #undef KINSTAB_MODEL_FLAGS
 #undef KINSTAB_RECORD_FLAGS
 
@@ -264,6 +328,8 @@ const std::vector<CommandHelp>& commandHelps() {
         {"merge", "merge the shards of a study into one results file", kMerge},
         {"fragility", "lognormal collapse fragility from study results", kFragility},
         {"risk", "annual rate and probability of collapse from a hazard curve", kRisk},
+        {"rocking", "a free-standing block: rocking, sliding, overturning", kRocking},
+        {"rocking-map", "the overturning map of a block under a pulse", kRockingMap},
     };
     return t;
 }
@@ -273,7 +339,10 @@ std::string usageText() {
                     "       kinstab-cli COMMAND --help\n"
                     "       kinstab-cli --version\n\ncommands:\n";
     for (const CommandHelp& c : commandHelps())
-        s += "  " + std::string(c.name) + std::string(11 - std::string(c.name).size(), ' ') +
+        s += "  " + std::string(c.name) +
+             std::string(std::max<std::size_t>(
+                             1, 11 - std::min<std::size_t>(11, std::string(c.name).size())),
+                         ' ') +
              c.summary + "\n";
     s += "\nLIST: comma-separated numbers or start:stop:step.\n"
          "Exit codes: 0 success, 2 bad input (the message names the flag and value), 3 an output\n"

@@ -9,6 +9,7 @@
 #include "core/io/JsonText.h"
 #include "core/io/ResultJson.h"
 #include "core/io/SurfaceJson.h"
+#include "core/sweep/SearchWork.h"
 
 #include <chrono>
 #include <iostream>
@@ -58,6 +59,8 @@ int runSimulatePlanar(const Args& args, double amplitude, double frequency, doub
     if (args.has("history-step") && historyStep > 0.0)
         throw UsageError("--history-step: with --model planar the history lists the solver's own "
                          "steps and events");
+    if (const InputProblem p = checkPlanarRunWork(c, amplitude, frequency); !p.empty())
+        throw UsageError("--frequency " + args.text("frequency") + ": " + p.why);
     const SlabModel2D model = planarModel(c, amplitude, frequency);
     const auto t0 = std::chrono::steady_clock::now();
     PlanarCliLogs log(args);

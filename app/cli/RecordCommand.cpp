@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // kinstab-cli record: what a record file holds (docs/theory.md §7) — summary, Fourier amplitude
 // spectrum peaks of the ground (and floor) motion and the envelope fitted over |floor acc| (Figs.
-// 25-27).
+// 25-27) — and its catalogue numbers (PGA, PGV, PGD, Arias intensity, D5-95, mean period,
+// Sa(T, 5 %) at --sa-period or the floor period: core/excitation/RecordMetrics.h).
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/RecordFlags.h"
 #include "core/excitation/EnvelopeFit.h"
 #include "core/excitation/FourierSpectrum.h"
+#include "core/excitation/RecordMetrics.h"
 #include "core/io/JsonText.h"
+#include "core/io/RecordMetricsJson.h"
 #include "core/io/ResultJson.h"
 
 #include <iostream>
@@ -56,7 +59,7 @@ std::string spectraCsv(const AmplitudeSpectrum& ground, const AmplitudeSpectrum*
 
 int runRecord(const ArgList& argv) {
     std::set<std::string> flags = recordReadFlagNames();
-    flags.insert({"file", "floor-period", "damping", "peaks", "spectrum-csv"});
+    flags.insert({"file", "floor-period", "damping", "peaks", "spectrum-csv", "sa-period"});
     const Args args(argv, flags);
     if (!args.has("file")) throw UsageError("--file: required (the accelerogram to read)");
     const int count = args.integer("peaks", 5);
@@ -67,6 +70,15 @@ int runRecord(const ArgList& argv) {
 
     nlohmann::json j;
     j["record"] = accelerogramJson(ground);
+    // Sa at the building's period: --sa-period, else the floor filter's period when given.
+    std::optional<double> saPeriod = filter ? std::optional<double>(filter->period) : std::nullopt;
+    if (args.has("sa-period")) {
+        saPeriod = args.number("sa-period", 1.0);
+        const FloorFilterParams p{*saPeriod, kSpectralDamping, 0.0};
+        if (const std::string e = validateFloorFilter(p); !e.empty())
+            throw UsageError("--sa-period " + args.text("sa-period") + ": " + e);
+    }
+    j["metrics"] = recordMetricsJson(recordMetrics(ground, saPeriod));
     const AmplitudeSpectrum sg = amplitudeSpectrum(ground.samples, ground.dt);
     j["spectrum"] = spectrumJson(sg, static_cast<std::size_t>(count));
     j["floor"] = nullptr;

@@ -13,6 +13,7 @@
 #include "core/io/ResultJson.h"
 #include "core/slab/FiniteResult.h"
 #include "core/slab/History.h"
+#include "core/sweep/SearchWork.h"
 
 #include <chrono>
 #include <iostream>
@@ -45,6 +46,9 @@ int runSimulate(const ArgList& argv) {
     if (isPlanar(args)) return runSimulatePlanar(args, amplitude, frequency, historyStep);
     const Slab1DCase c = slab1DCaseFromFlags(args);
 
+    if (const InputProblem p = checkRunWork(c, amplitude, {frequency, 1.0, solverCostFactor(c)});
+        !p.empty())
+        throw UsageError("--frequency " + args.text("frequency") + ": " + p.why);
     RunOptions options;
     options.recordEvents = wantHistory || args.has("events");
     const auto t0 = std::chrono::steady_clock::now();

@@ -36,11 +36,23 @@ int runCommand(const std::function<int(const ArgList&)>& command, const char* na
 
 int main(int argc, char** argv) {
     const std::map<std::string, std::function<int(const ArgList&)>> commands = {
-        {"simulate", runSimulate}, {"surface", runSurface},     {"critical", runCritical},
-        {"bench", runBench},       {"precision", runPrecision}, {"record", runRecord},
-        {"codes", runCodes},       {"check", runCheck},         {"friction", runFriction},
-        {"report", runReport},     {"floors", runFloors},       {"study", runStudyCommand},
-        {"merge", runMerge},       {"fragility", runFragility}, {"risk", runRisk},
+        {"simulate", runSimulate},
+        {"surface", runSurface},
+        {"critical", runCritical},
+        {"bench", runBench},
+        {"precision", runPrecision},
+        {"record", runRecord},
+        {"codes", runCodes},
+        {"check", runCheck},
+        {"friction", runFriction},
+        {"report", runReport},
+        {"floors", runFloors},
+        {"study", runStudyCommand},
+        {"merge", runMerge},
+        {"fragility", runFragility},
+        {"risk", runRisk},
+        {"rocking", runRocking},
+        {"rocking-map", runRockingMap},
     };
     const std::string first = argc < 2 ? std::string() : argv[1];
     if (argc < 2 || first == "--help" || first == "-h") {

@@ -1,10 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/analysis/RunAnalysis.h"
 
+#include "core/base/InputError.h"
 #include "core/base/Stopwatch.h"
+#include "core/base/TextInput.h"
+#include "core/codes/Building.h"
 #include "core/slab/FiniteResult.h"
 #include "core/sweep/ModelPoint.h"
+#include "core/sweep/SearchWork.h"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -25,6 +30,31 @@ ModelPoint requestModel(const AnalysisRequest& q) {
     return m;
 }
 
+// What a run of the request's sine model costs at f (core/sweep/SearchWork.h).
+SineWorkModel sineWork(const AnalysisRequest& q, double frequencyHz) {
+    if (q.planar) return planarWork(*q.planar, frequencyHz);
+    return {frequencyHz, 1.0, solverCostFactor(q.slab)};
+}
+
+// Every search's frequency, before the first run: a search too long for its inputs is refused.
+void requireSearchWork(const AnalysisRequest& q, const std::vector<double>& frequencies,
+                       double scanFrom, const CriticalSearch& search) {
+    for (double f : frequencies)
+        if (const InputProblem p = checkSearchWork(q.slab, scanFrom, search, sineWork(q, f));
+            !p.empty())
+            throw InputError(describe(p));
+}
+
+// A code's period (entered, or its own formula's for a very low building) below the shortest
+// building period kinstab checks: the sine at 1 / T would be no building's motion.
+void requireCheckablePeriod(const CodeResult& r) {
+    if (r.periodSeconds >= kMinPeriodS) return;
+    throw InputError(r.code + ".period_s = " + formatDouble(r.periodSeconds) + " s: below " +
+                     formatDouble(kMinPeriodS) +
+                     " s, the shortest building period the slab check accepts (building.period_s, "
+                     "or the code's formula from building.height)");
+}
+
 // For the searches: after a cancel a run returns at once, so a search ends within one run (its
 // result is then dropped). The surface keeps the plain point: each of its points is one run.
 PointFunction stoppable(const PointFunction& point, const SweepControl& control) {
@@ -41,6 +71,13 @@ void runSurface(const AnalysisRequest& q, const ModelPoint& m, AnalysisControl& 
         control.step();
         if (control.onPoint) control.onPoint(k, r);
     };
+    if (!q.grid.amplitudes.empty() && !q.grid.frequencies.empty()) {
+        const double aMax = *std::max_element(q.grid.amplitudes.begin(), q.grid.amplitudes.end());
+        const double fMax = *std::max_element(q.grid.frequencies.begin(), q.grid.frequencies.end());
+        if (const InputProblem p = checkSurfaceWork(q.slab, q.grid.size(), aMax, sineWork(q, fMax));
+            !p.empty())
+            throw InputError(describe(p));
+    }
     const auto t0 = Clock::now();
     out.surface = runSweep(q.grid, m.point, &sweep, q.threads);
     out.surfaceSeconds = secondsSince(t0);
@@ -51,6 +88,7 @@ void runCurve(const AnalysisRequest& q, const ModelPoint& m, AnalysisControl& co
               AnalysisResult& out) {
     SweepControl& sweep = control.sweepControl();
     sweep.onProgress = [&control](std::size_t, std::size_t) { control.step(); };
+    requireSearchWork(q, q.criticalFrequencies, m.scanFrom, q.criticalSearch);
     const auto t0 = Clock::now();
     out.critical = criticalCurve(stoppable(m.point, sweep), q.criticalFrequencies, m.scanFrom,
                                  q.criticalSearch, &sweep, q.threads);
@@ -63,6 +101,12 @@ void runDesignCheck(const AnalysisRequest& q, const ModelPoint& m, AnalysisContr
                     AnalysisResult& out) {
     const auto t0 = Clock::now();
     try {
+        std::vector<double> frequencies;
+        for (const CodeResult& r : q.codes) {
+            requireCheckablePeriod(r);
+            frequencies.push_back(1.0 / r.periodSeconds);
+        }
+        requireSearchWork(q, frequencies, m.scanFrom, q.checkSearch);
         out.check = designCheck(q.codes, q.slab, q.checkSearch,
                                 stoppable(m.point, control.sweepControl()), m.scanFrom);
     } catch (...) {

@@ -41,7 +41,7 @@ std::string validateBuilding(const Building& b) {
         requireAbove("building.height", b.height, 0.0, maxBuildingHeight(b.unit), unitName(b.unit));
         requireAbove("building.plan_dimension", b.planDimension, 0.0, maxPlanDimension(b.unit),
                      unitName(b.unit));
-        if (b.period) requireAbove("building.period_s", *b.period, 0.0, kMaxPeriodS, "s");
+        if (b.period) requireRange("building.period_s", *b.period, kMinPeriodS, kMaxPeriodS, "s");
     } catch (const InputError& e) {
         return e.what();
     }

@@ -50,8 +50,11 @@ struct Building {
 
 // Limits validateBuilding enforces, read also by the building panel. 300 stories and 3000 ft
 // (1000 m) are well beyond the tallest building; a plan of 10,000 ft (3000 m) is no building;
-// a fundamental period of 20 s is beyond any code's spectrum.
+// a fundamental period of 20 s is beyond any code's spectrum. The stiffest buildings (one-storey
+// masonry boxes) have periods of about 0.05 s; 0.02 s leaves a factor 2.5 below them, and the
+// slab's check runs its sine at 1 / T, so a shorter period only multiplies its work.
 inline constexpr int kMaxStories = 300;
+inline constexpr double kMinPeriodS = 0.02;
 inline constexpr double kMaxPeriodS = 20.0;
 double maxBuildingHeight(LengthUnit u); // in u
 double maxPlanDimension(LengthUnit u);  // in u

@@ -4,6 +4,7 @@
 #include "core/check/RecordAnalysis.h"
 #include "core/excitation/FourierSpectrum.h"
 #include "core/sweep/CriticalRecordScale.h"
+#include "core/sweep/SearchWork.h"
 #include "core/sweep/Sweep.h"
 
 #include <cmath>
@@ -36,8 +37,14 @@ CaseCritical fittedSineCritical(Slab1DCase slab, const Accelerogram& motion,
         return out;
     }
     slab.envelope = Envelope{fit->alpha, fit->beta, std::nullopt};
-    const CriticalResult r =
-        criticalAmplitude(slab1DPoint(slab), peaks.front().frequency, slab.slab.mu, search);
+    const double f = peaks.front().frequency;
+    if (const InputProblem p =
+            checkSearchWork(slab, slab.slab.mu, search, {f, 1.0, solverCostFactor(slab)});
+        !p.empty()) {
+        out.noFit = "the fitted sine: " + describe(p);
+        return out;
+    }
+    const CriticalResult r = criticalAmplitude(slab1DPoint(slab), f, slab.slab.mu, search);
     return {r.amplitude, fit->peak(), r.runs, {}};
 }
 

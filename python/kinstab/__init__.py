@@ -4,25 +4,33 @@
 The engine of kinstab (Furgerson 1980 stick-slip model) in Python::
 
     import kinstab
-    r = kinstab.simulate(0.9, 1.0, envelope="moderate")
-    print(r.outcome, r.tau_c, r.gamma_c)
+    r = kinstab.simulate(1.2, 1.0, envelope="moderate")
+    print(r.outcome, r.tau_c, r.gamma_c)   # collapsed 20.156... 1.879...
+
+(At 0.9 g the same slab stays on its walls: outcome 'stable', tau_c NaN, gamma_c 0.)
 
 Every run takes the same case keywords as ``kinstab-cli``'s model flags: ``envelope`` (a preset
 name or an :class:`Envelope`), ``tstar`` or ``wall_width_in``, ``mu``, ``limit``, ``duration``,
 ``scale``, ``solver``, ``paper_steps``; ``planar=Planar(fy=...)`` selects the planar slab of
-ch. VI. A bad value raises ``ValueError`` with the command line's message.
+ch. VI, each spelt out in the signatures. A bad value raises ``ValueError`` with the command
+line's message; a value of the wrong type or a misspelt keyword ``TypeError`` naming the function
+and the keyword; a missing file ``FileNotFoundError``. A project file is :class:`Project`
+(``Project.load(path).check()``, ``.floors()``, ``.study()``, ``.report(pdf)``).
 """
 
 from __future__ import annotations
 
 import json
+import os
 from dataclasses import dataclass
 from typing import Optional, Sequence, Tuple, Union
 
 import numpy as np
 
 from . import _core
-from ._core import (  # noqa: F401  (re-exported)
+from ._api import Default as _D
+from ._api import public as _public
+from ._core import (
     EXIT_SIDES,
     OUTCOMES,
     Envelope,
@@ -31,14 +39,26 @@ from ._core import (  # noqa: F401  (re-exported)
     Record,
     SimulationResult,
     SlabCase,
-    floor_filter,
-    read_record,
 )
-from . import friction  # noqa: F401
+from . import friction
 
 __version__: str = _core.__version__
 
 Axis = Union[Sequence[float], np.ndarray, str]
+PathLike = Union[str, "os.PathLike[str]"]
+
+__all__ = [
+    "EXIT_SIDES", "OUTCOMES", "Envelope", "PlanarCase", "PlanarResult", "Record",
+    "SimulationResult", "SlabCase", "Planar", "Surface", "Project", "Assessment",
+    "slab_case", "simulate", "surface", "critical", "simulate_record", "read_record",
+    "floor_filter", "record_table", "codes", "assess", "risk", "read_hazard", "friction",
+    "study", "__version__",
+]
+
+
+def __dir__() -> list:
+    """What the package offers (its imports, np, json, Optional, are not part of it)."""
+    return sorted(__all__)
 
 
 @dataclass(frozen=True)
@@ -55,6 +75,15 @@ class Planar:
     vertical: Optional[str] = None
 
 
+_CASE_DOC = """The case keywords (the CLI's model flags; defaults as shown): ``envelope`` (a preset
+    name 'fast', 'moderate', 'slow' or an :class:`Envelope`), ``tstar`` (s; default 0.099, the
+    paper's 8 inch wall) or ``wall_width_in``, ``mu``, ``limit``, ``duration`` (s), ``scale``
+    ('one', 'tau_dur', 'tau_max', 'tau_rise'), ``solver`` ('exact' or 'paper'), ``paper_steps``
+    and ``planar=Planar(fy=...)`` for the planar slab of ch. VI. Or ``case=``, a made case (then
+    none of the keywords)."""
+
+
+@_public
 def slab_case(
     *,
     envelope: Union[str, Envelope] = "moderate",
@@ -79,31 +108,57 @@ def slab_case(
                       normalization=planar.normalization, vertical=planar.vertical)
 
 
-def _case(case: Optional[Union[SlabCase, PlanarCase]], keywords: dict) -> Union[SlabCase, PlanarCase]:
+_default_case: Optional[SlabCase] = None
+
+
+def _case(function: str, case: Optional[Union[SlabCase, PlanarCase]],
+          keywords: dict) -> Union[SlabCase, PlanarCase]:
+    global _default_case
+    set_ = {k: v for k, v in keywords.items() if v.__class__ is not _D}
     if case is not None:
-        if keywords:
-            raise ValueError("case: give either case= or case keywords, not both ("
-                             + ", ".join(sorted(keywords)) + ")")
+        if set_:
+            raise ValueError(f"{function}(): give either case= or the case keywords, not both ("
+                             + ", ".join(sorted(set_)) + ")")
         return case
-    return slab_case(**keywords)
+    if set_:
+        return slab_case(**set_)  # slab_case's defaults are the keywords' defaults
+    if _default_case is None:  # a case is immutable: the default one is made once
+        _default_case = slab_case()
+    return _default_case
 
 
+@_public
 def simulate(
     amplitude: float,
     frequency: float,
     *,
+    envelope: Union[str, Envelope] = _D("moderate"),
+    tstar: Optional[float] = _D(None),
+    wall_width_in: Optional[float] = _D(None),
+    mu: float = _D(0.6),
+    limit: float = _D(1.0),
+    duration: Optional[float] = _D(None),
+    scale: str = _D("tau_max"),
+    solver: str = _D("exact"),
+    paper_steps: float = _D(16.0),
+    planar: Optional[Planar] = _D(None),
     case: Optional[Union[SlabCase, PlanarCase]] = None,
     events: bool = False,
     history: bool = False,
     history_step: float = 0.05,
-    **case_keywords,
 ) -> Union[SimulationResult, PlanarResult]:
     """One run under A e(t) sin(2 pi f t): ``amplitude`` in g, ``frequency`` in Hz.
 
     ``events=True`` keeps the event list, ``history=True`` the sampled history (every
     ``history_step`` in tau and at every event; planar: the solver's path), as NumPy arrays.
+    ``tau_c`` is NaN and ``gamma_c`` 0 when the slab does not collapse (``outcome`` says what
+    happened instead).
+
+    {case}
     """
-    c = _case(case, case_keywords)
+    c = _case("simulate", case, dict(
+        envelope=envelope, tstar=tstar, wall_width_in=wall_width_in, mu=mu, limit=limit,
+        duration=duration, scale=scale, solver=solver, paper_steps=paper_steps, planar=planar))
     if isinstance(c, PlanarCase):
         if history_step != 0.05:
             raise ValueError("history_step: with the planar model the history lists the "
@@ -135,40 +190,78 @@ class Surface:
         names = np.array(list(OUTCOMES) + ["not_run"], dtype=object)
         return names[self.outcome]
 
+    def to_dataframe(self):
+        """One row per grid point: amplitude_g, frequency_hz, outcome, tau_c, gamma_c (and
+        exit_side for the planar model). Needs pandas (Debian: python3-pandas)."""
+        from ._frames import surface_frame
 
+        return surface_frame(self)
+
+
+@_public
 def surface(
     amplitudes: Axis,
     frequencies: Axis,
     *,
+    envelope: Union[str, Envelope] = _D("moderate"),
+    tstar: Optional[float] = _D(None),
+    wall_width_in: Optional[float] = _D(None),
+    mu: float = _D(0.6),
+    limit: float = _D(1.0),
+    duration: Optional[float] = _D(None),
+    scale: str = _D("tau_max"),
+    solver: str = _D("exact"),
+    paper_steps: float = _D(16.0),
+    planar: Optional[Planar] = _D(None),
     case: Optional[Union[SlabCase, PlanarCase]] = None,
     threads: int = 0,
-    **case_keywords,
 ) -> Surface:
     """Sweeps every (A, f) of the grid on ``threads`` threads (0: all cores) with the GIL
     released; Ctrl+C cancels it (KeyboardInterrupt). Axes are sequences of numbers or the
-    command line's LIST text ("0.7:1.15:0.05")."""
-    c = _case(case, case_keywords)
+    command line's LIST text ("0.7:1.15:0.05").
+
+    {case}
+    """
+    c = _case("surface", case, dict(
+        envelope=envelope, tstar=tstar, wall_width_in=wall_width_in, mu=mu, limit=limit,
+        duration=duration, scale=scale, solver=solver, paper_steps=paper_steps, planar=planar))
     return Surface(**_core._surface(c, amplitudes, frequencies, threads))
 
 
+@_public
 def critical(
     frequencies: Axis,
     *,
+    envelope: Union[str, Envelope] = _D("moderate"),
+    tstar: Optional[float] = _D(None),
+    wall_width_in: Optional[float] = _D(None),
+    mu: float = _D(0.6),
+    limit: float = _D(1.0),
+    duration: Optional[float] = _D(None),
+    scale: str = _D("tau_max"),
+    solver: str = _D("exact"),
+    paper_steps: float = _D(16.0),
+    planar: Optional[Planar] = _D(None),
     case: Optional[Union[SlabCase, PlanarCase]] = None,
     max_amplitude: float = 5.0,
     scan_step: float = 0.01,
     tolerance: float = 1e-6,
-    **case_keywords,
 ) -> np.ndarray:
     """A_crit(f) in g: the smallest amplitude that collapses the slab at each frequency (a fine
     scan from where slip can start, then bisection); NaN where nothing up to ``max_amplitude``
-    collapses."""
-    c = _case(case, case_keywords)
+    collapses.
+
+    {case}
+    """
+    c = _case("critical", case, dict(
+        envelope=envelope, tstar=tstar, wall_width_in=wall_width_in, mu=mu, limit=limit,
+        duration=duration, scale=scale, solver=solver, paper_steps=paper_steps, planar=planar))
     return _core._critical(c, frequencies, max_amplitude, scan_step, tolerance)
 
 
+@_public
 def simulate_record(
-    path: str,
+    path: PathLike,
     *,
     amplitude: Optional[float] = None,
     scale_factor: Optional[float] = None,
@@ -180,21 +273,80 @@ def simulate_record(
     tolerance: float = 1e-6,
     events: bool = False,
     history_step: Optional[float] = None,
+    envelope: Union[str, Envelope] = _D("moderate"),
+    tstar: Optional[float] = _D(None),
+    wall_width_in: Optional[float] = _D(None),
+    mu: float = _D(0.6),
+    limit: float = _D(1.0),
+    duration: Optional[float] = _D(None),
+    scale: str = _D("tau_max"),
     case: Optional[SlabCase] = None,
-    **case_keywords,
 ) -> dict:
     """The 1-DOF slab under a recorded motion (through the floor filter of period
     ``floor_period`` s when given), scaled to peak ``amplitude`` g or by ``scale_factor``.
     ``critical=True`` also searches the smallest peak that collapses the slab
     (``critical_peak``, NaN when none). Returns a dict: outcome, tau_c, gamma_c, tau_ref,
     amplitude, scale_factor, ground and motion (:class:`Record`, the motion unscaled), work,
-    events and, with ``history_step``, the sampled history (arrays tau, accel, delta, ...)."""
-    c = _case(case, case_keywords)
-    return _core._simulate_record(c, path, amplitude, scale_factor, floor_period, damping,
-                                  critical, max_amplitude, scan_step, tolerance, events,
+    events and, with ``history_step``, the sampled history (arrays tau, accel, delta, ...).
+    The case keywords are those of :func:`simulate` less solver and planar (a record runs the
+    exact 1-DOF solver); a missing file raises FileNotFoundError."""
+    c = _case("simulate_record", case, dict(
+        envelope=envelope, tstar=tstar, wall_width_in=wall_width_in, mu=mu, limit=limit,
+        duration=duration, scale=scale))
+    return _core._simulate_record(c, os.fspath(path), amplitude, scale_factor, floor_period,
+                                  damping, critical, max_amplitude, scan_step, tolerance, events,
                                   history_step)
 
 
+@_public
+def read_record(
+    path: PathLike,
+    *,
+    format: str = "auto",
+    dt: Optional[float] = None,
+    unit: Optional[str] = None,
+    channel: str = "",
+) -> Record:
+    """Reads a PEER AT2, COSMOS, CSMIP V2, values or time-accel file (``format`` 'auto',
+    'at2', 'cosmos', 'csmip', 'values' or 'time-accel'; ``dt`` s and ``unit`` for the formats
+    that do not state them; ``channel`` picks a COSMOS/CSMIP channel). The record's catalogue
+    numbers are ``record.metrics(sa_period=T)``: PGA, PGV, PGD, Arias intensity, D5-95, mean
+    period and Sa(T, 5 %). A missing file raises FileNotFoundError."""
+    return _core.read_record(os.fspath(path), format=format, dt=dt, unit=unit, channel=channel)
+
+
+@_public
+def floor_filter(record: Record, period: float, damping: float = 0.02,
+                 tail: Optional[float] = None) -> Record:
+    """The floor's absolute acceleration: a damped SDOF (``period`` s, ``damping`` ratio) on the
+    record, with a free-vibration tail of ``tail`` s (default: until it decays to 1 %, at most
+    120 s)."""
+    if not isinstance(record, Record):
+        raise TypeError(f"floor_filter(): record={record!r} is not a Record (read_record makes "
+                        "one)")
+    return _core.floor_filter(record, period, damping, tail)
+
+
+@_public
+def record_table(paths: Sequence[PathLike], *, sa_period: Optional[float] = None) -> list:
+    """The catalogue numbers of each record file (:meth:`Record.metrics`), one dict per file
+    with its ``file``, ``name`` and ``component``: a list, which ``pandas.DataFrame`` takes
+    as it is."""
+    if isinstance(paths, (str, os.PathLike)):
+        raise TypeError(f"record_table(): paths={paths!r} is one file; give a list of files")
+    rows = []
+    for p in paths:
+        r = read_record(p)
+        rows.append({"file": os.fspath(p), "name": r.name, "component": r.component,
+                     **r.metrics(sa_period)})
+    return rows
+
+
+for _f in (simulate, surface, critical):
+    _f.__doc__ = _f.__doc__.replace("{case}", _CASE_DOC)
+
+
+@_public
 def codes(building: dict, **code_inputs: dict) -> dict:
     """Lateral force ratios of the building codes for one building.
 
@@ -205,22 +357,24 @@ def codes(building: dict, **code_inputs: dict) -> dict:
     return json.loads(_core._codes_json(json.dumps(building), json.dumps(code_inputs)))
 
 
-def assess(path: str) -> dict:
+@_public
+def assess(path: PathLike) -> "Assessment":
     """The assessment of a project file: every check the project implies, each with its id
     (``sine.ubc1976``, ``record.atc306``, ``floors.asce7_22.mce_r``, ``risk.set0``, ...), what
     it compares (demand and capacity in one intensity: g, or 1/yr for a risk check's annual rate
     of collapse against the target rate), its margin and verdict, and the governing check.
     The same dictionary as ``kinstab-cli check --project PATH``'s ``"assessment"``; a bad field
     raises ValueError naming it."""
-    return json.loads(_core._assess_json(str(path)))
+    return Assessment(json.loads(_core._assess_json(os.fspath(path))))
 
 
+@_public
 def risk(
-    hazard: str,
+    hazard: PathLike,
     *,
     hazard_format: str = "auto",
     site: Optional[Tuple[float, float]] = None,
-    results: Optional[str] = None,
+    results: Optional[PathLike] = None,
     set: Optional[int] = None,
     median: Optional[float] = None,
     beta: Optional[float] = None,
@@ -246,8 +400,9 @@ def risk(
         median, beta, measure, years, target_rate, im, bootstrap, seed))
 
 
+@_public
 def read_hazard(
-    path: str,
+    path: PathLike,
     *,
     hazard_format: str = "auto",
     site: Optional[Tuple[float, float]] = None,
@@ -258,3 +413,8 @@ def read_hazard(
     ``source`` and ``zero_rate_points_dropped``. ``measure`` picks a USGS file's curve and is
     checked against the file's; a bad file raises ValueError naming the file and line."""
     return _core._read_hazard(str(path), hazard_format, site, measure)
+
+
+from ._results import Assessment  # noqa: E402  (uses the package's functions above)
+from .project import Project  # noqa: E402
+from . import study  # noqa: E402,F401

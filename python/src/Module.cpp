@@ -17,4 +17,5 @@ PYBIND11_MODULE(_core, m) {
     kinstab::python::bindStudy(m);
     kinstab::python::bindAssess(m);
     kinstab::python::bindRisk(m);
+    kinstab::python::bindProjectRuns(m);
 }

@@ -6,6 +6,7 @@
 #include "core/base/TextInput.h"
 #include "core/check/RecordAnalysis.h"
 #include "core/excitation/FloorFilter.h"
+#include "core/excitation/RecordMetrics.h"
 #include "core/excitation/RecordedMotion.h"
 #include "core/records/RecordReader.h"
 #include "core/slab/History.h"
@@ -80,6 +81,39 @@ py::array_t<double> sampleTimes(const Accelerogram& a) {
     return t;
 }
 
+py::object orNone(const std::optional<double>& v) {
+    return v ? py::object(py::float_(*v)) : py::object(py::none());
+}
+
+// The record's catalogue numbers (core/excitation/RecordMetrics.h), SI units named in the keys.
+py::dict metricsDict(const Accelerogram& a, std::optional<Real> saPeriod) {
+    std::optional<double> period = real(saPeriod);
+    if (period) {
+        const FloorFilterParams p{finite("sa_period", *period), kSpectralDamping, 0.0};
+        if (const InputProblem e = checkFloorFilter(p); !e.empty())
+            badArgument("sa_period", *period, e.why);
+    }
+    RecordMetrics m;
+    {
+        py::gil_scoped_release unlocked;
+        m = recordMetrics(a, period);
+    }
+    py::dict d;
+    d["pga_g"] = m.pga;
+    d["pgv_m_s"] = m.pgv;
+    d["pgd_m"] = m.pgd;
+    d["final_velocity_m_s"] = m.finalVelocity;
+    d["arias_m_s"] = m.arias;
+    d["t5_s"] = orNone(m.t5);
+    d["t95_s"] = orNone(m.t95);
+    d["d5_95_s"] = orNone(m.d5_95);
+    d["mean_period_s"] = orNone(m.meanPeriod);
+    d["sa_period_s"] = orNone(period);
+    d["sa_damping"] = kSpectralDamping;
+    d["sa_g"] = m.sa ? py::object(py::float_(m.sa->g)) : py::object(py::none());
+    return d;
+}
+
 void bindRecord(py::module_& m) {
     py::class_<Accelerogram>(m, "Record", "An accelerogram: equally spaced samples in g.")
         .def_readonly("dt", &Accelerogram::dt, "s")
@@ -99,6 +133,11 @@ void bindRecord(py::module_& m) {
             "peak", [](const Accelerogram& a) { return a.peak().value; },
             "the signed sample of largest |a|, g")
         .def_property_readonly("peak_time", [](const Accelerogram& a) { return a.peak().time; })
+        .def("metrics", &metricsDict, py::arg("sa_period") = py::none(),
+             "PGA (g), PGV (m/s), PGD (m), Arias intensity (m/s), D5-95 (s), mean period Tm "
+             "(s, Rathje et al. 1998) and, with sa_period (s), Sa(T, 5 %) in g: a dict. "
+             "Integrated exactly for the linear-between-samples record from rest, without "
+             "baseline correction (final_velocity_m_s shows the drift).")
         .def("__len__", &Accelerogram::size)
         .def("__repr__", [](const Accelerogram& a) {
             return "<Record " + a.name + " " + a.component + ": " + std::to_string(a.size()) +

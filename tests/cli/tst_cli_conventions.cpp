@@ -54,7 +54,7 @@ private slots:
         QCOMPARE(overviewCommands(),
                  QStringList({"simulate", "surface", "critical", "codes", "check", "report",
                               "record", "friction", "precision", "bench", "floors", "study",
-                              "merge", "fragility", "risk"}));
+                              "merge", "fragility", "risk", "rocking", "rocking-map"}));
         QCOMPARE(cli({"-h"}).code, 0);
         QCOMPARE(cli({}).code, 2); // no command is bad input, with the overview on stdout
     }

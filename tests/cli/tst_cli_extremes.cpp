@@ -111,6 +111,41 @@ private slots:
         if (r.code == 0)
             QVERIFY2(!r.out.contains("NaN") && !r.out.contains("nan"), r.out.left(400));
     }
+    // Inputs each in range whose product is the work (core/sweep/SearchWork.h): a search at
+    // the fastest sine, under the slowest envelope, with the finest paper solver, over the
+    // widest scan; one run of each model at the fastest sine under the slowest envelope.
+    void searchesAndRunsAtTheirExtremesEndInSeconds_data() {
+        QTest::addColumn<QStringList>("args");
+        const QStringList slow{"--alpha", "0.001", "--beta", "10000"};
+        QTest::newRow("critical 1000 Hz") << QStringList{"critical", "--frequencies", "1000"};
+        QTest::newRow("critical 100 Hz, slow envelope")
+            << QStringList{"critical", "--frequencies", "100"} + slow;
+        QTest::newRow("critical, paper solver 1e6 steps") << QStringList{
+            "critical", "--frequencies", "2", "--solver", "paper", "--paper-steps", "1000000"};
+        QTest::newRow("critical, 1e5 scan points to 1000 g") << QStringList{
+            "critical", "--frequencies", "2",   "--max-amplitude", "1000", "--scan-step",
+            "0.01",     "--mu",          "0.01"};
+        QTest::newRow("simulate 1000 Hz, slow envelope")
+            << QStringList{"simulate", "--amplitude", "5", "--frequency", "1000"} + slow;
+        QTest::newRow("planar 1000 Hz, slow envelope")
+            << QStringList{"simulate",    "--model", "planar",      "--fy", "1",
+                           "--amplitude", "5",       "--frequency", "1000"} +
+                   slow;
+        QTest::newRow("surface to 1000 Hz, slow envelope")
+            << QStringList{"surface", "--amplitudes", "0.7:5:0.1", "--frequencies", "1:1000:10"} +
+                   slow;
+    }
+    void searchesAndRunsAtTheirExtremesEndInSeconds() {
+        QFETCH(QStringList, args);
+        QElapsedTimer clock;
+        clock.start();
+        const Run r = run(KINSTAB_CLI, args, 30000);
+        const qint64 ms = clock.elapsed();
+        QVERIFY2(r.code == 0 || r.code == 2,
+                 qPrintable(QString("exit %1 after %2 ms: %3").arg(r.code).arg(ms).arg(r.err)));
+        QVERIFY2(ms < 10000, qPrintable(QString("%1 ms").arg(ms)));
+        if (r.code == 2) QVERIFY2(r.err.contains("half-periods"), r.err.constData());
+    }
 };
 
 QTEST_MAIN(TestCliExtremes)

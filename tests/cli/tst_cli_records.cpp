@@ -69,6 +69,21 @@ void TestCliRecords::recordFloorSpectrumAtOneOverT() {
     QVERIFY(floor["energy_near_1_over_T"].toDouble() > 0.5);
     QCOMPARE(r.json["envelope"]["of"].toString(), QString("floor"));
     QVERIFY(r.json["envelope"]["beta"].toDouble() > r.json["envelope"]["alpha"].toDouble());
+    // Issue 35: the record's metrics, Sa at the floor period (the building's) unless
+    // --sa-period says otherwise (core/excitation/RecordMetrics, tested in tst_record_metrics).
+    const QJsonObject m = r.json["metrics"].toObject();
+    QCOMPARE(m["sa_period_s"].toDouble(), 1.0);
+    QCOMPARE(m["sa_damping"].toDouble(), 0.05);
+    QCOMPARE(m["baseline_correction"].toString(), QString("none"));
+    QCOMPARE(m["pga_g"].toDouble(), 1.219037); // the largest sample (SOURCES.md: PGA 1.219 g)
+    for (const char* key : {"pgv_m_s", "pgd_m", "arias_m_s", "d5_95_s", "mean_period_s", "sa_g"})
+        QVERIFY2(m[key].toDouble() > 0, key);
+    const Run at2 = runCli({"record", "--file", kRecords + "RSN77_SFERN_PUL164.AT2",
+                            "--floor-period", "1", "--sa-period", "2"});
+    QCOMPARE(at2.json["metrics"]["sa_period_s"].toDouble(), 2.0);
+    QVERIFY(at2.json["metrics"]["sa_g"].toDouble() != m["sa_g"].toDouble());
+    const Run none = runCli({"record", "--file", kRecords + "RSN77_SFERN_PUL164.AT2"});
+    QVERIFY(none.json["metrics"]["sa_g"].isNull());
 }
 
 // Rinaldi 228 as recorded, mu 0.5: the independent small-step reference of
@@ -137,6 +152,10 @@ void TestCliRecords::badInput_data() {
     QTest::newRow("record flag without record")
         << QStringList{"simulate", "--amplitude", "1", "--frequency", "1", "--record-dt", "0.01"}
         << "--record-dt 0.01: needs --record";
+    QTest::newRow("sa period 0") << QStringList{"record", "--file", up, "--sa-period", "0"}
+                                 << "--sa-period 0: floor period 0 s: must be at least 0.01 s";
+    QTest::newRow("sa period text")
+        << QStringList{"record", "--file", up, "--sa-period", "one"} << "--sa-period";
     QTest::newRow("unknown channel")
         << QStringList{"record", "--file", kRecords + "pacoima_dam.V2", "--record-channel", "VERT"}
         << "it has: 9 RAD, 10 UP, 11 TAN";

@@ -94,7 +94,10 @@ private slots:
         QTest::newRow("NaN height")
             << withBuilding([](Building& b) { b.height = kNaN; }) << "building.height = nan";
         QTest::newRow("T = 0") << withBuilding([](Building& b) { b.period = 0.0; })
-                               << "building.period_s = 0 s: must be > 0";
+                               << "building.period_s = 0 s: must be between 0.02 and 20";
+        // Below the stiffest buildings' 0.05 s (core/codes/Building.h, kMinPeriodS).
+        QTest::newRow("T = 0.019") << withBuilding([](Building& b) { b.period = 0.019; })
+                                   << "building.period_s = 0.019 s: must be between 0.02 and 20";
         QTest::newRow("T NaN") << withBuilding([](Building& b) { b.period = kNaN; })
                                << "building.period_s = nan";
         QTest::newRow("D = 0") << withBuilding([](Building& b) { b.planDimension = 0; })

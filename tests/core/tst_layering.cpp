@@ -22,8 +22,9 @@ namespace {
 // included; risk/ reads hazard files and integrates a study's fragilities against them;
 // assessment/ composes a project's checks from everything below, so it sits on top.
 const std::vector<std::string> kCoreFloors = {
-    "base",  "numerics", "records",  "codes",    "friction", "excitation", "slab", "precision",
-    "sweep", "check",    "building", "analysis", "study",    "io",         "risk", "assessment"};
+    "base",     "numerics",  "records", "codes", "friction",  "excitation",
+    "slab",     "precision", "sweep",   "check", "building",  "rocking",
+    "analysis", "study",     "io",      "risk",  "assessment"};
 
 struct Finding {
     std::vector<std::string> upward;     // "core/a/X.h includes core/b/Y.h (floor b above a)"

@@ -69,10 +69,14 @@ def test_not_finite_named():
 
 def test_record_errors_name_the_file(tmp_path):
     missing = tmp_path / "none.AT2"
-    with pytest.raises(ValueError, match=r"^path='.*none\.AT2': "):
+    with pytest.raises(FileNotFoundError, match=r"read_record\(\): path: no such file"):
         kinstab.read_record(str(missing))
+    broken = tmp_path / "broken.AT2"
+    broken.write_text("PEER NGA STRONG MOTION DATABASE RECORD\nnot a record\n")
+    with pytest.raises(ValueError, match=r"^path='.*broken\.AT2': "):
+        kinstab.read_record(str(broken))
     with pytest.raises(ValueError, match=r"^format='values': needs dt"):
-        kinstab.read_record(str(missing), format="values")
+        kinstab.read_record(str(broken), format="values")
 
 
 def test_record_path_with_nul_is_refused(source_dir):
@@ -89,7 +93,7 @@ def test_codes_errors_name_the_field():
 
 
 def test_case_and_keywords_exclude_each_other():
-    with pytest.raises(ValueError, match="either case= or case keywords"):
+    with pytest.raises(ValueError, match=r"^simulate\(\): give either case= or the case keywords"):
         kinstab.simulate(0.9, 1.0, case=kinstab.SlabCase(), mu=0.5)
 
 

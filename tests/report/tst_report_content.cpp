@@ -124,6 +124,19 @@ private slots:
         }
     }
 
+    // Issue 35: per parameter set, the statistics of the critical intensity over the records
+    // that collapse. Independent calculation (NumPy on resources/examples/study-example.jsonl,
+    // the risk example's results): x = critical_im_g of the set's rows; set 1 (mu 0.4): 6
+    // collapses, mean 1.2653776, median 1.1449609, std (ddof 1) 0.5134675, mean ln 0.1630646,
+    // std ln 0.4238016; set 2 (mu 0.6): 1.5764062, 1.5005859, 0.5150435, 0.4076314, 0.3450679.
+    void studyStatisticsPerSet() {
+        const QString text =
+            reportText(loadProject(kExamples + "paper-16-story-risk.json"), allSections());
+        QVERIFY(text.contains("Critical intensity per parameter set"));
+        QVERIFY2(text.contains("1 6 0 1.265 1.145 0.513 0.163 0.424"), qPrintable(text));
+        QVERIFY(text.contains("2 6 0 1.576 1.501 0.515 0.408 0.345"));
+    }
+
     // Each check's verdict appears once, on page 1; the check section refers to it.
     void verdictOnce() {
         const QString text =

@@ -6,6 +6,7 @@
 #include "ui/RecordPreview.h"
 
 #include <QDir>
+#include <QLabel>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtCharts/QChart>
@@ -39,6 +40,7 @@ private slots:
     void brokenFileKeepsPreviousRecord();
     void defaultVerticalIsNamed();
     void decimationKeepsExtremes();
+    void metricsShownWithSaAtThePeriod();
     void screenshot();
 };
 
@@ -110,6 +112,28 @@ void TestRecordPreview::decimationKeepsExtremes() {
     }
     QCOMPARE(top, *std::max_element(y.begin(), y.end()));
     QCOMPARE(bottom, *std::min_element(y.begin(), y.end()));
+}
+
+// Issue 35: the record's catalogue numbers on import, Sa at the period T of the floor filter's
+// field (the building's). El Centro 1940 (RSN 6, 180): the NumPy figures of
+// tests/core/tst_record_metrics.cpp (PGA 0.2807955 g, PGV 0.309286895 m/s, Arias 1.541858564
+// m/s, D5-95 24.18830614 s, Tm 0.5787257477 s, Sa(1 s) 0.4728542132 g, Sa(2 s) 0.1985421415 g),
+// shown to three digits.
+void TestRecordPreview::metricsShownWithSaAtThePeriod() {
+    RecordPreview w;
+    QVERIFY(w.loadFile(KINSTAB_SOURCE_DIR "/resources/records/RSN6_IMPVALL.I_I-ELC180.AT2"));
+    QVERIFY(w.metrics().has_value());
+    QCOMPARE(w.metrics()->sa->period, 1.0);
+    QVERIFY(std::abs(w.metrics()->sa->g - 0.4728542132) < 1e-9);
+    const QString info = w.findChild<QLabel*>("recordInfo")->text();
+    for (const char* shown : {"PGA 0.281 g", "PGV 30.9 cm/s", "Arias 1.54 m/s", "D5–95 24.2 s",
+                              "Tm 0.579 s", "Sa(1 s, 5 %) 0.473 g"})
+        QVERIFY2(info.contains(QString::fromUtf8(shown)), qPrintable(info));
+    w.setFloorFilter(FloorFilterParams{2.0, 0.02, std::nullopt});
+    QVERIFY(std::abs(w.metrics()->sa->g - 0.1985421415) < 1e-9);
+    QVERIFY(w.findChild<QLabel*>("recordInfo")->text().contains("Sa(2 s, 5 %) 0.199 g"));
+    w.clear();
+    QVERIFY(!w.metrics().has_value());
 }
 
 void TestRecordPreview::screenshot() {

@@ -4,7 +4,9 @@
 // critical intensities as kinstab-cli study, a cancelled run shows nothing partial, a bad list
 // is refused naming the field, and the export writes the rows.
 
+#include "core/excitation/RecordMetrics.h"
 #include "core/io/AtomicFile.h"
+#include "core/records/RecordReader.h"
 #include "ui/StudyTab.h"
 
 #include <QChart>
@@ -27,6 +29,59 @@ void smallStudy(StudyTab& tab) {
     tab.setSearch(2.0, 0.05);
 }
 
+QString cell(const QTableWidget* t, int row, const QString& header) {
+    for (int c = 0; c < t->columnCount(); ++c)
+        if (t->horizontalHeaderItem(c)->text() == header) return t->item(row, c)->text();
+    return "no column " + header;
+}
+
+// Issue 35: per set, the statistics of the critical intensity, recomputed here from the case
+// table's own cells: a censored case ("none up to 2 g") counted, not averaged; of two collapses
+// the median is their mean and the sample standard deviation |x1 - x2| / sqrt(2); of one, the
+// median is it and there is no deviation.
+void setTableSummarisesTheCases(const StudyTab& tab) {
+    const QTableWidget* sets = tab.setTable();
+    const QTableWidget* cases = tab.table();
+    QCOMPARE(sets->rowCount(), 2);
+    for (int s = 0; s < 2; ++s) {
+        std::vector<double> x;
+        int censored = 0;
+        for (int r = 0; r < cases->rowCount(); ++r) {
+            if (cell(cases, r, "μ") != cell(sets, s, "μ")) continue;
+            bool ok = false;
+            const double v = cell(cases, r, "Critical IM g").toDouble(&ok);
+            if (ok)
+                x.push_back(v);
+            else
+                ++censored;
+        }
+        QVERIFY(!x.empty());
+        QCOMPARE(cell(sets, s, "Records"), QString::number(x.size() + censored));
+        QCOMPARE(cell(sets, s, "Censored"), QString::number(censored));
+        const double median = cell(sets, s, "Median g").toDouble();
+        QVERIFY(std::abs(median - (x.front() + x.back()) / 2) < 1e-3 * median);
+        QCOMPARE(cell(sets, s, "Mean g"), cell(sets, s, "Median g"));
+        if (x.size() == 2)
+            QVERIFY(std::abs(cell(sets, s, "σ g").toDouble() -
+                             std::abs(x[0] - x[1]) / std::sqrt(2.0)) < 2e-3 * median);
+        else
+            QCOMPARE(cell(sets, s, "σ g"), QString("–"));
+    }
+}
+
+// The record's catalogue numbers beside each case, as core computes them on the file (the
+// suite gives the records unscaled; the study's measure is PGA, with no floor filter: no Sa).
+void caseTableShowsTheRecordsMetrics(const StudyTab& tab) {
+    const QTableWidget* cases = tab.table();
+    for (int r = 0; r < cases->rowCount(); ++r) {
+        const RecordMetrics m = recordMetrics(readRecord(cell(cases, r, "Record").toStdString()));
+        QCOMPARE(cell(cases, r, "PGA g"), QString::number(m.pga, 'g', 3));
+        QCOMPARE(cell(cases, r, "Arias m/s"), QString::number(m.arias, 'g', 3));
+        QCOMPARE(cell(cases, r, "D5–95 s"), QString::number(*m.d5_95, 'g', 3));
+        QCOMPARE(cell(cases, r, "Sa(T) g"), QString("–"));
+    }
+}
+
 } // namespace
 
 class TestStudyTab : public QObject {
@@ -42,6 +97,8 @@ private slots:
         QCOMPARE(tab.table()->rowCount(), 4);
         QCOMPARE(tab.fragility().size(), std::size_t(2));
         QVERIFY(!tab.chartView()->chart()->series().isEmpty());
+        setTableSummarisesTheCases(tab);
+        caseTableShowsTheRecordsMetrics(tab);
         // The same study through kinstab-cli: the same rows, byte for byte (the records folder
         // is absolute, so the rows name the records by absolute paths in both).
         QTemporaryDir dir;

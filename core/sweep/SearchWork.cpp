@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/sweep/SearchWork.h"
+
+#include "core/base/TextInput.h"
+
+#include <algorithm>
+#include <cmath>
+#include <locale>
+#include <sstream>
+
+namespace kinstab {
+
+namespace {
+
+// Three significant digits in the C locale: the message gives a size, not an exact count.
+std::string threeDigits(double x) {
+    std::ostringstream s;
+    s.imbue(std::locale::classic());
+    s.precision(3);
+    s << x;
+    return s.str();
+}
+
+} // namespace
+
+double solverCostFactor(const Slab1DCase& c) {
+    if (c.solver != SolverKind::Paper) return 1.0;
+    return std::max(1.0, c.paperStepsPerPeriod / kPaperStepsPerExactHalfPeriod);
+}
+
+double sineHalfPeriods(const Slab1DCase& c, double amplitude, const SineWorkModel& m) {
+    const double peak = amplitude * m.amplitudeFactor;
+    if (!(peak > c.slab.mu)) return 0.0;
+    double seconds = std::log(peak / c.slab.mu) / c.envelope.alpha;
+    if (c.slab.duration) seconds = std::min(seconds, *c.slab.duration * c.tstar);
+    return 2.0 * m.frequencyHz * seconds;
+}
+
+long searchRuns(double scanFrom, const CriticalSearch& s) {
+    const double base = std::max(s.from, scanFrom);
+    const double points = std::max(0.0, std::ceil((s.to - base) / s.scanStep));
+    const double halvings = std::ceil(std::log2(std::max(s.scanStep / s.tolerance, 1.0)));
+    return 1 + static_cast<long>(std::min(points, static_cast<double>(kMaxScanPoints))) +
+           static_cast<long>(std::min(halvings, static_cast<double>(kMaxHalvings)));
+}
+
+double runWork(const Slab1DCase& c, double amplitude, const SineWorkModel& m) {
+    return std::max(sineHalfPeriods(c, amplitude, m), kRunFloorHalfPeriods) * m.costFactor;
+}
+
+namespace {
+
+InputProblem workProblem(double runs, double perRun, double limit, const std::string& what,
+                         const SineWorkModel& m) {
+    const double work = runs * perRun;
+    if (work <= limit) return {};
+    return {"frequency", m.frequencyHz, "Hz",
+            what + " would walk up to " + threeDigits(work) + " half-periods of the sine (" +
+                threeDigits(runs) + " runs of up to " + threeDigits(perRun) + "; at most " +
+                threeDigits(limit) +
+                "): lower the frequency or the amplitude, shorten the envelope (alpha) or the "
+                "run (duration)"};
+}
+
+} // namespace
+
+InputProblem checkRunWork(const Slab1DCase& c, double amplitude, const SineWorkModel& m) {
+    return workProblem(1.0, runWork(c, amplitude, m), kMaxSearchWork, "a run there", m);
+}
+
+InputProblem checkSearchWork(const Slab1DCase& c, double scanFrom, const CriticalSearch& s,
+                             const SineWorkModel& m) {
+    return workProblem(static_cast<double>(searchRuns(scanFrom, s)), runWork(c, s.to, m),
+                       kMaxSearchWork,
+                       "an A_crit search there (up to " + formatDouble(s.to) +
+                           " g; a coarser scan_step makes fewer runs)",
+                       m);
+}
+
+SineWorkModel planarWork(const PlanarCase& c, double fxHz) {
+    return {std::max(fxHz, c.fyHz), std::max(1.0, c.ayRatio), kPlanarCostFactor};
+}
+
+InputProblem checkPlanarRunWork(const PlanarCase& c, double ax, double fxHz) {
+    Slab1DCase run; // what the bound reads: the envelope, t*, mu and tau_out
+    run.envelope = c.envelope;
+    run.tstar = c.tstar;
+    run.slab = c.slab;
+    return checkRunWork(run, ax, planarWork(c, fxHz));
+}
+
+InputProblem checkSurfaceWork(const Slab1DCase& c, std::size_t points, double maxAmplitude,
+                              const SineWorkModel& m) {
+    return workProblem(static_cast<double>(points), runWork(c, maxAmplitude, m), kMaxSurfaceWork,
+                       "a surface up to it", m);
+}
+
+} // namespace kinstab
