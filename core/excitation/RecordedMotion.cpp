@@ -143,6 +143,17 @@ std::size_t RecordedMotion::interval(double tau) const {
     return std::min(k, last);
 }
 
+// Inside the record, when lo and the last double before hi fall in one interval, every tau
+// between does (interval() is floor(tau / h), monotone).
+bool RecordedMotion::linearOn(double lo, double hi, LinearPiece& out) const {
+    if (!(lo >= 0.0 && hi > lo && hi <= endTau())) return false;
+    const std::size_t k = interval(lo);
+    if (interval(std::nextafter(hi, lo)) != k) return false;
+    const Piece& p = piece(k);
+    out = {p.a, h_ * static_cast<double>(k), p.slope};
+    return true;
+}
+
 double RecordedMotion::accel(double tau) const {
     if (tau < 0.0 || tau > endTau()) return 0.0;
     const std::size_t k = interval(tau);

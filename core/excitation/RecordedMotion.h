@@ -68,6 +68,7 @@ public:
     double boundAfter(double tau) const override;
     double boundOn(double lo, double hi) const override;
     double peak() const override { return samples_->peak() * scale_; }
+    bool linearOn(double lo, double hi, LinearPiece& out) const override;
 
     double sampleStep() const { return h_; }             // dt / t*
     double endTau() const { return samples_->endTau(); } // last sample, h (samples - 1)
