@@ -29,13 +29,13 @@ QString cell(const FloorDemand* d, bool factor, std::size_t i) {
 void levelTable(ReportDocument& doc, const Project& p, const FloorAnalysis& a) {
     const FloorDemand *asce = demandOf(a, "asce7_22"), *mce = demandOf(a, "asce7_22_mce"),
                       *ec8 = demandOf(a, "ec8");
-    Table t{{"level", "height (" + qs(unitName(p.building.unit)) + ")", "PFA (g)", "PFA/PGA",
-             "ASCE H_f", "ASCE (g)", "ASCE MCE_R (g)", "EC8 (g)", "critical PGA (g)"},
+    Table t{{"level", "height (" + lengthSymbolOf(p, LengthScale::Structure) + ")", "PFA (g)",
+             "PFA/PGA", "ASCE H_f", "ASCE (g)", "ASCE MCE_R (g)", "EC8 (g)", "critical PGA (g)"},
             {},
             {0.6, 0.9, 0.8, 0.8, 0.8, 0.8, 1.0, 0.8, 1.1},
             std::vector<Align>(9, Align::Right),
             {a.slabLevel - 1}};
-    const std::vector<double> h = levelHeights(p.building);
+    const std::vector<double> h = levelHeightsShown(p);
     for (std::size_t i = 0; i < a.pfa.size(); ++i) {
         const bool searched = i < a.critical.size();
         t.rows.push_back({QString::number(i + 1), num(h[i], 1), num(a.pfa[i], 3),
@@ -55,7 +55,7 @@ QList<QPointF> profile(const std::vector<double>& x, const std::vector<double>& 
 }
 
 void profileFigure(ReportDocument& doc, const Project& p, const FloorAnalysis& a) {
-    const std::vector<double> h = levelHeights(p.building);
+    const std::vector<double> h = levelHeightsShown(p);
     double hi = std::max(a.sdofRoofPeak, *std::max_element(a.pfa.begin(), a.pfa.end()));
     for (const LevelCritical& l : a.critical)
         if (l.criticalPga) hi = std::max(hi, *l.criticalPga);
@@ -65,7 +65,7 @@ void profileFigure(ReportDocument& doc, const Project& p, const FloorAnalysis& a
     plot.xhi = 1.05 * hi;
     plot.yhi = 1.4 * h.back(); // headroom above the roof keeps the legend off the curves
     plot.xLabel = QStringLiteral("acceleration (g)");
-    plot.yLabel = "height (" + qs(unitName(p.building.unit)) + ")";
+    plot.yLabel = "height (" + lengthSymbolOf(p, LengthScale::Structure) + ")";
     QList<QPointF> model = profile(a.pfa, h);
     model.prepend(QPointF(a.pga, 0.0));
     plot.curves.push_back({model, kModel, "PFA, model under the record", 0.25});

@@ -18,6 +18,26 @@ QString num(const std::optional<double>& x, int digits, const QString& none) {
     return x ? num(*x, digits) : none;
 }
 
+QString lengthSymbolOf(const Project& p, LengthScale scale) {
+    return qs(lengthUnitSymbol(projectUnits(p), scale));
+}
+
+QString lengthOf(const Project& p, double metres, LengthScale scale) {
+    return qs(lengthText(metres, projectUnits(p), scale));
+}
+
+double buildingMetres(const Building& b, double v) {
+    return b.unit == LengthUnit::Feet ? v * kMetresPerFoot : v;
+}
+
+std::vector<double> levelHeightsShown(const Project& p) {
+    std::vector<double> h = levelHeights(p.building);
+    const double perShown = metresPerUnit(projectUnits(p), LengthScale::Structure);
+    for (double& x : h)
+        x = buildingMetres(p.building, x) / perShown;
+    return h;
+}
+
 QString accelG(double g) {
     return num(g, 3);
 }
@@ -73,7 +93,8 @@ QString listText(const std::vector<double>& v, const QString& unit) {
 
 void addInputSections(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {
     const Building& b = p.building;
-    const QString u = qs(unitName(b.unit));
+    const QString u = lengthSymbolOf(p, LengthScale::Structure);
+    auto len = [&](double v) { return lengthOf(p, buildingMetres(b, v), LengthScale::Structure); };
     doc.addSection(QStringLiteral("Inputs"));
     doc.addHeading(QStringLiteral("Building"), 2);
     Table t{{"quantity", "symbol", "value", "unit"},
@@ -83,8 +104,8 @@ void addInputSections(ReportDocument& doc, const Project& p, const ReportAnalysi
             {}};
     t.rows.push_back({"name", "", qs(b.name.empty() ? p.name : b.name), ""});
     t.rows.push_back({"stories", "n", QString::number(b.stories), ""});
-    t.rows.push_back({"height of the roof above the base", "h_n", num(b.height, 2), u});
-    t.rows.push_back({"plan dimension parallel to the force", "D", num(b.planDimension, 2), u});
+    t.rows.push_back({"height of the roof above the base", "h_n", len(b.height), u});
+    t.rows.push_back({"plan dimension parallel to the force", "D", len(b.planDimension), u});
     t.rows.push_back({"fundamental period", "T",
                       b.period ? num(*b.period, 3) : QStringLiteral("each code's formula"), "s"});
     t.rows.push_back({"lateral system", "", systemLabel(b.system), ""});
@@ -118,9 +139,11 @@ void addInputSections(ReportDocument& doc, const Project& p, const ReportAnalysi
                        ""});
     sl.rows.push_back({"friction coefficient", "μ", num(s.slab.mu, 3), ""});
     // The wall beside the time it sets: t* = √(d/2g), so d = 2g·t*² when only t* was entered.
-    const double dIn = p.wallWidthIn ? *p.wallWidthIn : wallWidthFromTstar(s.tstar) / 0.0254;
+    // In the project's units, to 0.1 mm or 0.01 in: a 150 mm wall prints as 150 mm.
+    const double dM = p.wallWidthIn ? *p.wallWidthIn * kMetresPerInch : wallWidthFromTstar(s.tstar);
     sl.rows.push_back({p.wallWidthIn ? "wall width" : "wall width (from t*: d = 2g·t*²)", "d",
-                       num(dIn, 1), "in"});
+                       lengthOf(p, dM, LengthScale::Detail),
+                       lengthSymbolOf(p, LengthScale::Detail)});
     sl.rows.push_back({"characteristic time √(d/2g)", "t*", num(s.tstar, 4), "s"});
     sl.rows.push_back(
         {"bearing length / (d/2): collapse limit", "|δ| >", num(s.slab.limit, 3), ""});

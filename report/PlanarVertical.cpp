@@ -1,16 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "report/PlanarVertical.h"
 
-#include "core/codes/Building.h"
-#include "core/records/RecordReader.h"
+#include "core/slab/VerticalRecord.h"
 
-#include <QFile>
 #include <QFileInfo>
 
 namespace kinstab::ui {
 
 QString defaultVerticalRecordPath() {
-    return QStringLiteral(":/records/RSN68_SFERN_PEL-UP.AT2");
+    return QString::fromUtf8(kRsn68UpSource); // also in the resources, for the record preview
 }
 
 QString defaultVerticalRecordNote() {
@@ -20,23 +18,11 @@ QString defaultVerticalRecordNote() {
 }
 
 std::optional<Accelerogram> readVerticalRecord(const PlanarSettings& s) {
-    if (s.vertical == VerticalSource::None) return std::nullopt;
-    const QString path = s.vertical == VerticalSource::Rsn68Up
-                             ? defaultVerticalRecordPath()
-                             : QString::fromStdString(s.verticalPath);
-    const std::string field = "planar.vertical = '" + path.toStdString() + "': ";
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) throw InputError(field + f.errorString().toStdString());
-    try {
-        return parseRecord(RecordText(f.readAll().toStdString(), path.toStdString()));
-    } catch (const RecordError& e) {
-        throw InputError(field + e.what());
-    }
+    return loadVerticalRecord(s);
 }
 
 PlanarCase projectPlanarCase(const Slab1DCase& common, const PlanarSettings& s) {
-    const std::optional<Accelerogram> record = readVerticalRecord(s);
-    return planarCaseFrom(common, s, record ? verticalMotion(*record, common.tstar) : nullptr);
+    return planarCaseWithVertical(common, s);
 }
 
 QString verticalDescription(const PlanarSettings& s) {

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The vertical motion a planar project names (core/slab/PlanarSettings.h), read for a run: the
-// shipped RSN68 UP from the application's resources (:/records/...), or a record file. Shared by
-// the main window's sweeps and the design report, so both run the same case.
+// The vertical motion a planar project names (core/slab/PlanarSettings.h), read for a run, and its
+// words for labels and the report. The reading is core's (core/slab/VerticalRecord.h: the shipped
+// RSN68 UP compiled into the program, or a record file), so the main window's sweeps, the design
+// report and kinstab-cli's compute commands all run the same case.
 
 #include "core/records/Accelerogram.h"
 #include "core/slab/PlanarSettings.h"

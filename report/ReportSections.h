@@ -25,8 +25,15 @@ QString coefficient(double x);
 inline QString qs(const std::string& s) {
     return QString::fromStdString(s);
 }
-QString gammaLabel(const Slab1DCase& c); // "γc = τmax/τc"
-QString scaleLabel(TauScale s);          // "τ_max (peak of the envelope)", not the key tau_max
+// Lengths in the project's unit system (projectUnits, core/base/UnitSystem.h): the symbol, a
+// value given in metres (to the millimetre, 0.1 mm for details, or 0.01 ft / in), and the
+// building's own lengths (kept in its ft or m) converted to metres.
+QString lengthSymbolOf(const Project& p, LengthScale scale);
+QString lengthOf(const Project& p, double metres, LengthScale scale);
+double buildingMetres(const Building& b, double v);
+std::vector<double> levelHeightsShown(const Project& p); // levelHeights in the shown unit
+QString gammaLabel(const Slab1DCase& c);                 // "γc = τmax/τc"
+QString scaleLabel(TauScale s); // "τ_max (peak of the envelope)", not the key tau_max
 
 // Page 1 (FrontMatter.cpp): the revision table under the title block (the last three revisions),
 // and after the verdict the signature/seal block (prepared by, checked by, engineer of record).

@@ -25,7 +25,8 @@ void addSymbolTable(ReportDocument& doc, const Project& p, const ReportAnalysis&
                           "g"});
     t.rows.push_back({"margin", "A_crit / (F_top/w_top); above 1 acceptable", "—"});
     t.rows.push_back({"μ", "coefficient of friction between slab and wall", "—"});
-    t.rows.push_back({"d", "wall width (the slab bears on d/2 of it at rest)", "in"});
+    t.rows.push_back({"d", "wall width (the slab bears on d/2 of it at rest)",
+                      lengthSymbolOf(p, LengthScale::Detail)});
     t.rows.push_back({"t*", "characteristic time √(d/2g)", "s"});
     t.rows.push_back({"τ, τc", "time in units of t*; τc: when the slab slides off", "—"});
     t.rows.push_back({"δ", "slip of the slab across the walls in units of d/2", "—"});

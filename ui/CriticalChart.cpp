@@ -2,6 +2,7 @@
 #include "ui/CriticalChart.h"
 
 #include "ui/DockedChart.h"
+#include "ui/NiceAxisTicks.h"
 
 #include <QLineSeries>
 #include <QValueAxis>
@@ -28,6 +29,7 @@ CriticalChart::CriticalChart(QWidget* parent)
     QFont small = c->legend()->font();
     small.setPointSizeF(small.pointSizeF() * 0.85);
     c->legend()->setFont(small);
+    useNiceTicks(c); // 1-2-5 ticks whatever range an update sets
     installDockedChart(this, c, tr("Critical amplitude A_crit(f) and the code ratios"));
 }
 

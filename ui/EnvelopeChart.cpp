@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/EnvelopeChart.h"
 
+#include "ui/NiceAxisTicks.h"
 #include <QLineSeries>
 #include <QScatterSeries>
 #include <QValueAxis>
@@ -23,8 +24,6 @@ EnvelopeChart::EnvelopeChart(QWidget* parent)
     m_x->setTitleText(tr("t (s)"));
     m_y->setTitleText(tr("e / e_max"));
     m_y->setRange(0, 1.05);
-    m_y->setTickCount(3);
-    m_x->setLabelFormat("%.0f");
     c->addAxis(m_x, Qt::AlignBottom);
     c->addAxis(m_y, Qt::AlignLeft);
     for (auto* s :
@@ -32,6 +31,8 @@ EnvelopeChart::EnvelopeChart(QWidget* parent)
         s->attachAxis(m_x);
         s->attachAxis(m_y);
     }
+    useNiceTicks(m_x);
+    useNiceTicks(m_y, 2); // 0, 0.5, 1 in a short chart
     setChart(c);
     setRenderHint(QPainter::Antialiasing);
     setMinimumHeight(150);

@@ -5,6 +5,7 @@
 #include "core/slab/History.h"
 #include "core/slab/RecordRun.h"
 #include "ui/DockedChart.h"
+#include "ui/NiceAxisTicks.h"
 
 #include <QLineSeries>
 #include <QScatterSeries>
@@ -21,7 +22,7 @@ QValueAxis* axis(QChart* chart, const QString& title, Qt::Alignment side, double
     auto* a = new QValueAxis;
     a->setTitleText(title);
     a->setRange(lo, hi);
-    a->applyNiceNumbers();
+    useNiceTicks(a);
     chart->addAxis(a, side);
     return a;
 }
@@ -41,7 +42,7 @@ QLineSeries* profile(const QString& name, const QColor& c, Qt::PenStyle style,
 }
 
 QString heightTitle(const QString& unit) {
-    return QObject::tr("height above the base, %1").arg(unit);
+    return QObject::tr("height, %1").arg(unit); // above the base; longer was elided
 }
 
 } // namespace
@@ -60,7 +61,7 @@ void fillProfileChart(QChart* chart, const FloorAnalysis& a, const std::vector<d
     for (const FloorDemand& d : a.demands)
         hi = std::max(hi, *std::max_element(d.pfa.begin(), d.pfa.end()));
     QValueAxis* x = axis(chart, QObject::tr("PFA, g"), Qt::AlignBottom, 0.0, 1.05 * hi);
-    QValueAxis* y = axis(chart, heightTitle(unit), Qt::AlignLeft, 0.0, heights.back());
+    QValueAxis* y = axis(chart, heightTitle(unit), Qt::AlignLeft, 0.0, 1.05 * heights.back());
     QLineSeries* model =
         profile(QObject::tr("model"), QColor(0, 90, 181), Qt::SolidLine, a.pfa, heights);
     model->insert(0, QPointF(a.pga, 0.0)); // the ground's own peak at the base
@@ -103,7 +104,7 @@ void fillCriticalChart(QChart* chart, const FloorAnalysis& a, const std::vector<
             hi = std::max(hi, *l.criticalPga);
         }
     QValueAxis* x = axis(chart, QObject::tr("PGA, g"), Qt::AlignBottom, 0.0, 1.1 * hi);
-    QValueAxis* y = axis(chart, heightTitle(unit), Qt::AlignLeft, 0.0, heights.back());
+    QValueAxis* y = axis(chart, heightTitle(unit), Qt::AlignLeft, 0.0, 1.05 * heights.back());
     attach(chart, crit, x, y);
     QLineSeries* pga =
         chartLine(QObject::tr("record's PGA"), QColor(0, 90, 181), 1.5, Qt::DashLine);

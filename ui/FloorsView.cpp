@@ -5,7 +5,9 @@
 #include "core/io/FloorsJson.h"
 #include "core/records/RecordReader.h"
 #include "core/records/RecordText.h"
+#include "ui/DockedChart.h"
 #include "ui/FloorCharts.h"
+#include "ui/ProjectFolder.h"
 #include "ui/RecordPreview.h"
 
 #include <QChartView>
@@ -38,9 +40,10 @@ namespace {
 QChartView* chartView(QWidget* parent) {
     auto* chart = new QChart;
     chart->setAnimationOptions(QChart::NoAnimation);
-    chart->legend()->setAlignment(Qt::AlignBottom);
-    auto* v = new QChartView(chart, parent);
-    v->setRenderHint(QPainter::Antialiasing);
+    chart->setMargins(QMargins(4, 4, 4, 4));
+    auto* v = new QChartView(parent);
+    // Title and legend wrap onto more lines instead of eliding ("ASCE …" at 1280 × 800).
+    installDockedChart(v, chart, QString());
     v->setMinimumSize(320, 260);
     return v;
 }
@@ -108,8 +111,8 @@ FloorsView::FloorsView(std::function<Project()> source, QWidget* parent)
     layout->addWidget(m_verdicts);
 
     connect(browse, &QPushButton::clicked, this, [this] {
-        const QString f = QFileDialog::getOpenFileName(this, tr("Ground record"), QString(),
-                                                       RecordPreview::fileDialogFilter());
+        const QString f = QFileDialog::getOpenFileName(
+            this, tr("Ground record"), inOpenProjectFolder(), RecordPreview::fileDialogFilter());
         if (!f.isEmpty()) m_record->setText(f);
     });
     connect(m_run, &QPushButton::clicked, this, &FloorsView::run);
@@ -213,9 +216,7 @@ void FloorsView::onFinished(std::shared_ptr<Outcome> o) {
     }
     m_shown = o;
     const Building& b = o->building;
-    const QString unit = QString::fromStdString(unitName(b.unit));
-    fillProfileChart(m_profile->chart(), o->analysis, levelHeights(b), unit);
-    fillCriticalChart(m_critical->chart(), o->analysis, levelHeights(b), unit);
+    drawHeightCharts();
     m_pick->setEnabled(true);
     m_pick->setRange(1, b.stories);
     if (m_pick->value() == o->analysis.slabLevel)
@@ -224,6 +225,25 @@ void FloorsView::onFinished(std::shared_ptr<Outcome> o) {
         m_pick->setValue(o->analysis.slabLevel); // draws through valueChanged
     showVerdicts();
     emit analysisShown();
+}
+
+void FloorsView::setUnitSystem(UnitSystem s) {
+    if (s == m_units) return;
+    m_units = s;
+    if (m_shown) drawHeightCharts();
+}
+
+// Heights are kept in the building's unit (ft or m) and shown in the unit system's.
+void FloorsView::drawHeightCharts() {
+    const Building& b = m_shown->building;
+    const double k = (b.unit == LengthUnit::Feet ? kMetresPerFoot : 1.0) /
+                     metresPerUnit(m_units, LengthScale::Structure);
+    std::vector<double> heights = levelHeights(b);
+    for (double& h : heights)
+        h *= k;
+    const QString unit = lengthSymbol(m_units, LengthScale::Structure);
+    fillProfileChart(m_profile->chart(), m_shown->analysis, heights, unit);
+    fillCriticalChart(m_critical->chart(), m_shown->analysis, heights, unit);
 }
 
 void FloorsView::pickLevel(int level) {

@@ -9,6 +9,7 @@
 #include "core/building/FloorAnalysis.h"
 #include "core/io/Project.h"
 #include "ui/BackgroundJob.h"
+#include "ui/Units.h"
 
 #include <QWidget>
 
@@ -36,8 +37,9 @@ public:
     void run();
     void cancel();
     bool isRunning() const;
-    void pickLevel(int level); // 1-based
-    QString message() const;   // the last error or status line
+    void pickLevel(int level);        // 1-based
+    void setUnitSystem(UnitSystem s); // the height axes in m or ft (View → Units)
+    QString message() const;          // the last error or status line
     QChartView* profileView() const { return m_profile; }
     QChartView* criticalView() const { return m_critical; }
     QChartView* levelView() const { return m_level; }
@@ -53,6 +55,7 @@ private:
     void applyProject(const Project& p);
     void onFinished(std::shared_ptr<Outcome> o);
     void showVerdicts();
+    void drawHeightCharts();
 
     std::function<Project()> m_source;
     QLineEdit* m_record;
@@ -69,6 +72,7 @@ private:
     QChartView* m_level;
     BackgroundJob m_job;
     std::shared_ptr<Outcome> m_shown;
+    UnitSystem m_units = UnitSystem::SI;
     std::string m_appliedRecord; // the project's record file last applied to the fields
     std::string m_appliedFloors; // and its floors settings (JSON text)
 };

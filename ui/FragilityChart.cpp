@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/FragilityChart.h"
 
+#include "ui/NiceAxisTicks.h"
 #include <QChart>
 #include <QLegend>
 #include <QLegendMarker>
@@ -62,6 +63,8 @@ void fillFragilityChart(QChart* chart, const std::vector<Fragility>& sets) {
     y->setRange(0.0, 1.0);
     chart->addAxis(x, Qt::AlignBottom);
     chart->addAxis(y, Qt::AlignLeft);
+    useNiceTicks(x);
+    useNiceTicks(y, 5);
     double top = 0.0;
     // Ten distinct colours (the "tab10" palette) before any repeats.
     const QList<QColor> colours = {

@@ -2,6 +2,8 @@
 #include "ui/FrictionPanel.h"
 
 #include "core/friction/TripletCsv.h"
+#include "ui/NiceAxisTicks.h"
+#include "ui/ProjectFolder.h"
 
 #include <QChart>
 #include <QChartView>
@@ -28,6 +30,20 @@ namespace {
 
 const char* kBuiltIn = ":/data/furgerson1980/table1_triplet_tests.csv";
 
+// The shown units per unit system: the paper's tests are kept in kip, psi and in.
+struct ShownUnits {
+    double force, pressure, length, area; // shown per kip, psi, in, in²
+    QString f, p, l, a;
+};
+
+ShownUnits shownUnits(UnitSystem s) {
+    if (s == UnitSystem::US) return {1.0, 1.0, 1.0, 1.0, "kip", "psi", "in", "in²"};
+    // 1 lbf = 4.4482216152605 N and 1 in = 25.4 mm exactly (NIST SP 811, appendix B).
+    // psi = lbf/in²: 4.4482216152605e-3 kN over 0.0254² m² = 6.894757 kPa.
+    const double kN = 4.4482216152605, kPa = kN * 1e-3 / (0.0254 * 0.0254);
+    return {kN, kPa, 25.4, 6.4516, "kN", "kPa", "mm", "cm²"};
+}
+
 QColor cpColor(int i) {
     static const QColor colors[] = {QColor(0x1f77b4), QColor(0xd62728), QColor(0x2ca02c),
                                     QColor(0x9467bd), QColor(0xff7f0e), QColor(0x8c564b),
@@ -39,7 +55,7 @@ QValueAxis* axis(const QString& title, double lo, double hi) {
     auto* a = new QValueAxis;
     a->setTitleText(title);
     a->setRange(lo, hi);
-    a->setLabelFormat("%.4g");
+    useNiceTicks(a);
     return a;
 }
 
@@ -60,8 +76,6 @@ void resetChart(QChart* chart, const QList<QAbstractSeries*>& series, QValueAxis
             for (QLegendMarker* m : chart->legend()->markers(s))
                 m->setVisible(false);
     }
-    x->applyNiceNumbers();
-    y->applyNiceNumbers();
 }
 
 QChartView* makeChartView(const QString& title) {
@@ -93,7 +107,7 @@ void FrictionPanel::buildUi() {
     area_ = new QDoubleSpinBox;
     area_->setRange(0.0, 1e5);
     area_->setDecimals(2);
-    area_->setSuffix(tr(" in²"));
+    area_->setSuffix(QStringLiteral(" in²"));
     area_->setSpecialValueText(tr("not set"));
     area_->setToolTip(tr("Bearing area A_b: tau_inf = V_inf / A_b (not given in Furgerson 1980)"));
     useMu_ = new QPushButton(tr("Use this μ"));
@@ -153,7 +167,10 @@ void FrictionPanel::buildUi() {
     connect(open, &QPushButton::clicked, this, &FrictionPanel::openFile);
     connect(configuration_, &QComboBox::currentTextChanged, this, &FrictionPanel::refresh);
     connect(slopeKind_, &QComboBox::currentIndexChanged, this, &FrictionPanel::refresh);
-    connect(area_, &QDoubleSpinBox::valueChanged, this, &FrictionPanel::recalibrate);
+    connect(area_, &QDoubleSpinBox::valueChanged, this, [this](double shown) {
+        areaIn2_ = shown * shownUnits(units_).area;
+        recalibrate();
+    });
     connect(useMu_, &QPushButton::clicked, this, [this] {
         if (const auto mu = currentMu()) emit useMu(*mu);
     });
@@ -194,7 +211,28 @@ void FrictionPanel::setConfiguration(const QString& c) {
     configuration_->setCurrentText(c);
 }
 void FrictionPanel::setBearingArea(double in2) {
-    area_->setValue(in2);
+    areaIn2_ = in2;
+    {
+        QSignalBlocker block(area_);
+        area_->setValue(in2 / shownUnits(units_).area);
+    }
+    recalibrate();
+}
+
+void FrictionPanel::setUnitSystem(UnitSystem s) {
+    if (s == units_) return;
+    units_ = s;
+    const ShownUnits u = shownUnits(s);
+    table_->setHorizontalHeaderLabels({tr("Configuration"), tr("CP %1").arg(u.p), tr("Tests"),
+                                       tr("V1 %1").arg(u.f), tr("V∞ %1").arg(u.f), tr("c"), tr("b"),
+                                       tr("β"), tr("f_m %1²").arg(u.f),
+                                       tr("Outlier (Grubbs 95 %)")});
+    {
+        QSignalBlocker block(area_);
+        area_->setSuffix(QStringLiteral(" ") + u.a);
+        area_->setValue(areaIn2_ / u.area);
+    }
+    recalibrate();
 }
 void FrictionPanel::setWithIntercept(bool w) {
     slopeKind_->setCurrentIndex(w ? 0 : 1);
@@ -215,16 +253,17 @@ std::optional<double> FrictionPanel::currentMu() const {
 
 void FrictionPanel::recalibrate() {
     CalibrationOptions o;
-    if (area_->value() > 0.0) o.bearingAreaIn2 = area_->value();
+    if (areaIn2_ > 0.0) o.bearingAreaIn2 = areaIn2_;
     try {
         calibration_ = calibrateFriction(runs_, o);
         status_->setText(
             tr("%1: %2 tests, %3 groups. Decay law fitted with α = 2, β = 0 or 1/3 (smaller f_m); "
-               "μ∞ from CP ≤ %4 psi.")
+               "μ∞ from CP ≤ %4 %5.")
                 .arg(source_)
                 .arg(runs_.size())
                 .arg(calibration_.groups.size())
-                .arg(o.maxCpPsi));
+                .arg(o.maxCpPsi * shownUnits(units_).pressure, 0, 'f', 0)
+                .arg(shownUnits(units_).p));
     } catch (const std::exception& e) {
         calibration_ = {};
         status_->setText(QString::fromStdString(e.what()));
@@ -243,6 +282,7 @@ void FrictionPanel::refresh() {
 
 void FrictionPanel::fillCurveChart() {
     // Figs. 18-20: the composite test curve (points) and the fitted decay law (line) per CP.
+    const ShownUnits u = shownUnits(units_);
     QList<QAbstractSeries*> series;
     double vMax = 1.0, dMax = 0.0;
     int k = 0;
@@ -254,45 +294,48 @@ void FrictionPanel::fillCurveChart() {
         const Eigen::VectorXd fitted = evaluateDecay(g.fit, c, dense);
         QList<QPointF> line, points;
         for (Eigen::Index i = 0; i < dense.size(); ++i)
-            line.append({dense(i), fitted(i)});
+            line.append({u.length * dense(i), u.force * fitted(i)});
         for (Eigen::Index i = 0; i < c.delta.size(); ++i)
-            points.append({c.delta(i), c.shear(i)});
+            points.append({u.length * c.delta(i), u.force * c.shear(i)});
         auto* l = new QLineSeries;
         l->replace(line);
-        l->setName(tr("CP %1 psi").arg(g.cpPsi));
+        l->setName(tr("CP %1 %2").arg(g.cpPsi * u.pressure, 0, 'f', 0).arg(u.p));
         l->setPen(QPen(cpColor(k), 2));
         auto* s = new QScatterSeries;
         s->replace(points);
-        s->setName(tr("CP %1 test").arg(g.cpPsi));
+        s->setName(tr("CP %1 test").arg(g.cpPsi * u.pressure, 0, 'f', 0));
         s->setProperty("hideInLegend", true);
         s->setColor(cpColor(k));
         s->setMarkerSize(7);
         series << s << l;
-        vMax = std::max(vMax, c.shear.maxCoeff());
-        dMax = std::max(dMax, c.delta.maxCoeff());
+        vMax = std::max(vMax, u.force * c.shear.maxCoeff());
+        dMax = std::max(dMax, u.length * c.delta.maxCoeff());
         ++k;
     }
     curves_->chart()->setTitle(tr("%1: V(δ) after fracture, composite tests and fitted law")
                                    .arg(configuration_->currentText()));
-    resetChart(curves_->chart(), series, axis(tr("δ (in)"), 0.0, dMax > 0 ? dMax : 0.4),
-               axis(tr("V (kip)"), 0.0, 1.05 * vMax));
+    resetChart(curves_->chart(), series,
+               axis(tr("δ (%1)").arg(u.l), 0.0, dMax > 0 ? dMax : 0.4 * u.length),
+               axis(tr("V (%1)").arg(u.f), 0.0, 1.05 * vMax));
 }
 
 void FrictionPanel::fillCoulombChart() {
     // Fig. 21: V_inf (or tau_inf with A_b) against CP, with the least-squares line for CP <= limit.
-    const bool withArea = area_->value() > 0.0;
-    const double scale = withArea ? 1000.0 / area_->value() : 1.0; // kips -> psi over A_b
+    const ShownUnits u = shownUnits(units_);
+    const bool withArea = areaIn2_ > 0.0;
+    // kips -> psi over A_b, then into the shown pressure (or force) unit.
+    const double scale = withArea ? u.pressure * 1000.0 / bearingAreaIn2() : u.force;
     const bool intercept = slopeKind_->currentIndex() == 0;
     QList<QAbstractSeries*> series;
-    double yMax = 1.0, cpMax = 100.0;
+    double yMax = 1.0, cpMax = 100.0 * u.pressure;
     int k = 0;
     for (const ConfigurationCalibration& c : calibration_.configurations) {
         QList<QPointF> used, excluded, line;
         for (const CoulombPoint& p : c.points) {
             (p.cpPsi <= calibration_.options.maxCpPsi ? used : excluded)
-                .append({p.cpPsi, scale * p.vInfKips});
+                .append({u.pressure * p.cpPsi, scale * p.vInfKips});
             yMax = std::max(yMax, scale * p.vInfKips);
-            cpMax = std::max(cpMax, p.cpPsi);
+            cpMax = std::max(cpMax, u.pressure * p.cpPsi);
         }
         auto* s = new QScatterSeries;
         s->replace(used);
@@ -312,7 +355,8 @@ void FrictionPanel::fillCoulombChart() {
                 intercept ? c.coulomb->slopeWithIntercept : c.coulomb->slopeThroughOrigin;
             const double v0 = intercept ? c.coulomb->interceptKips : 0.0;
             const double top = calibration_.options.maxCpPsi;
-            line << QPointF(0.0, scale * v0) << QPointF(top, scale * (v0 + slope * top));
+            line << QPointF(0.0, scale * v0)
+                 << QPointF(u.pressure * top, scale * (v0 + slope * top));
             auto* l = new QLineSeries;
             l->replace(line);
             l->setName(tr("%1 fit").arg(QString::fromStdString(c.configuration)));
@@ -323,11 +367,12 @@ void FrictionPanel::fillCoulombChart() {
     }
     coulomb_->chart()->setTitle(withArea ? tr("τ∞ = V∞ / A_b against confining pressure")
                                          : tr("V∞ against confining pressure"));
-    resetChart(coulomb_->chart(), series, axis(tr("CP (psi)"), 0.0, 1.05 * cpMax),
-               axis(withArea ? tr("τ∞ (psi)") : tr("V∞ (kip)"), 0.0, 1.1 * yMax));
+    resetChart(coulomb_->chart(), series, axis(tr("CP (%1)").arg(u.p), 0.0, 1.05 * cpMax),
+               axis(withArea ? tr("τ∞ (%1)").arg(u.p) : tr("V∞ (%1)").arg(u.f), 0.0, 1.1 * yMax));
 }
 
 void FrictionPanel::fillTable() {
+    const ShownUnits u = shownUnits(units_);
     table_->setRowCount(0);
     for (const GroupCalibration& g : calibration_.groups) {
         const int row = table_->rowCount();
@@ -342,20 +387,24 @@ void FrictionPanel::fillTable() {
                              : tr("none"))
                     .arg(g.outlier->statistic, 0, 'f', 3)
                     .arg(g.outlier->critical, 0, 'f', 3);
-        const QStringList cells = {
-            QString::fromStdString(g.configuration),  QString::number(g.cpPsi),
-            QString::fromStdString(g.composite.test), QString::number(g.fit.v1, 'f', 2),
-            QString::number(g.fit.vInf, 'f', 2),      QString::number(g.fit.c, 'f', 2),
-            QString::number(g.fit.b, 'f', 3),         g.fit.beta == 0.0 ? "0" : "1/3",
-            QString::number(g.fit.fm, 'f', 3),        outlier};
+        const QStringList cells = {QString::fromStdString(g.configuration),
+                                   QString::number(g.cpPsi * u.pressure, 'f', 0),
+                                   QString::fromStdString(g.composite.test),
+                                   QString::number(g.fit.v1 * u.force, 'f', 2),
+                                   QString::number(g.fit.vInf * u.force, 'f', 2),
+                                   QString::number(g.fit.c, 'f', 2),
+                                   QString::number(g.fit.b, 'f', 3),
+                                   g.fit.beta == 0.0 ? "0" : "1/3",
+                                   QString::number(g.fit.fm * u.force * u.force, 'f', 3),
+                                   outlier};
         for (int col = 0; col < cells.size(); ++col)
             table_->setItem(row, col, new QTableWidgetItem(cells[col]));
     }
 }
 
 void FrictionPanel::openFile() {
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Triplet shear tests"), {}, tr("CSV (*.csv)"));
+    const QString path = QFileDialog::getOpenFileName(this, tr("Triplet shear tests"),
+                                                      inOpenProjectFolder(), tr("CSV (*.csv)"));
     if (!path.isEmpty()) loadCsv(path);
 }
 

@@ -7,6 +7,7 @@
 // Self-contained: the main window only docks it and connects useMu.
 
 #include "core/friction/FrictionCalibration.h"
+#include "ui/Units.h"
 
 #include <QWidget>
 
@@ -34,6 +35,9 @@ public:
 
     void setConfiguration(const QString& configuration);
     void setBearingArea(double in2); // 0: not set (no mu_inf)
+    double bearingAreaIn2() const { return areaIn2_; }
+    // kip, psi, in, in² (US) or kN, kPa, mm, cm² (SI); the data stay in the paper's US units.
+    void setUnitSystem(UnitSystem s);
     void setWithIntercept(bool withIntercept);
 
     // mu_inf of the selected configuration, when a bearing area is set.
@@ -66,6 +70,8 @@ private:
     QChartView* curves_ = nullptr;
     QChartView* coulomb_ = nullptr;
     QTableWidget* table_ = nullptr;
+    UnitSystem units_ = UnitSystem::US;
+    double areaIn2_ = 0.0; // A_b as set or typed: a switch of units re-shows, never rounds it
 };
 
 } // namespace kinstab::ui

@@ -2,6 +2,7 @@
 #include "ui/HistoryChart.h"
 
 #include "ui/DockedChart.h"
+#include "ui/NiceAxisTicks.h"
 
 #include <QAreaSeries>
 #include <QLineSeries>
@@ -45,6 +46,7 @@ HistoryChart::HistoryChart(QWidget* parent)
         s->attachAxis(m_x);
         s->attachAxis(m_yAccel);
     }
+    useNiceTicks(c); // 1-2-5 ticks whatever range an update sets
     installDockedChart(this, c,
                        tr("History of one point (after Run: pick a point on the surface)"));
     hideFromLegend(c, {m_envDown, m_muDown}); // the lower envelope and -μ have no name

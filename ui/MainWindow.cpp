@@ -2,6 +2,7 @@
 #include "ui/MainWindow.h"
 
 #include "ui/AtomicSave.h"
+#include "ui/ChartMenu.h"
 #include "ui/FloorsView.h"
 #include "ui/FrictionPanel.h"
 #include "ui/NumericsView.h"
@@ -113,7 +114,8 @@ MainWindow::MainWindow(QWidget* parent)
     m_friction = new FrictionPanel;
     // In scroll areas: their minimum sizes must not grow the window past 1280×800.
     m_centre->addTab(scrollable(m_friction), tr("Friction"));
-    m_centre->addTab(scrollable(new FloorsView([this] { return project(); })), tr("Floors"));
+    m_floors = new FloorsView([this] { return project(); });
+    m_centre->addTab(scrollable(m_floors), tr("Floors"));
     m_study = new StudyTab;
     m_centre->addTab(scrollable(m_study), tr("Study"));
     connect(m_study, &StudyTab::studyChosen, this,
@@ -130,9 +132,10 @@ MainWindow::MainWindow(QWidget* parent)
     setCentralWidget(m_centre);
     buildActions();
     installHelpMenu(this);
+    installChartMenus(); // right-click Save image… / Copy image on every chart
     buildDocks();
     installPresentationMode(this, m_viewMenu, m_centre, m_teaching);
-    installUnitsMenu(m_viewMenu, this, [this](UnitSystem s) { m_teaching->setUnitSystem(s); });
+    installUnitsMenu(m_viewMenu, this, [this](UnitSystem s) { setUnits(s); });
     m_status->setTextFormat(Qt::PlainText);
     statusBar()->addWidget(m_status, 1);
     statusBar()->addPermanentWidget(m_progress);

@@ -13,6 +13,7 @@
 #include "ui/ResultState.h"
 #include "ui/SurfaceData.h"
 #include "ui/SweepRunner.h"
+#include "ui/Units.h"
 
 #include <QMainWindow>
 
@@ -46,6 +47,7 @@ class TeachingView;
 class RecordsTab;
 class NumericsView;
 class FrictionPanel;
+class FloorsView;
 class StaleFrame;
 class StudyTab;
 
@@ -91,6 +93,9 @@ public:
     CodesPanel* codesPanel() const { return m_codesPanel; }
     VerdictPanel* verdictPanel() const { return m_verdict; }
     TeachingView* teachingView() const { return m_teaching; }
+    FloorsView* floorsView() const { return m_floors; }
+    FrictionPanel* frictionPanel() const { return m_friction; }
+    UnitSystem unitSystem() const { return m_units; } // View → Units, or the open project's
     StudyTab* studyTab() const { return m_study; }
     const QString& projectPath() const { return m_path; }
     // Undo/redo of the inputs and the modified mark (ui/InputHistory.h).
@@ -171,6 +176,7 @@ private:
     QString modelTitle() const;
     void saveSettings(bool keepEdits = false);
     void restoreSettings();
+    void setUnits(UnitSystem s); // the views that draw lengths (the fields follow by themselves)
     // A record as the excitation (MainWindowRecord.cpp).
     void buildRecordRun();
     void runRecord();
@@ -195,6 +201,8 @@ private:
     NumericsView* m_numerics = nullptr;
     StudyTab* m_study = nullptr;
     FrictionPanel* m_friction = nullptr;
+    FloorsView* m_floors = nullptr;
+    UnitSystem m_units = UnitSystem::SI;
     RecentFiles* m_recent = nullptr;
     SweepRunner* m_runner;
     RecordRunner* m_recordRunner = nullptr;
@@ -210,6 +218,7 @@ private:
 
     Project m_project; // the open project: inputs no panel shows are kept from it
     QString m_path;
+    QString m_shownName; // the title's file name: m_path's, or a built-in example's
     std::vector<CodeResult> m_codeResults;
 
     ResultState m_results;

@@ -9,6 +9,8 @@
 #include "ui/BuildingPanel.h"
 #include "ui/CodesPanel.h"
 #include "ui/ExcitationPanel.h"
+#include "ui/FloorsView.h"
+#include "ui/FrictionPanel.h"
 #include "ui/GridPanel.h"
 #include "ui/InputHistory.h"
 #include "ui/MainWindow.h"
@@ -20,6 +22,7 @@
 #include "ui/StudyTab.h"
 #include "ui/SurfaceView.h"
 #include "ui/VerdictPanel.h"
+#include "ui/teaching/TeachingView.h"
 
 #include <QFile>
 #include <QFileDialog>
@@ -51,13 +54,30 @@ Project MainWindow::project() const {
     p.model = m_modelPanel->model();
     p.planar = m_modelPanel->settings();
     p.record = m_excitation->record();
+    // The unit system is the project's once it names one or differs from its building's.
+    Project plain = p;
+    plain.units.reset();
+    if (p.units || m_units != projectUnits(plain)) p.units = m_units;
     return p;
+}
+
+void MainWindow::setUnits(UnitSystem s) {
+    m_units = s;
+    m_teaching->setUnitSystem(s);
+    m_floors->setUnitSystem(s);
+    m_friction->setUnitSystem(s);
+    m_slabPanel->updateDerived();
 }
 
 void MainWindow::showProject(const Project& p) {
     clearResults(); // no result of the previous project may stand under this one's title
     m_project = p;
     showStudy(p.study); // none: the Study tab is cleared, as the other results are
+    // The project opens in its own units (the paper's in ft and in), as its report prints them.
+    const UnitSystem units = projectUnits(p);
+    showUnitSystem(this, units);
+    applyUnitSystem(this, units);
+    setUnits(units);
     showInputs(p);
     m_records->showProject(p); // the project's record, or an empty state
     m_undo->reset();           // a fresh start: nothing to undo, nothing unsaved
@@ -113,8 +133,11 @@ void MainWindow::updateCodes() {
 }
 
 void MainWindow::updateTitle() {
+    setOpenProjectPath(m_path); // where the views' Open and Export dialogs start
     // [*]: Qt shows the modified mark there (setWindowModified).
-    const QString name = m_path.isEmpty() ? tr("untitled") : QFileInfo(m_path).fileName();
+    const QString name = !m_path.isEmpty()        ? QFileInfo(m_path).fileName()
+                         : !m_shownName.isEmpty() ? m_shownName
+                                                  : tr("untitled");
     setWindowTitle(m_modelPanel->isPlanar() ? tr("%1[*] — planar model — kinstab").arg(name)
                                             : tr("%1[*] — kinstab").arg(name));
 }
@@ -126,6 +149,7 @@ void MainWindow::newProject() {
     p.wallWidthIn = 7.625;
     p.grid = GridPanel().grid();
     m_path.clear();
+    m_shownName.clear();
     showProject(p);
 }
 
@@ -143,7 +167,10 @@ bool MainWindow::openProject(const QString& path, bool quiet) {
         const QString dir =
             path.startsWith(QLatin1Char(':')) ? QString() : QFileInfo(path).absolutePath();
         const Project p = parseProject(text.toStdString(), dir.toStdString());
-        m_path = path.startsWith(QLatin1Char(':')) ? QString() : path;
+        const bool builtIn = path.startsWith(QLatin1Char(':'));
+        m_path = builtIn ? QString() : path;
+        // A built-in example is titled by its name; Save asks where (it is no file to write).
+        m_shownName = builtIn ? tr("%1 (example)").arg(QFileInfo(path).fileName()) : QString();
         showProject(p);
         if (!m_path.isEmpty()) m_recent->add(m_path);
         statusBar()->showMessage(tr("Opened %1").arg(path), 5000);
@@ -168,12 +195,13 @@ QString MainWindow::saveProjectAs(const QString& path) {
     if (!inputsValid()) return tr("fix the marked inputs first");
     const Project p = project();
     if (const std::string e = validateProject(p); !e.empty()) return QString::fromStdString(e);
-    const std::string text =
-        projectToJson(p, QFileInfo(path).absolutePath().toStdString()).dump(2) + "\n";
+    // Arranged like the file that was read: a save changes only what changed.
+    const std::string text = projectText(p, QFileInfo(path).absolutePath().toStdString());
     // Atomic: the old file stays until the new one is complete (ui/AtomicSave.h).
     if (const QString e = saveAtomically(path, QByteArray::fromStdString(text)); !e.isEmpty())
         return e;
     m_project = p;
+    m_project.layout = nlohmann::ordered_json::parse(text);
     m_path = path;
     m_recent->add(path);
     m_undo->markSaved();

@@ -67,9 +67,13 @@ double NumberField::storedPerShown() const {
 
 void NumberField::render() {
     const double k = storedPerShown();
-    // Ten digits in the stored unit; six after a conversion (3.048, not 3.0480000000000).
+    // Ten digits in the stored unit; after a conversion, to the millimetre or 0.01 in/ft
+    // (core/base/UnitSystem.h: 53.95 m, not 53.9496). The exact stored value comes back from
+    // value() while the text is not edited.
     m_rendered =
-        k == 1.0 ? QString::number(*m_exact, 'g', 10) : QString::number(*m_exact / k, 'g', 6);
+        k == 1.0
+            ? QString::number(*m_exact, 'g', 10)
+            : QString::fromStdString(lengthText(*m_exact * m_metresPerStored, m_system, *m_length));
     m_edit->setText(m_rendered);
 }
 

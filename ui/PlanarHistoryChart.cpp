@@ -2,6 +2,7 @@
 #include "ui/PlanarHistoryChart.h"
 
 #include "ui/DockedChart.h"
+#include "ui/NiceAxisTicks.h"
 
 #include <QLineSeries>
 #include <QValueAxis>
@@ -47,6 +48,7 @@ PlanarHistoryChart::PlanarHistoryChart(QWidget* parent)
     }
     m_dy->attachAxis(m_x);
     m_dy->attachAxis(m_yy);
+    useNiceTicks(c); // 1-2-5 ticks whatever range an update sets
     installDockedChart(this, c,
                        tr("Planar history of one point (after Run: pick a point on the surface)"));
     hideFromLegend(c, {m_limitDown});
@@ -59,18 +61,18 @@ int PlanarHistoryChart::sampleCount() const {
 void PlanarHistoryChart::setRun(const PlanarPointRun& run) {
     QList<QPointF> dx, dy;
     // The path starts at the first slip: the slab sits still on its walls before it.
-    if (!run.result.path.empty() && run.result.path.front().tau > 0) {
+    if (!run.path.empty() && run.path.front().tau > 0) {
         dx.append({0, 0});
         dy.append({0, 0});
     }
     double xMax = run.limit, yMax = 0.1;
-    for (const PlanarSample& s : run.result.path) {
+    for (const PlanarSample& s : run.path) {
         dx.append({s.tau, s.dx});
         dy.append({s.tau, s.dy});
         xMax = std::max(xMax, std::abs(s.dx));
         yMax = std::max(yMax, std::abs(s.dy));
     }
-    const double tauEnd = run.result.path.empty() ? 1.0 : run.result.path.back().tau;
+    const double tauEnd = run.path.empty() ? 1.0 : run.path.back().tau;
     m_dx->replace(dx);
     m_dy->replace(dy);
     m_limitUp->replace({{0, run.limit}, {tauEnd, run.limit}});

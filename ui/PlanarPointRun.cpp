@@ -4,15 +4,15 @@
 namespace kinstab::ui {
 
 PlanarPointRun runPlanarPoint(const PlanarCase& c, double amplitude, double frequencyHz) {
-    PlanarCase withPath = c;
-    withPath.solver.recordPath = true;
+    PlanarPathLog log;
     PlanarPointRun p;
     p.amplitude = amplitude;
     p.frequency = frequencyHz;
     p.limit = c.slab.limit;
     p.theta = c.slab.theta;
     p.tauRef = c.tauRef();
-    p.result = runPlanar(withPath, amplitude, frequencyHz);
+    p.result = runPlanar(c, amplitude, frequencyHz, &log);
+    p.path = std::move(log.path);
     return p;
 }
 

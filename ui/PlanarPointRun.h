@@ -10,7 +10,8 @@ namespace kinstab::ui {
 
 struct PlanarPointRun {
     double amplitude = 0, frequency = 0, limit = 1, theta = 20, tauRef = 1;
-    PlanarResult result; // with result.path: every accepted step and event
+    PlanarResult result;
+    std::vector<PlanarSample> path; // every accepted step and event
 };
 
 PlanarPointRun runPlanarPoint(const PlanarCase& c, double amplitude, double frequencyHz);

@@ -15,4 +15,19 @@ QString inProjectFolder(const QString& projectPath, const QString& fileName) {
     return fileName.isEmpty() ? folder : QDir(folder).filePath(fileName);
 }
 
+namespace {
+QString& openProjectPath() {
+    static QString path; // the GUI thread's only
+    return path;
+}
+} // namespace
+
+void setOpenProjectPath(const QString& path) {
+    openProjectPath() = path;
+}
+
+QString inOpenProjectFolder(const QString& fileName) {
+    return inProjectFolder(openProjectPath(), fileName);
+}
+
 } // namespace kinstab::ui

@@ -12,4 +12,10 @@ namespace kinstab::ui {
 // not been saved (an empty fileName gives the folder itself).
 QString inProjectFolder(const QString& projectPath, const QString& fileName = {});
 
+// The open project's file, for dialogs of views that do not hold it (the main window sets it
+// when a project is opened, saved or started).
+void setOpenProjectPath(const QString& path);
+// fileName in the open project's folder (the documents folder for an unsaved project).
+QString inOpenProjectFolder(const QString& fileName = {});
+
 } // namespace kinstab::ui

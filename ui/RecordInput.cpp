@@ -2,6 +2,7 @@
 #include "ui/RecordInput.h"
 
 #include "core/base/InputLimits.h"
+#include "ui/ProjectFolder.h"
 
 #include "ui/NumberField.h"
 #include "ui/RecordPreview.h"
@@ -129,8 +130,8 @@ void RecordInput::setRecord(const RecordExcitation& e) {
 }
 
 void RecordInput::chooseFile() {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open accelerogram"), {},
-                                                      RecordPreview::fileDialogFilter());
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open accelerogram"), inOpenProjectFolder(), RecordPreview::fileDialogFilter());
     if (path.isEmpty()) return;
     m_read = {}; // a new file: its own header decides
     loadFile(path);

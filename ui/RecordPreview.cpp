@@ -3,6 +3,7 @@
 
 #include "core/excitation/FourierSpectrum.h"
 #include "report/PlanarVertical.h"
+#include "ui/NiceAxisTicks.h"
 #include "ui/RecordMetricsText.h"
 
 #include <QCheckBox>
@@ -37,6 +38,7 @@ QChartView* makeView(const QString& title, const QString& xTitle, const QString&
     y->setTitleText(yTitle);
     chart->addAxis(x, Qt::AlignBottom);
     chart->addAxis(y, Qt::AlignLeft);
+    useNiceTicks(chart);
     auto* view = new QChartView(chart);
     view->setRenderHint(QPainter::Antialiasing);
     view->setMinimumHeight(250); // below this the axis labels are elided to "…"

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/RecordsTab.h"
 
+#include "ui/ProjectFolder.h"
 #include "ui/RecordPreview.h"
 
 #include <QFileDialog>
@@ -85,8 +86,8 @@ QString RecordsTab::errorText() const {
 }
 
 void RecordsTab::chooseFile() {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open accelerogram"), {},
-                                                      RecordPreview::fileDialogFilter());
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open accelerogram"), inOpenProjectFolder(), RecordPreview::fileDialogFilter());
     if (!path.isEmpty()) open(path);
 }
 

@@ -10,7 +10,9 @@ namespace kinstab::ui {
 InputFingerprint fingerprintOf(const Project& p) {
     nlohmann::json j = projectToJson(p);
     nlohmann::json codes = {{"building", j["building"]}, {"codes", j["codes"]}};
-    for (const char* key : {"format", "version", "name", "description", "building", "codes"})
+    // The unit system changes only how lengths are shown: no result goes stale with it.
+    for (const char* key :
+         {"format", "version", "name", "description", "building", "codes", "units"})
         j.erase(key);
     return {j.dump(), codes.dump()};
 }

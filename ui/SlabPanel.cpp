@@ -9,6 +9,8 @@
 #include <QFormLayout>
 #include <QLabel>
 
+#include <cmath>
+
 namespace kinstab::ui {
 
 namespace {
@@ -56,6 +58,7 @@ SlabPanel::SlabPanel(QWidget* parent)
     });
     connect(m_solver, &QComboBox::currentIndexChanged, this, &InputPanel::changed);
     connect(m_width, &NumberField::edited, this, &SlabPanel::updateDerived);
+    connect(m_tstar, &NumberField::edited, this, &SlabPanel::updateDerived);
     load(Slab1DCase{}, 7.625 * inch);
 }
 
@@ -66,11 +69,24 @@ void SlabPanel::updateMode() {
     updateDerived();
 }
 
+// One wall width per case: the greyed field shows the width the entered t* stands for
+// (d = 2g t*²), as Teaching and the report do, never a width left over from another case.
 void SlabPanel::updateDerived() {
-    const auto d = wallWidthMetres();
-    if (d) m_tstar->setValue(tstarFromWallWidth(*d));
-    m_derived->setText(d ? tr("t* = √(d / 2g) = %1 s").arg(tstarFromWallWidth(*d), 0, 'f', 4)
-                         : QString());
+    if (const auto d = wallWidthMetres()) {
+        // Greyed, to 0.1 ms as the line below says it (not 0.08745211031 for a 150 mm wall);
+        // the case takes t* from d itself (apply()).
+        m_tstar->setValue(std::round(tstarFromWallWidth(*d) * 1e4) / 1e4);
+        m_derived->setText(tr("t* = √(d / 2g) = %1 s").arg(tstarFromWallWidth(*d), 0, 'f', 4));
+        return;
+    }
+    const auto t = m_mode->currentIndex() == 1 ? m_tstar->value() : std::nullopt;
+    if (t) m_width->setValue(wallWidthFromTstar(*t));
+    m_derived->setText(
+        t ? tr("d = 2g t*² = %1 %2")
+                .arg(QString::fromStdString(lengthText(wallWidthFromTstar(*t),
+                                                       m_width->unitSystem(), LengthScale::Detail)),
+                     lengthSymbol(m_width->unitSystem(), LengthScale::Detail))
+          : QString());
 }
 
 std::optional<double> SlabPanel::wallWidthMetres() const {

@@ -25,13 +25,14 @@ public:
     // Shows c; when wallWidthM is given the panel is in wall-width mode.
     void load(const Slab1DCase& c, std::optional<double> wallWidthM);
     std::optional<double> wallWidthMetres() const; // nullopt in t* mode
+    // The line under the fields (t* from d, or d from t*), in the fields' units.
+    void updateDerived();
 
 public slots:
     void useMu(double mu); // from the friction calibration panel
 
 private:
     void updateMode();
-    void updateDerived();
 
     QComboBox* m_mode;
     NumberField* m_width;

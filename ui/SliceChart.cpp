@@ -2,6 +2,7 @@
 #include "ui/SliceChart.h"
 
 #include "ui/DockedChart.h"
+#include "ui/NiceAxisTicks.h"
 
 #include <QLineSeries>
 #include <QScatterSeries>
@@ -36,6 +37,7 @@ SliceChart::SliceChart(QWidget* parent)
     m_gamma->attachAxis(m_yGamma);
     m_tau->attachAxis(m_x);
     m_tau->attachAxis(m_yTau);
+    useNiceTicks(c); // 1-2-5 ticks whatever range an update sets
     installDockedChart(this, c, tr("γc and τc against A (after Run: pick a point on the surface)"));
 }
 

@@ -11,6 +11,7 @@
 #include "core/study/StudyRecords.h"
 #include "core/study/StudyRunner.h"
 #include "ui/FragilityChart.h"
+#include "ui/ProjectFolder.h"
 #include "ui/StaleFrame.h"
 #include "ui/StudyTables.h"
 
@@ -164,21 +165,24 @@ StudyTab::StudyTab(QWidget* parent)
         if (!d.isEmpty()) m_folder->setText(d);
     });
     connect(open, &QPushButton::clicked, this, [this] {
-        const QString f = QFileDialog::getOpenFileName(this, tr("Open study"), m_studyFile,
-                                                       tr("Study files (*.json)"));
+        const QString f = QFileDialog::getOpenFileName(
+            this, tr("Open study"), m_studyFile.isEmpty() ? inOpenProjectFolder() : m_studyFile,
+            tr("Study files (*.json)"));
         if (!f.isEmpty()) openStudy(f);
     });
     connect(use, &QPushButton::clicked, this, [this] {
         QString f;
         if (m_studyFile.isEmpty() || studyJson() != m_openedText)
             f = QFileDialog::getSaveFileName(this, tr("Save the study for the project"),
-                                             "study.json", tr("Study files (*.json)"));
+                                             inOpenProjectFolder("study.json"),
+                                             tr("Study files (*.json)"));
         if (!f.isEmpty() || !m_studyFile.isEmpty()) useInProject(f);
     });
     connect(m_run, &QPushButton::clicked, this, &StudyTab::run);
     connect(m_cancel, &QPushButton::clicked, this, &StudyTab::cancel);
     connect(m_export, &QPushButton::clicked, this, [this] {
-        const QString f = QFileDialog::getSaveFileName(this, tr("Export study rows"), "study.jsonl",
+        const QString f = QFileDialog::getSaveFileName(this, tr("Export study rows"),
+                                                       inOpenProjectFolder("study.jsonl"),
                                                        tr("Study rows (*.jsonl)"));
         if (f.isEmpty() || !exportRows(f)) return;
         QString frag = f;

@@ -384,8 +384,10 @@ void SurfaceView::rebuildOverlays() {
 
     // Axes fit the grid (widened to whole 1-2-5 steps); code ratios and the building's frequency
     // are drawn only where they fall on the surface, the legend lists the others.
-    const NiceAxis ax = niceAxis(m_grid.amplitudes.front(), m_grid.amplitudes.back(), 10);
-    const NiceAxis fx = niceAxis(m_grid.frequencies.front(), m_grid.frequencies.back(), 10);
+    // The f axis runs into the depth, foreshortened: at 10 ticks its labels ran into each other
+    // (0.5 0.6 0.7 ... at a 1280 px window); 5 keep them apart, 6 for A across the front.
+    const NiceAxis ax = niceAxis(m_grid.amplitudes.front(), m_grid.amplitudes.back(), 6);
+    const NiceAxis fx = niceAxis(m_grid.frequencies.front(), m_grid.frequencies.back(), 5);
     const float yMax = static_cast<float>(colourScaleMaximum(m_grid));
     const NiceAxis yx = niceAxis(0, yMax, 6);
     auto apply = [](QValue3DAxis* axis, const NiceAxis& n) {

@@ -25,6 +25,20 @@ struct SweepRunner::Live : AnalysisJobContext {
 
 namespace {
 
+// The A_crit(f) curve drawn over a surface: scanned from each model's no-slip amplitude (from = 0
+// defers to it) up to the grid's top amplitude in the default scan step, bisected to 1e-5 g: the
+// curve spans amplitudes of order 0.1 to 10 g, where that is far below a pixel (the default
+// search's 1e-6 g is for the design check's printed digits, not a drawn curve).
+constexpr double kSurfaceCurveTolerance = 1e-5;
+CriticalSearch surfaceCriticalSearch(double topAmplitude) {
+    CriticalSearch s;
+    s.from = 0.0;
+    s.to = topAmplitude;
+    s.scanStep = kScanStepInput.fallback;
+    s.tolerance = kSurfaceCurveTolerance;
+    return s;
+}
+
 // The job as core's analysis request: the surface, A_crit at every grid frequency (searched up
 // to the grid's top amplitude), and the design check when there are codes.
 AnalysisRequest analysisRequest(const SweepJob& job) {
@@ -36,7 +50,7 @@ AnalysisRequest analysisRequest(const SweepJob& job) {
     const auto& amplitudes = job.grid.amplitudes;
     const double top =
         amplitudes.empty() ? 0.0 : *std::max_element(amplitudes.begin(), amplitudes.end());
-    q.criticalSearch = CriticalSearch{0.0, top, 0.01, 1e-5};
+    q.criticalSearch = surfaceCriticalSearch(top);
     q.codes = job.codes;
     q.checkSearch = job.search;
     q.parts.surface = true;

@@ -14,21 +14,17 @@ namespace kinstab::ui {
 
 namespace {
 const char* const kKey = "view/unitSystem";
-constexpr double kFoot = 0.3048, kInch = 0.0254; // exact by definition (1959)
 } // namespace
 
 double metresPerDisplayUnit(UnitSystem s, LengthScale scale) {
-    if (s == UnitSystem::US) return scale == LengthScale::Structure ? kFoot : kInch;
-    return scale == LengthScale::Structure ? 1.0 : 0.001;
+    return metresPerUnit(s, scale);
 }
 
 QString lengthSymbol(UnitSystem s, LengthScale scale) {
-    if (s == UnitSystem::US)
-        return scale == LengthScale::Structure ? QStringLiteral("ft") : QStringLiteral("in");
-    return scale == LengthScale::Structure ? QStringLiteral("m") : QStringLiteral("mm");
+    return QString::fromStdString(lengthUnitSymbol(s, scale));
 }
 
-QString unitSystemName(UnitSystem s) {
+QString unitSystemTitle(UnitSystem s) {
     return s == UnitSystem::US ? QCoreApplication::translate("Units", "US customary (ft, in)")
                                : QCoreApplication::translate("Units", "SI (m, mm)");
 }
@@ -42,6 +38,12 @@ void saveUnitSystem(UnitSystem s) {
     QSettings().setValue(kKey, s == UnitSystem::US ? QStringLiteral("US") : QStringLiteral("SI"));
 }
 
+void showUnitSystem(QWidget* root, UnitSystem s) {
+    const QString name =
+        s == UnitSystem::SI ? QStringLiteral("unitsSI") : QStringLiteral("unitsUS");
+    if (auto* a = root->findChild<QAction*>(name)) a->setChecked(true);
+}
+
 void applyUnitSystem(QWidget* root, UnitSystem s) {
     for (NumberField* f : root->findChildren<NumberField*>())
         f->setUnitSystem(s);
@@ -52,7 +54,7 @@ void installUnitsMenu(QMenu* viewMenu, QWidget* root, std::function<void(UnitSys
     auto* group = new QActionGroup(menu);
     const UnitSystem saved = savedUnitSystem();
     for (UnitSystem s : {UnitSystem::SI, UnitSystem::US}) {
-        QAction* a = menu->addAction(unitSystemName(s));
+        QAction* a = menu->addAction(unitSystemTitle(s));
         a->setObjectName(s == UnitSystem::SI ? QStringLiteral("unitsSI")
                                              : QStringLiteral("unitsUS"));
         a->setCheckable(true);

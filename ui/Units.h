@@ -5,6 +5,8 @@
 // unit they are stored in (a project file names its units: "unit": "ft" | "m" for the building,
 // wall_width_in for the wall), so switching never changes a saved project.
 
+#include "core/base/UnitSystem.h"
+
 #include <QString>
 
 #include <functional>
@@ -14,19 +16,21 @@ class QWidget;
 
 namespace kinstab::ui {
 
-enum class UnitSystem { SI, US };
-
-// Lengths of the building (m | ft) and of details such as a wall's width (mm | in).
-enum class LengthScale { Structure, Detail };
+using kinstab::LengthScale; // core/base/UnitSystem.h
+using kinstab::UnitSystem;
 
 double metresPerDisplayUnit(UnitSystem s, LengthScale scale);
 QString lengthSymbol(UnitSystem s, LengthScale scale); // "m", "mm", "ft", "in"
 // "SI (m, mm)" / "US customary (ft, in)", for the menu.
-QString unitSystemName(UnitSystem s);
+QString unitSystemTitle(UnitSystem s);
 
 // The choice kept in QSettings (SI when none was made yet).
 UnitSystem savedUnitSystem();
 void saveUnitSystem(UnitSystem s);
+
+// The menu's check mark follows s (a project opened in its own units), without saving it as
+// the user's choice.
+void showUnitSystem(QWidget* root, UnitSystem s);
 
 // Every NumberField below root shows its length in s (fields that are no length ignore it).
 void applyUnitSystem(QWidget* root, UnitSystem s);

@@ -1,12 +1,57 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/cli/Args.h"
 
+#include "app/cli/Suggest.h"
 #include "core/base/TextInput.h"
 #include "core/sweep/Grid.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 
 namespace kinstab::cli {
+
+namespace {
+
+// "unknown flag '--amplitdue' (did you mean --amplitude?)", or the commands that have it.
+std::string unknownFlag(const std::string& typed, const std::string& name,
+                        const std::set<std::string>& flags, const std::set<std::string>& switches) {
+    std::vector<std::string> own(flags.begin(), flags.end());
+    own.insert(own.end(), switches.begin(), switches.end());
+    std::string m = "unknown flag " + quotedToken(typed);
+    if (const std::string near = nearest(name, own); !near.empty())
+        return m + " (did you mean " + (near == "o" ? "-o" : "--" + near) + "?)";
+    const std::vector<std::string> owners = commandsWithFlag(name);
+    if (owners.empty()) return m;
+    std::string list;
+    for (const std::string& c : owners)
+        list += (list.empty() ? "" : ", ") + c;
+    return m + " (a flag of " + list + "; see kinstab-cli COMMAND --help)";
+}
+
+} // namespace
+
+void warnIfNotInG(const Args& args) {
+    // m/s² typed as g: 9.81 for 1 g. No recorded earthquake motion exceeds about 4 g in a
+    // horizontal direction, so an amplitude above that is most likely in other units.
+    auto warn = [](const std::string& flag, double g) {
+        std::cerr << "kinstab-cli: warning: --" << flag << " " << formatDouble(g) << " g is above "
+                  << formatDouble(kPlausibleAmplitudeG)
+                  << " g, more than recorded earthquake motions reach: was it in m/s²? (1 g = "
+                     "9.80665 m/s²)\n";
+    };
+    if (args.has("amplitude")) {
+        const std::optional<double> a = parseDouble(args.text("amplitude"));
+        if (a && *a > kPlausibleAmplitudeG) warn("amplitude", *a);
+    }
+    if (args.has("amplitudes")) {
+        // A grid entirely above the bound; one that merely reaches past it is a study's choice.
+        const ParsedList l = parseList(args.text("amplitudes"));
+        if (l.error.empty() && !l.values.empty() &&
+            *std::min_element(l.values.begin(), l.values.end()) > kPlausibleAmplitudeG)
+            warn("amplitudes", *std::min_element(l.values.begin(), l.values.end()));
+    }
+}
 
 Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& flags,
            const std::set<std::string>& switches) {
@@ -30,7 +75,7 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
             values_[name] = "1";
             continue;
         }
-        if (!flags.count(name)) throw UsageError("unknown flag " + quotedToken(a));
+        if (!flags.count(name)) throw UsageError(unknownFlag(a, name, flags, switches));
         if (!inlineValue) {
             if (i + 1 >= argv.size()) throw UsageError("flag --" + name + " needs a value");
             value = argv[++i];
@@ -40,6 +85,7 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
             throw UsageError("-o \"\": the file name is empty (use - for stdout)");
         values_[name] = value;
     }
+    warnIfNotInG(*this);
 }
 
 bool Args::has(const std::string& flag) const {

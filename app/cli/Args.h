@@ -18,6 +18,13 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// Above this, an amplitude given in g (--amplitude, or every value of --amplitudes) draws a
+// warning on stderr: it looks like m/s² (9.81 typed for 1 g). The run goes on.
+inline constexpr double kPlausibleAmplitudeG = 4.0;
+
+class Args;
+void warnIfNotInG(const Args& args);
+
 class Args {
 public:
     // flags: the names this subcommand accepts (without "--"); switches take no value.

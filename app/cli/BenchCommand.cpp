@@ -12,8 +12,12 @@
 #include "app/cli/SearchFlags.h"
 #include "core/check/RecordBenchmark.h"
 #include "core/io/JsonText.h"
+#include "core/io/StudySpecJson.h"
 #include "core/records/RecordReader.h"
 #include "core/rocking/RockingBenchmark.h"
+#include "core/study/CpuAffinity.h"
+#include "core/study/StudyBenchmark.h"
+#include "core/study/StudyRecords.h"
 #include "core/sweep/SurfaceBenchmark.h"
 
 #include <cstdio>
@@ -165,11 +169,45 @@ int runBenchRocking(const Args& args, int threads, int repeats) {
     printTiming("exact      ", b.mapExact, 3);
     return 0;
 }
+
+// A study's throughput (issue 34): all its cases on one thread and on --threads threads,
+// alternating in this process; cases per CPU-second and the threads' speed-up.
+int runBenchStudy(const Args& args, int threads, int repeats) {
+    const std::string path = args.text("study");
+    StudySpec spec;
+    try {
+        spec = loadStudy(path);
+        loadStudyRecords(spec); // each record read once, as `study` does
+    } catch (const StudyError& e) {
+        throw UsageError("--study " + path + ": " + e.what());
+    }
+    const int n = threads > 0 ? threads : static_cast<int>(allowedCpuCount());
+    const StudyBenchmark b = benchmarkStudy(spec, n, repeats);
+    const nlohmann::json j = {{"study", path},
+                              {"cases", b.cases},
+                              {"threads", b.threads},
+                              {"one_thread", timingJson(b.one)},
+                              {"threads_run", timingJson(b.many)},
+                              {"cases_per_cpu_second_one_thread", b.perCpuSecondOne},
+                              {"cases_per_cpu_second_threads", b.perCpuSecondMany},
+                              {"speedup_threads_over_one", b.speedup},
+                              {"rows_identical", b.rowsAgree}};
+    std::cout << jsonText(j, 2) << "\n";
+    std::fprintf(stderr, "study %s, %zu cases, 1 and %d threads, %d alternating runs each:\n",
+                 path.c_str(), b.cases, b.threads, b.one.runs);
+    printTiming("1 thread  ", b.one, 4);
+    printTiming(std::to_string(b.threads) + " threads ", b.many, 4);
+    std::fprintf(stderr, "  %.0f and %.0f cases per CPU-second; speed-up %.2f (wall); rows %s\n",
+                 b.perCpuSecondOne, b.perCpuSecondMany, b.speedup,
+                 b.rowsAgree ? "identical" : "DIFFER");
+    return b.rowsAgree ? 0 : 1;
+}
 } // namespace
 
 int runBench(const ArgList& argv) {
     std::set<std::string> flags = modelFlagNames();
-    flags.insert({"amplitudes", "frequencies", "threads", "repeats", "amplitude", "scale-factor"});
+    flags.insert(
+        {"amplitudes", "frequencies", "threads", "repeats", "amplitude", "scale-factor", "study"});
     flags.merge(recordReadFlagNames());
     flags.merge(searchFlagNames());
     flags.insert("map-points");
@@ -190,6 +228,11 @@ int runBench(const ArgList& argv) {
         throw UsageError("--repeats " + args.text("repeats") + ": must be 1 to 1000");
     if (args.has("rocking")) return runBenchRocking(args, threads, repeats);
     if (args.has("map-points")) throw UsageError("--map-points: needs --rocking");
+    if (args.has("study")) {
+        if (planar || args.has("vector-state") || args.has("record"))
+            throw UsageError("--study: times the study alone");
+        return runBenchStudy(args, threads, repeats);
+    }
     if (args.has("record")) {
         if (planar || args.has("vector-state"))
             throw UsageError("--record: times the 1-DOF record path alone");
@@ -206,6 +249,9 @@ int runBench(const ArgList& argv) {
     if (args.has("vector-state")) return runBenchVectorState(c, grid, threads, repeats);
 
     const SurfaceBenchmark b = benchmarkSurface(c, grid, repeats, threads);
+    const double points = static_cast<double>(grid.size());
+    const double perEvent =
+        b.exactEvents > 0 ? static_cast<double>(b.exactEvaluations) / b.exactEvents : 0.0;
     nlohmann::json j = gridJson(grid, b.threads);
     j.update({{"envelope", envelopeJson(c)},
               {"mu", c.slab.mu},
@@ -215,7 +261,10 @@ int runBench(const ArgList& argv) {
               {"ratio_exact_over_paper", b.ratioMedian},
               {"ratio_exact_over_paper_cpu", b.ratioCpu},
               {"exact_collapsed_points", b.exactCollapsed},
-              {"outcome_disagreements", b.outcomeDisagreements}});
+              {"outcome_disagreements", b.outcomeDisagreements},
+              {"exact_cpu_us_per_point", 1e6 * b.exact.medianCpuSeconds / points},
+              {"exact_events_per_point", static_cast<double>(b.exactEvents) / points},
+              {"exact_evaluations_per_event", perEvent}});
     std::cout << jsonText(j, 2) << "\n";
     printHeader(grid, "surface", b.threads, b.exact.runs);
     printTiming("exact      ", b.exact, 3);
@@ -226,6 +275,11 @@ int runBench(const ArgList& argv) {
                  "  exact/paper %.2f (wall), %.2f (CPU), medians of per-run ratios; outcomes "
                  "differ at %zu points\n",
                  b.ratioMedian, b.ratioCpu, b.outcomeDisagreements);
+    std::fprintf(stderr,
+                 "  exact: %.2f us CPU per point, %.1f events per point, %.2f evaluations per "
+                 "event\n",
+                 1e6 * b.exact.medianCpuSeconds / points,
+                 static_cast<double>(b.exactEvents) / points, perEvent);
     return 0;
 }
 

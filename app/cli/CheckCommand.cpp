@@ -12,7 +12,7 @@
 #include "core/io/CodesJson.h"
 #include "core/io/JsonText.h"
 #include "core/io/Project.h"
-#include "report/PlanarVertical.h"
+#include "core/slab/VerticalRecord.h"
 
 #include <unistd.h>
 
@@ -26,7 +26,7 @@ namespace {
 // ch. VI with the project's planar settings and its vertical record read. Throws InputError.
 std::optional<PlanarCase> planarModel(const Project& p) {
     if (p.model != ModelKind::Planar) return std::nullopt;
-    return ui::projectPlanarCase(p.slab, p.planar);
+    return planarCaseWithVertical(p.slab, p.planar);
 }
 
 AssessmentRun assess(const Project& p, const std::optional<PlanarCase>& planar) {

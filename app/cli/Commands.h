@@ -17,7 +17,11 @@ int runBench(const ArgList& args);
 int runPrecision(const ArgList& args);
 int runCodes(const ArgList& args);
 int runCheck(const ArgList& args);
+// report: runs kinstab-report (ReportLauncher.cpp), the one part of the CLI that needs Qt Gui,
+// so that the other commands start without loading Qt (issue 34).
 int runReport(const ArgList& args);
+// The report itself (ReportCommand.cpp), linked into kinstab-report only.
+int writeReport(const ArgList& args);
 int runRecord(const ArgList& args);
 int runFriction(const ArgList& args);
 int runFloors(const ArgList& args);
@@ -38,5 +42,9 @@ int runSimulateRecord(const Args& args);
 void writeOutput(const Args& args, const std::string& flag, const std::string& text);
 // The same checks on a name before the work starts.
 void checkOutputPath(const std::string& flag, const std::string& path);
+
+// Runs one command as kinstab-cli NAME ...: flushes stdout, and turns an exception into its
+// message ("kinstab-cli NAME: ...") and exit code (app/cli/ExitCode.h).
+int runCommand(int (*command)(const ArgList&), const char* name, const ArgList& args);
 
 } // namespace kinstab::cli

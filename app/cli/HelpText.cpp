@@ -15,6 +15,8 @@ namespace {
     "  --alpha X --beta Y           a user envelope exp(-alpha t) - exp(-beta t), 1/s\n"           \
     "  --tstar S                    characteristic time t* = sqrt(d / 2g), s [0.099]\n"            \
     "  --wall-width-in D            wall width d, inches (gives t*; excludes --tstar)\n"           \
+    "  --wall-width-mm D            wall width d, millimetres (excludes --tstar, "                 \
+    "--wall-width-in)\n"                                                                           \
     "  --mu M                       friction coefficient [0.6]\n"                                  \
     "  --limit L                    bearing / (d/2): collapse when |delta| > L [1]\n"              \
     "  --duration TAU               stop the excitation at tau = TAU (dimensionless) [none]\n"     \
@@ -44,7 +46,8 @@ const char* kSimulate =
     "                            [record flags] [model flags] [--critical [search flags]]\n"
     "One run of the slab; prints a JSON object (outcome, tau_c, gamma_c, slip_intervals,\n"
     "max_abs_delta, residual_delta, work, wall_time_s).\n"
-    "  --amplitude A                peak floor acceleration, g (with --record: target peak)\n"
+    "  --amplitude A                peak floor acceleration, g (with --record: target peak);\n"
+    "                               above 4 g a warning: m/s² typed as g? (1 g = 9.80665 m/s²)\n"
     "  --frequency F                excitation frequency, Hz\n"
     "  --history FILE.csv           write the sampled history (tau, a, delta, velocity, state)\n"
     "  --history-step DTAU          history sample step, dimensionless time [0.05]\n"
@@ -60,7 +63,8 @@ const char* kSurface =
     "usage: kinstab-cli surface --amplitudes LIST --frequencies LIST [model flags] [--threads N]\n"
     "                           [--format json|csv|table] [-o FILE]\n"
     "The gamma_c(A, f) surface: one run per grid point.\n"
-    "  --amplitudes LIST            peak accelerations, g (a,b,c or start:stop:step)\n"
+    "  --amplitudes LIST            peak accelerations, g (a,b,c or start:stop:step); a warning\n"
+    "                               when every one is above 4 g (m/s² typed as g?)\n"
     "  --frequencies LIST           frequencies, Hz\n"
     "  --threads N                  worker threads, 0 = all cores [0]\n"
     "  --format json|csv|table      output format [json]\n"
@@ -87,10 +91,14 @@ const char* kPrecision =
 const char* kBench =
     "usage: kinstab-cli bench [--repeats N] [--threads N] [--amplitudes LIST --frequencies LIST]\n"
     "                         [--vector-state] [model flags]\n"
+    "       kinstab-cli bench --study FILE.json [--threads N] [--repeats N]\n"
     "       kinstab-cli bench --rocking [--map-points N] [--repeats N] [--threads N]\n"
-    "Times the exact and the paper solver on one grid; prints JSON (min and median seconds).\n"
+    "Times the exact and the paper solver on one grid; prints JSON (min and median seconds),\n"
+    "with the exact solver's CPU per point, events per point and evaluations per event.\n"
     "  --vector-state               instead: the exact solver with and without clearing the\n"
     "                               upper AVX state (vzeroupper) at each solver start\n"
+    "  --study FILE                 instead: the study's cases on 1 and on --threads threads\n"
+    "                               (cases per CPU-second, speed-up; [the allowed CPUs])\n"
     "  --rocking                    instead: the free-standing block, one pulse run and the\n"
     "                               N x N one-sine overturning map, linearised and exact\n"
     "  --map-points N               points per axis of that map [257]\n"
@@ -164,13 +172,15 @@ const char* kFriction =
 
 const char* kReport =
     "usage: kinstab-cli report --project FILE -o FILE.pdf [--page a4|letter] [--figure-grid N]\n"
-    "                          [--sections LIST]\n"
+    "                          [--sections LIST] [--units si|us]\n"
     "Writes the design-check report as PDF: title and signature blocks, verdict, inputs, code\n"
     "trails, figures. Run times go to the JSON printed on stdout.\n"
     "  --project FILE               a kinstab project (.json)\n"
     "  -o FILE.pdf                  the report to write\n"
     "  --page a4|letter             paper size [a4]\n"
     "  --figure-grid N              grid points per axis of the surface figure [41]\n"
+    "  --units si|us                lengths in m and mm or in ft and in [the project's \"units\",\n"
+    "                               else us for a building in ft, si for one in m]\n"
     "  --sections LIST              optional sections, comma-separated, or all [all]:\n"
     "                               assumptions, symbols, inputs, codes, excitation, record,\n"
     "                               floors, blocks, surface, check, study, numerics, references\n"
@@ -349,7 +359,8 @@ std::string usageText() {
          "Exit codes: 0 success, 2 bad input (the message names the flag and value), 3 an output\n"
          "could not be written (full disk, closed stdout), 4 the model gave no finite result,\n"
          "1 a bug in kinstab. Every JSON output carries \"kinstab_version\".\n"
-         "Manual: man kinstab-cli.\n";
+         "Manual: man kinstab-cli (installed), or from a build tree: man -l\n"
+         "build/packaging/kinstab-cli.1.\n";
     return s;
 }
 

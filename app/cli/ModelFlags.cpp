@@ -6,9 +6,10 @@
 namespace kinstab::cli {
 
 std::set<std::string> modelFlagNames() {
-    return {"model", "envelope", "alpha",  "beta",         "tstar",       "wall-width-in", "mu",
-            "limit", "scale",    "solver", "duration",     "paper-steps", "ay-ratio",      "fy",
-            "theta", "vertical", "record", "floor-period", "damping",     "normalization"};
+    return {"model",         "envelope", "alpha",        "beta",  "tstar",    "wall-width-in",
+            "wall-width-mm", "mu",       "limit",        "scale", "solver",   "duration",
+            "paper-steps",   "ay-ratio", "fy",           "theta", "vertical", "record",
+            "floor-period",  "damping",  "normalization"};
 }
 
 ModelKind modelFromFlags(const Args& args) {
@@ -51,10 +52,19 @@ Slab1DCase commonCaseFromFlags(const Args& args) {
         const std::string name = args.choice("envelope", {"fast", "moderate", "slow"}, "moderate");
         c.envelope = Envelope::fromPreset(*presetFromName(name));
     }
-    if (args.has("tstar") && args.has("wall-width-in"))
-        throw UsageError("--tstar and --wall-width-in exclude each other");
-    const std::optional<double> wall = args.optionalInput(kWallWidthInput);
-    c.tstar = wall ? tstarFromWallWidthInches(*wall) : args.input(kTstarInput);
+    // One of t*, the width in inches, the width in millimetres (exit 2 for two of them).
+    const char* given[] = {"tstar", "wall-width-in", "wall-width-mm"};
+    for (int i = 0; i < 3; ++i)
+        for (int j = i + 1; j < 3; ++j)
+            if (args.has(given[i]) && args.has(given[j]))
+                throw UsageError(std::string("--") + given[i] + " and --" + given[j] +
+                                 " exclude each other");
+    if (const std::optional<double> mm = args.optionalInput(kWallWidthMmInput))
+        c.tstar = tstarFromWallWidth(*mm / 1000.0);
+    else if (const std::optional<double> in = args.optionalInput(kWallWidthInput))
+        c.tstar = tstarFromWallWidthInches(*in);
+    else
+        c.tstar = args.input(kTstarInput);
     c.slab.mu = args.input(kMuInput);
     c.slab.limit = args.input(kLimitInput);
     c.slab.duration = args.optionalInput(kDurationInput);

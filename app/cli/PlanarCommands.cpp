@@ -29,12 +29,15 @@ nlohmann::json planarEventsJson(const std::vector<PlanarEvent>& events) {
     return a;
 }
 
+PlanarCliLogs::PlanarCliLogs(const Args& args)
+    : recorder(args.has("events") ? &events : nullptr, args.has("history") ? &path : nullptr) {}
+
 // The computed path (every accepted step and event) with the excitation there.
-std::string planarHistoryCsv(const SlabModel2D& m, const PlanarResult& r) {
+std::string planarHistoryCsv(const SlabModel2D& m, const std::vector<PlanarSample>& path) {
     std::ostringstream s;
     s.precision(12);
     s << "tau,ax,ay,n,dx,dy,ux,uy,state\n";
-    for (const PlanarSample& p : r.path) {
+    for (const PlanarSample& p : path) {
         const Vec2 a = m.accel(p.tau);
         s << p.tau << ',' << a.x << ',' << a.y << ',' << m.normal(p.tau) << ',' << p.dx << ','
           << p.dy << ',' << p.ux << ',' << p.uy << ',' << (p.slipping ? "slip" : "stick") << '\n';
@@ -58,11 +61,10 @@ int runSimulatePlanar(const Args& args, double amplitude, double frequency, doub
                          "steps and events");
     if (const InputProblem p = checkPlanarRunWork(c, amplitude, frequency); !p.empty())
         throw UsageError("--frequency " + args.text("frequency") + ": " + p.why);
-    c.solver.recordEvents = args.has("events");
-    c.solver.recordPath = args.has("history");
     const SlabModel2D model = planarModel(c, amplitude, frequency);
     const auto t0 = std::chrono::steady_clock::now();
-    const PlanarResult r = solvePlanar(model, c.solver);
+    PlanarCliLogs log(args);
+    const PlanarResult r = solvePlanar(model, c.solver, &log.recorder);
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -73,8 +75,8 @@ int runSimulatePlanar(const Args& args, double amplitude, double frequency, doub
     j["tau_ref"] = c.tauRef();
     addPlanarResultKeys(j, r);
     j["wall_time_s"] = wall;
-    if (args.has("events")) j["events"] = planarEventsJson(r.events);
-    if (args.has("history")) writeOutput(args, "history", planarHistoryCsv(model, r));
+    if (args.has("events")) j["events"] = planarEventsJson(log.events.events);
+    if (args.has("history")) writeOutput(args, "history", planarHistoryCsv(model, log.path.path));
     std::cout << jsonText(j, 2) << "\n";
     return 0;
 }

@@ -35,7 +35,14 @@ int runSurfacePlanar(const Args& args, const SweepGrid& grid, int threads,
 // Shared by the sine- and record-driven planar simulate: the event list, the path CSV and the
 // planar keys of the result (exit_side, tau_lift_off, max_abs_delta_y, residual_delta_y).
 nlohmann::json planarEventsJson(const std::vector<PlanarEvent>& events);
-std::string planarHistoryCsv(const SlabModel2D& m, const PlanarResult& r);
+std::string planarHistoryCsv(const SlabModel2D& m, const std::vector<PlanarSample>& path);
+// What --events and --history ask a run to keep.
+struct PlanarCliLogs {
+    explicit PlanarCliLogs(const Args& args);
+    PlanarEventLog events;
+    PlanarPathLog path;
+    PlanarRecorderPair recorder;
+};
 void addPlanarResultKeys(nlohmann::json& j, const PlanarResult& r);
 
 // simulate --model planar --record FILE [--record-y FILE] (PlanarRecord.cpp).

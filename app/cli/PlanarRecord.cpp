@@ -45,11 +45,10 @@ int runSimulatePlanarRecord(const Args& args) {
     if (const std::string err = validatePlanarRecordMotions(m, c.tstar); !err.empty())
         throw UsageError(std::string(err.rfind("y", 0) == 0 ? "--record-y " : "--record ") +
                          args.text(err.rfind("y", 0) == 0 ? "record-y" : "record") + ": " + err);
-    c.solver.recordEvents = args.has("events");
-    c.solver.recordPath = args.has("history");
     const SlabModel2D model = planarRecordModel(c, m);
     const auto t0 = std::chrono::steady_clock::now();
-    const PlanarResult r = solvePlanar(model, c.solver);
+    PlanarCliLogs log(args);
+    const PlanarResult r = solvePlanar(model, c.solver, &log.recorder);
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -70,8 +69,8 @@ int runSimulatePlanarRecord(const Args& args) {
     j["scale_factor"] = m.peakX / std::abs(m.x.peak().value);
     j["tau_ref"] = tauRef ? nlohmann::json(*tauRef) : nlohmann::json();
     j["wall_time_s"] = wall;
-    if (args.has("events")) j["events"] = planarEventsJson(r.events);
-    if (args.has("history")) writeOutput(args, "history", planarHistoryCsv(model, r));
+    if (args.has("events")) j["events"] = planarEventsJson(log.events.events);
+    if (args.has("history")) writeOutput(args, "history", planarHistoryCsv(model, log.path.path));
     std::cout << jsonText(j, 2) << "\n";
     return 0;
 }

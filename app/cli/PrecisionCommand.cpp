@@ -6,7 +6,7 @@
 #include "app/cli/Commands.h"
 #include "core/precision/PlanarPrecision.h"
 #include "core/precision/WorkPrecision.h"
-#include "report/PlanarVertical.h"
+#include "core/slab/VerticalRecord.h"
 
 #include <iostream>
 
@@ -28,7 +28,7 @@ int runPrecision(const ArgList& argv) {
     // The planar model: its rows follow the 1-DOF ones in the table and the CSV.
     PlanarPrecisionOptions planar;
     planar.repeats = options.repeats;
-    planar.verticalUp = ui::projectPlanarCase({}, PlanarSettings{}).vertical; // shipped RSN68 UP
+    planar.verticalUp = planarCaseWithVertical({}, PlanarSettings{}).vertical; // shipped RSN68 UP
     planar.onProgress = options.onProgress;
     const PlanarPrecisionStudy planarStudy = runPlanarPrecisionStudy(planar);
     std::cout << planarPrecisionText(planarStudy);

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // kinstab-cli report --project FILE -o FILE.pdf [--page a4|letter] [--figure-grid N]
-// Runs the analyses the report needs and writes the same PDF as the GUI's File → Export
-// report…; `-o -` writes the PDF to stdout and the summary to stderr. Needs no display: a
-// QGuiApplication on the offscreen platform unless the caller chose another.
+//                    [--units si|us]
+// Built into kinstab-report, which kinstab-cli report runs (ReportLauncher.cpp). Runs the analyses
+// the report needs and writes the same PDF as the GUI's File → Export report…; `-o -` writes the
+// PDF to stdout and the summary to stderr. Needs no display: a QGuiApplication on the offscreen
+// platform unless the caller chose another.
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
@@ -56,8 +58,8 @@ QByteArray readProjectBytes(const std::string& path) {
 
 } // namespace
 
-int runReport(const ArgList& argv) {
-    const Args args(argv, {"project", "o", "page", "figure-grid", "sections"});
+int writeReport(const ArgList& argv) {
+    const Args args(argv, {"project", "o", "page", "figure-grid", "sections", "units"});
     using namespace kinstab::ui::report;
     const auto t0 = std::chrono::steady_clock::now();
     if (!args.has("project")) throw UsageError("--project FILE is required");
@@ -86,6 +88,10 @@ int runReport(const ArgList& argv) {
     } catch (const ProjectError& e) {
         throw UsageError("--project " + path + ": " + e.what());
     }
+    // Lengths print in the project's unit system ("units", else its building's: ft gives US);
+    // --units prints them in the other without editing the file.
+    if (args.has("units"))
+        source.project.units = unitSystemFromName(args.choice("units", {"si", "us"}, "si"));
     source.fileName = QString::fromStdString(path);
     source.fileContents = readProjectBytes(path);
     ReportAnalysis analysis;
@@ -111,6 +117,7 @@ int runReport(const ArgList& argv) {
     const nlohmann::json j = {{"output", out},
                               {"pages", pages},
                               {"page", paper == PaperSize::A4 ? "a4" : "letter"},
+                              {"units", unitSystemName(projectUnits(source.project))},
                               {"analysis_wall_time_s", analysis.totalSeconds},
                               {"timings", reportTimings(analysis)},
                               {"wall_time_s", seconds}};

@@ -4,6 +4,7 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
+#include "app/cli/ProgressLine.h"
 #include "app/cli/StreamedOutput.h"
 #include "core/base/TextInput.h"
 #include "core/io/AtomicFile.h"
@@ -13,6 +14,8 @@
 #include "core/study/StudyRecords.h"
 #include "core/study/StudyRunner.h"
 
+#include <algorithm>
+#include <atomic>
 #include <iostream>
 
 namespace kinstab::cli {
@@ -77,7 +80,17 @@ int runStudyCommand(const ArgList& argv) {
     }
     StreamedOutput out =
         args.has("resume") ? resumableOutput(spec, options, output) : StreamedOutput(output);
-    runStudy(spec, options, [&out](const std::string& rows) { out.write(rows); });
+    // Rows come in blocks, in case order: the progress counts them as they are written.
+    std::atomic<std::size_t> written{0};
+    const std::size_t cases = shardCaseCount(spec, options.shard) - options.done;
+    {
+        const ProgressLine progress("study", "cases",
+                                    [&] { return std::pair(written.load(), cases); });
+        runStudy(spec, options, [&out, &written](const std::string& rows) {
+            out.write(rows);
+            written += static_cast<std::size_t>(std::count(rows.begin(), rows.end(), '\n'));
+        });
+    }
     out.commit();
     return 0;
 }

@@ -5,37 +5,16 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
-#include "app/cli/ExitCode.h"
 #include "app/cli/HelpText.h"
-#include "core/io/AtomicFile.h"
+#include "app/cli/Suggest.h"
 #include "core/io/SignalCleanup.h"
 
-#include <exception>
-#include <functional>
 #include <iostream>
 #include <map>
 
-namespace {
-
-using namespace kinstab::cli;
-
-int runCommand(const std::function<int(const ArgList&)>& command, const char* name,
-               const ArgList& args) {
-    try {
-        const int code = command(args);
-        kinstab::flushStandardOutput(); // a full stdout is a failed run, not a silent loss
-        return code;
-    } catch (const std::exception& e) {
-        const Failure f = failureOf(e);
-        std::cerr << "kinstab-cli " << name << ": " << f.prefix << e.what() << "\n";
-        return f.code;
-    }
-}
-
-} // namespace
-
 int main(int argc, char** argv) {
-    const std::map<std::string, std::function<int(const ArgList&)>> commands = {
+    using namespace kinstab::cli;
+    const std::map<std::string, int (*)(const ArgList&)> commands = {
         {"simulate", runSimulate},
         {"surface", runSurface},
         {"critical", runCritical},
@@ -65,7 +44,10 @@ int main(int argc, char** argv) {
     }
     const auto it = commands.find(first);
     if (it == commands.end()) {
-        std::cerr << "kinstab-cli: unknown command '" << first << "'\n" << usageText();
+        const std::string near = kinstab::cli::nearest(first, commandNames());
+        std::cerr << "kinstab-cli: unknown command '" << first << "'"
+                  << (near.empty() ? std::string() : " (did you mean '" + near + "'?)") << "\n"
+                  << usageText();
         return 2;
     }
     for (int i = 2; i < argc; ++i) {
@@ -75,6 +57,7 @@ int main(int argc, char** argv) {
             return 0;
         }
     }
-    kinstab::removeTemporariesOnSignals();
+    // Ctrl+C: one line naming the command on stderr, then the signal's own exit status.
+    kinstab::removeTemporariesOnSignals(("kinstab-cli " + first).c_str());
     return runCommand(it->second, argv[1], ArgList(argv + 2, argv + argc));
 }

@@ -25,8 +25,7 @@ DecaySineIntegrals::DecaySineIntegrals(double p, double q, double omega)
 
 // The exponentials at one time, with one sincos: exp(z_q t), and exp(z_p t) as
 // exp(z_q t) (1 + expm1(d t)) when d t < 1 (so that the p - q difference keeps its digits).
-DecaySineIntegrals::Point DecaySineIntegrals::pointAt(double t) const {
-    Point pt;
+void DecaySineIntegrals::pointAt(double t, Point& pt) const {
     pt.t = t;
     const double c = std::cos(omega_ * t), s = std::sin(omega_ * t);
     const double dt = d_ * t;
@@ -50,24 +49,37 @@ DecaySineIntegrals::Point DecaySineIntegrals::pointAt(double t) const {
         pt.p1 = pt.ep * inv_p_ - pt.eq * inv_q_;
         pt.p2 = pt.ep * inv_p_ * inv_p_ - pt.eq * inv_q_ * inv_q_;
     }
-    return pt;
 }
 
 // Slips integrate from one origin t0 through many Newton iterations: remember the last one per
-// thread. The key holds every input, so objects can never see each other's values.
-const DecaySineIntegrals::Point& DecaySineIntegrals::origin(double t0) const {
-    struct Memo {
-        double p = -1, q = -1, omega = -1;
-        Point point;
-    };
+// thread. A slip's next origin is where the last piece ended (a segment end, a stop, a collapse),
+// whose exponentials the long-span integral to it has just formed: remember that end as well,
+// and take it as the origin when the times agree to the bit (the same point, the same bits).
+// The key holds every input, so objects can never see each other's values.
+DecaySineIntegrals::Memo& DecaySineIntegrals::memo() const {
     thread_local Memo memo;
-    if (memo.point.t != t0 || memo.p != p_ || memo.q != q_ || memo.omega != omega_) {
-        memo.point = pointAt(t0);
+    if (memo.p != p_ || memo.q != q_ || memo.omega != omega_) {
+        memo = Memo{};
         memo.p = p_;
         memo.q = q_;
         memo.omega = omega_;
     }
-    return memo.point;
+    return memo;
+}
+
+const DecaySineIntegrals::Point& DecaySineIntegrals::origin(Memo& m, double t0) const {
+    if (m.origin.t != t0) {
+        if (m.end.t == t0)
+            m.origin = m.end;
+        else
+            pointAt(t0, m.origin);
+    }
+    return m.origin;
+}
+
+const DecaySineIntegrals::Point& DecaySineIntegrals::endAt(Memo& m, double t) const {
+    pointAt(t, m.end);
+    return m.end;
 }
 
 // int_0^h (h - u)^(k-1)/(k-1)! exp(z (t0 + u)) du = exp(z t0) h^k phi_k(z h),
@@ -137,31 +149,34 @@ DecaySineIntegrals::Complex DecaySineIntegrals::shortSpan(const Point& o, double
 }
 
 double DecaySineIntegrals::first(double t0, double h, double* valueAtEnd) const {
-    const Point& o = origin(t0);
+    Memo& m = memo();
+    const Point& o = origin(m, t0);
     if (zqAbs_ * h <= kShortSpan) {
         Complex end;
         const double v = shortSpan(o, h, 1, valueAtEnd ? &end : nullptr).imag();
         if (valueAtEnd) *valueAtEnd = end.imag();
         return v;
     }
-    const Point p = pointAt(t0 + h);
+    const Point& p = endAt(m, t0 + h);
     if (valueAtEnd) *valueAtEnd = (p.near ? p.eq * p.em1 : p.ep - p.eq).imag();
     return (p.p1 - o.p1).imag();
 }
 
 double DecaySineIntegrals::second(double t0, double h) const {
-    const Point& o = origin(t0);
+    Memo& m = memo();
+    const Point& o = origin(m, t0);
     if (zqAbs_ * h <= kShortSpan) return shortSpan(o, h, 2).imag();
-    return (pointAt(t0 + h).p2 - o.p2 - o.p1 * h).imag();
+    return (endAt(m, t0 + h).p2 - o.p2 - o.p1 * h).imag();
 }
 
 double DecaySineIntegrals::both(double t0, double h, double& secondOut) const {
-    const Point& o = origin(t0);
+    Memo& m = memo();
+    const Point& o = origin(m, t0);
     if (zqAbs_ * h <= kShortSpan) {
         secondOut = shortSpan(o, h, 2).imag();
         return shortSpan(o, h, 1).imag();
     }
-    const Point p = pointAt(t0 + h);
+    const Point& p = endAt(m, t0 + h);
     secondOut = (p.p2 - o.p2 - o.p1 * h).imag();
     return (p.p1 - o.p1).imag();
 }

@@ -34,8 +34,15 @@ private:
         Complex eq, ep;   // exp(z_q t); exp(z_p t) when not near
         Complex p1, p2;   // primitives of exp(z_p s) - exp(z_q s): exp(z s)/z, exp(z s)/z^2
     };
-    Point pointAt(double t) const;
-    const Point& origin(double t0) const;
+    void pointAt(double t, Point& out) const;
+    // The last origin and the last long span's end, per thread (see origin()).
+    struct Memo {
+        double p = -1, q = -1, omega = -1;
+        Point origin, end;
+    };
+    Memo& memo() const;
+    const Point& origin(Memo& m, double t0) const;
+    const Point& endAt(Memo& m, double t) const; // pointAt(t), kept as a possible next origin
     // Increment over a short span from o.t: k = 1 gives first(), k = 2 second(); for k = 1
     // and end != nullptr also exp(z_p (t0+h)) - exp(z_q (t0+h)).
     Complex shortSpan(const Point& o, double h, int k, Complex* end = nullptr) const;

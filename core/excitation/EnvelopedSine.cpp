@@ -26,6 +26,11 @@ EnvelopedSine::EnvelopedSine(const Envelope& env, double amplitude, double frequ
     scale_ = amplitude_ / sMax_;
 }
 
+long& EnvelopedSine::evaluationCount() {
+    thread_local long count = 0;
+    return count;
+}
+
 double EnvelopedSine::envelopeAt(double tau) const {
     return std::exp(-p_ * tau) * -std::expm1(-(q_ - p_) * tau);
 }
@@ -116,6 +121,7 @@ double EnvelopedSine::halfPeriodPeak(long k) const {
     const double hi = lo + halfPeriod_;
     // d/dtau log|e sin| = e'/e + omega cot(omega tau): strictly decreasing from +inf to -inf.
     auto fdf = [&](double t, double& f, double& df) {
+        ++evaluationCount();
         double r1 = 0.0, r2 = 0.0;
         logSlopes(t, r1, r2);
         const double s = std::sin(omega_ * t), c = std::cos(omega_ * t);
@@ -130,6 +136,7 @@ double EnvelopedSine::halfPeriodPeak(long k) const {
 // cot(omega (tau - lo)) = -lambda/omega: within ~1e-3 of the true one.
 double EnvelopedSine::peakGuess(long k) const {
     const double lo = static_cast<double>(k) * halfPeriod_;
+    ++evaluationCount();
     double lambda = 0.0, r2 = 0.0;
     logSlopes(lo + 0.5 * halfPeriod_, lambda, r2);
     return lo + (0.5 * std::numbers::pi + std::atan(lambda / omega_)) / omega_;
@@ -161,6 +168,7 @@ std::optional<EnvelopedSine::Hump> EnvelopedSine::findHumpAbove(long k, double t
     Hump h{k, k % 2 == 0 ? 1.0 : -1.0, peakGuess(k), 0.0, 0.0};
     for (int attempt = 0; attempt < 2; ++attempt) {
         if (attempt == 1) h.m = halfPeriodPeak(k);
+        ++evaluationCount();
         h.envelope = envelopeAt(h.m);
         h.peakValue = scale_ * h.envelope * std::abs(std::sin(omega_ * h.m));
         if (h.peakValue > target) return h;
@@ -170,6 +178,7 @@ std::optional<EnvelopedSine::Hump> EnvelopedSine::findHumpAbove(long k, double t
 
 double EnvelopedSine::humpRoot(const Hump& h, double target, bool rising) const {
     auto fdf = [&](double t, double& f, double& df) {
+        ++evaluationCount();
         accelAndSlope(t, f, df);
         f = h.sign * f - target;
         df = h.sign * df;
@@ -208,15 +217,27 @@ double EnvelopedSine::humpCrossing(double level, double lo, double hi, bool risi
     return t > lo && t < hi ? t : none;
 }
 
+// A solver asks boundAfter(t) and boundOn(t, ...) of the same segment start, and the hump search
+// asks boundOn of its half-period again: remember the last envelope value per thread. The key
+// holds every input, so objects can never see each other's values.
+double EnvelopedSine::boundEnvelopeAt(double tau) const {
+    struct Memo {
+        double p = -1, q = -1, tau = std::numeric_limits<double>::quiet_NaN(), e = 0;
+    };
+    thread_local Memo memo;
+    if (memo.tau != tau || memo.p != p_ || memo.q != q_) memo = {p_, q_, tau, envelopeAt(tau)};
+    return memo.e;
+}
+
 double EnvelopedSine::boundAfter(double tau) const {
     if (!std::isfinite(tauEnvelopePeak_)) return scale_; // e rises to 1 and stays
-    return scale_ * envelopeAt(std::max(tau, tauEnvelopePeak_));
+    return scale_ * boundEnvelopeAt(std::max(tau, tauEnvelopePeak_));
 }
 
 double EnvelopedSine::boundOn(double lo, double hi) const {
-    if (hi < tauEnvelopePeak_) return scale_ * envelopeAt(hi);
-    if (lo > tauEnvelopePeak_) return scale_ * envelopeAt(lo);
-    return scale_ * envelopeAt(tauEnvelopePeak_);
+    if (hi < tauEnvelopePeak_) return scale_ * boundEnvelopeAt(hi);
+    if (lo > tauEnvelopePeak_) return scale_ * boundEnvelopeAt(lo);
+    return scale_ * boundEnvelopeAt(tauEnvelopePeak_);
 }
 
 double EnvelopedSine::computeSMax() const {

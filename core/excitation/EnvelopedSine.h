@@ -16,10 +16,6 @@
 
 namespace kinstab {
 
-struct SineCounters {
-    long evaluations = 0;
-};
-
 class EnvelopedSine final : public Excitation1D {
 public:
     EnvelopedSine(const Envelope& envelope, double amplitude, double frequencyHz, double tstar);
@@ -37,6 +33,9 @@ public:
     int humpSign(double lo, double hi) const override;
     double humpCrossing(double level, double lo, double hi, bool rising) const override;
     double peak() const override { return amplitude_; }
+    // The closed-form evaluations of a, a' or e'/e made by crossings() and humpCrossing() on
+    // this thread (every Newton iteration of their root solves and of the peak search).
+    long threadEvaluations() const override { return evaluationCount(); }
 
     double omega() const { return omega_; }
     double decayP() const { return p_; } // alpha t*
@@ -54,7 +53,9 @@ public:
     double peakGuess(long k) const;
 
 private:
+    static long& evaluationCount(); // per thread, as the memos below
     void envelopeAndSlope(double tau, double& e, double& de) const;
+    double boundEnvelopeAt(double tau) const; // envelopeAt, remembered for the bounds
     void logSlopes(double tau, double& r1, double& r2) const; // e'/e and e''/e
     void accelAndSlope(double tau, double& a, double& da) const;
     double computeSMax() const;

@@ -10,6 +10,14 @@
 
 namespace kinstab {
 
+// a(tau) = a0 + slope (tau - t0) on a stretch of time where the motion is one linear piece,
+// written with the arithmetic accel() uses there, so that a caller evaluating it gets the same
+// bits as accel() and accelSlope() without finding the piece again.
+struct LinearPiece {
+    double a0 = 0, t0 = 0, slope = 0;
+    double accel(double tau) const { return a0 + slope * (tau - t0); }
+};
+
 // Times where a(tau) crosses a level inside one segment, increasing.
 struct Crossings {
     std::array<double, 4> t{};
@@ -56,6 +64,16 @@ public:
     virtual double humpCrossing(double level, double lo, double hi, bool rising) const;
     // Largest |a| anywhere.
     virtual double peak() const = 0;
+    // Evaluations of a or its integrals that this excitation made on the calling thread so far
+    // for its own root solves (crossings, hump peaks): a solver adds the change over its run to
+    // the evaluations it counts itself, so that its work counter misses none (issue 34).
+    virtual long threadEvaluations() const { return 0; }
+    // True, with the piece, when a is one linear piece for every tau in [lo, hi) and accel()
+    // there computes piece.accel(tau), accelSlope() piece.slope (a recorded motion inside one
+    // sample interval); false when not, or not known.
+    virtual bool linearOn(double /*lo*/, double /*hi*/, LinearPiece& /*piece*/) const {
+        return false;
+    }
 };
 
 inline double Excitation1D::humpCrossing(double level, double lo, double hi, bool rising) const {

@@ -72,6 +72,28 @@ RecordedMotion::RecordedMotion(std::shared_ptr<const RecordSamples> samples,
     }
     // max_k |a_k s| = s max_k |a_k| exactly (rounding is monotone and symmetric), so the bounds
     // and the peak come from the shared suffix maxima times the scale.
+    if (std::vector<Piece>* buffer = spare()) pieces_.swap(*buffer);
+}
+
+RecordedMotion::~RecordedMotion() {
+    std::vector<Piece>* buffer = spare();
+    if (buffer && pieces_.capacity() > buffer->capacity()) buffer->swap(pieces_);
+}
+
+namespace {
+// Set once the thread's spare is destroyed: a trivially destructible flag stays readable after
+// the thread's other objects are gone (a view destroyed later must not touch the spare).
+thread_local bool spareClosed = false;
+} // namespace
+
+std::vector<RecordedMotion::Piece>* RecordedMotion::spare() {
+    struct Spare {
+        std::vector<Piece> buffer;
+        ~Spare() { spareClosed = true; }
+    };
+    if (spareClosed) return nullptr;
+    thread_local Spare s;
+    return &s.buffer;
 }
 
 // The same expressions, in the same order, as the motion formed all at once: a_k s, then the
@@ -80,16 +102,20 @@ void RecordedMotion::extendTo(std::size_t count) const {
     const std::size_t n = samples_->size();
     count = std::min(count, n);
     if (count <= built_) return;
-    if (pieces_.empty()) pieces_.resize(n);
+    if (pieces_.size() != n) pieces_.resize(n); // a spare buffer holds another run's pieces
     for (std::size_t k = built_; k < count; ++k) {
         Piece& p = pieces_[k];
         p.a = samples_->raw(k) * scale_;
-        if (k == 0) continue;
+        if (k == 0) {
+            p.v = p.d = p.slope = 0.0;
+            continue;
+        }
         Piece& q = pieces_[k - 1];
         p.v = q.v + h_ * (q.a + p.a) / 2.0;
         p.d = q.d + q.v * h_ + h_ * h_ * (2.0 * q.a + p.a) / 6.0;
         q.slope = (p.a - q.a) / h_;
     }
+    if (count == n) pieces_[n - 1].slope = 0.0; // no piece after the last sample
     built_ = count;
 }
 
@@ -115,6 +141,17 @@ std::size_t RecordedMotion::interval(double tau) const {
         k = exact > 0.0 ? static_cast<std::size_t>(exact) : 0;
     }
     return std::min(k, last);
+}
+
+// Inside the record, when lo and the last double before hi fall in one interval, every tau
+// between does (interval() is floor(tau / h), monotone).
+bool RecordedMotion::linearOn(double lo, double hi, LinearPiece& out) const {
+    if (!(lo >= 0.0 && hi > lo && hi <= endTau())) return false;
+    const std::size_t k = interval(lo);
+    if (interval(std::nextafter(hi, lo)) != k) return false;
+    const Piece& p = piece(k);
+    out = {p.a, h_ * static_cast<double>(k), p.slope};
+    return true;
 }
 
 double RecordedMotion::accel(double tau) const {

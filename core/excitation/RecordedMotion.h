@@ -54,6 +54,10 @@ public:
     // its const accessors: use one view per run, never one view from two threads.
     RecordedMotion(std::shared_ptr<const RecordSamples> samples,
                    std::optional<double> targetPeak = {});
+    RecordedMotion(const RecordedMotion&) = default;
+    RecordedMotion& operator=(const RecordedMotion&) = default;
+    // Hands its pieces' buffer to the thread's spare, for the next run's view (see spare()).
+    ~RecordedMotion() override;
 
     double accel(double tau) const override;
     double accelSlope(double tau) const override;
@@ -64,6 +68,7 @@ public:
     double boundAfter(double tau) const override;
     double boundOn(double lo, double hi) const override;
     double peak() const override { return samples_->peak() * scale_; }
+    bool linearOn(double lo, double hi, LinearPiece& out) const override;
 
     double sampleStep() const { return h_; }             // dt / t*
     double endTau() const { return samples_->endTau(); } // last sample, h (samples - 1)
@@ -82,6 +87,10 @@ private:
         return pieces_[k];
     }
     void extendTo(std::size_t count) const;
+    // One buffer per thread that a view takes at its start and gives back at its end, so that
+    // the runs of a critical search or a study allocate no pieces after their first (issue 34);
+    // null while the thread's spare is being destroyed at the thread's exit.
+    static std::vector<Piece>* spare();
     double slope(std::size_t k) const { return piece(k).slope; } // (a_{k+1} - a_k) / h
     double firstIntegral(double tau) const;                      // int_0^tau a
     double secondIntegral(double tau) const;                     // int_0^tau int_0^s a

@@ -11,6 +11,7 @@
 #include "core/io/JsonReader.h"
 #include "core/io/MotionJson.h"
 #include "core/io/PlanarJson.h"
+#include "core/io/ProjectLayout.h"
 #include "core/slab/SlabInputs.h"
 
 #include <cmath>
@@ -166,14 +167,43 @@ json projectToJson(const Project& p, const std::string& baseDir) {
               {"slab", slabToJson(p)},
               {"grid", {{"amplitudes", p.grid.amplitudes}, {"frequencies", p.grid.frequencies}}},
               {"model", modelKindName(p.model)},
-              {"planar", planarSettingsToJson(p.planar, baseDir)},
-              {"check", checkToJson(p.critical)},
-              {"excitation", excitationToJson(p.record, baseDir)},
-              {"floors", p.floors ? floorSettingsToJson(*p.floors) : json()}};
+              {"check", checkToJson(p.critical)}};
+    // Blocks for what the project does not use are left out: a 1-DOF project has no planar
+    // block (unless it keeps planar inputs of its own), a sine project no excitation block.
+    if (p.model == ModelKind::Planar || p.planar != PlanarSettings{})
+        j["planar"] = planarSettingsToJson(p.planar, baseDir);
+    if (p.record) j["excitation"] = excitationToJson(p.record, baseDir);
+    if (p.floors) j["floors"] = floorSettingsToJson(*p.floors);
+    if (p.units) j["units"] = unitSystemName(*p.units);
     if (!p.info.empty()) j["info"] = projectInfoToJson(p.info);      // older files have none
     if (p.study) j["study"] = studyToJson(*p.study, baseDir);        // nor a study
     if (!p.blocks.empty()) j["blocks"] = freeBlocksToJson(p.blocks); // nor blocks
     return j;
+}
+
+namespace {
+// The order a new file is written in (a file that was read keeps its own).
+const nlohmann::ordered_json& newFileOrder() {
+    static const nlohmann::ordered_json order = nlohmann::ordered_json::parse(R"({
+      "format": 0, "version": 0, "name": 0, "description": 0, "info": 0,
+      "building": {"name": 0, "stories": 0, "unit": 0, "height": 0, "plan_dimension": 0,
+                   "period_s": 0, "system": 0, "occupancy": 0},
+      "codes": {"ubc1976": 0, "atc306": 0, "asce7_22": 0, "ec8": 0},
+      "slab": {"envelope": 0, "tstar": 0, "wall_width_in": 0, "mu": 0, "limit": 0},
+      "grid": {"amplitudes": 0, "frequencies": 0},
+      "model": 0, "check": {"from": 0, "max_amplitude": 0}, "units": 0, "planar": 0,
+      "excitation": 0, "floors": 0, "study": 0, "blocks": 0})");
+    return order;
+}
+} // namespace
+
+std::string projectText(const Project& p, const std::string& baseDir) {
+    return arrangeLike(projectToJson(p, baseDir), p.layout, newFileOrder()).dump(2) + "\n";
+}
+
+UnitSystem projectUnits(const Project& p) {
+    if (p.units) return *p.units;
+    return p.building.unit == LengthUnit::Feet ? UnitSystem::US : UnitSystem::SI;
 }
 
 Project projectFromJson(const json& j, const std::string& baseDir) {
@@ -202,6 +232,10 @@ Project projectFromJson(const json& j, const std::string& baseDir) {
         p.record = excitationFromJson(r, baseDir);
         if (auto f = r.optionalObject("floors")) p.floors = floorSettingsFromJson(*f);
         p.study = studyFromJson(r, baseDir);
+        if (const auto u = r.optionalText("units")) {
+            p.units = unitSystemFromName(*u);
+            if (!p.units) r.fail("units", quotedToken(*u) + " must be si or us");
+        }
         if (r.has("blocks")) p.blocks = freeBlocksFromJson(r);
         if (const std::string e = validateProject(p); !e.empty()) throw ProjectError(e);
         if (p.record) checkRecordFile(*p.record);
@@ -223,7 +257,10 @@ Project parseProject(const std::string& text, const std::string& baseDir) {
     } catch (const JsonFieldError& e) {
         throw ProjectError(e.what());
     }
-    return projectFromJson(j, baseDir);
+    Project p = projectFromJson(j, baseDir);
+    // The same text in its own order (the checks above passed: size, depth, numbers).
+    p.layout = nlohmann::ordered_json::parse(text);
+    return p;
 }
 
 namespace {
@@ -245,7 +282,7 @@ Project loadProject(const std::string& path) {
 void saveProject(const Project& p, const std::string& path) {
     if (const std::string e = validateProject(p); !e.empty()) throw ProjectError("not saved: " + e);
     try {
-        writeFileAtomically(path, projectToJson(p, directoryOf(path)).dump(2) + "\n");
+        writeFileAtomically(path, projectText(p, directoryOf(path)));
     } catch (const FileError& e) {
         throw ProjectError(e.what());
     }

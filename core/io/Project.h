@@ -7,6 +7,7 @@
 // ProjectError, never a crash. Saving is atomic (temporary file renamed into place).
 
 #include "core/base/ModelKind.h"
+#include "core/base/UnitSystem.h"
 #include "core/building/FloorSettings.h"
 #include "core/codes/Building.h"
 #include "core/codes/CodeSet.h"
@@ -49,8 +50,16 @@ struct Project {
     std::optional<RecordExcitation> record; // a record drives the slab; none: the enveloped sine
     std::optional<FloorSettings> floors;    // the floor-motion check; present: the report shows it
     std::optional<ProjectStudy> study;      // a record-suite study; present: the report shows it
+    // The unit system lengths are shown and reported in ("units"); none: the building's (ft: US).
+    std::optional<UnitSystem> units;
+    // How the file was written, so a save changes only what changed (core/io/ProjectLayout.h):
+    // its key order and the grid as typed ("0.70:1.15:0.05"). Empty for a new project.
+    nlohmann::ordered_json layout;
     std::vector<FreeBlock> blocks; // free-standing blocks on levels, each a check (with a record)
 };
+
+// The project's unit system: as it names it, else US for a building in ft and SI for one in m.
+UnitSystem projectUnits(const Project& p);
 
 // The paper's 16-story building (chapter V) with the paper's slab, envelope and grid.
 Project paperExampleProject();
@@ -61,6 +70,9 @@ std::string validateProject(const Project& p); // empty when fine
 // against it on load ("" keeps paths as they are). A record file that cannot be read is a
 // ProjectError naming excitation.record.file and the path.
 nlohmann::json projectToJson(const Project& p, const std::string& baseDir = "");
+// The file's text: projectToJson arranged like the file it was read from (p.layout), so a
+// save changes only what changed (core/io/ProjectLayout.h); two-space indent, final newline.
+std::string projectText(const Project& p, const std::string& baseDir = "");
 // Throws ProjectError naming the field.
 Project projectFromJson(const nlohmann::json& j, const std::string& baseDir = "");
 // Throws ProjectError (also on bad JSON).

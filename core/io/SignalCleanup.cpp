@@ -6,6 +6,7 @@
 #include <cstring>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 
@@ -26,10 +27,35 @@ struct Slot {
 };
 Slot slots[kSlots];
 
+// The line the handler writes, prepared at start-up: nothing is formatted in the handler.
+char stopName[256] = {};
+std::size_t stopNameLength = 0;
+bool stderrIsTerminal = false;
+
+void writeAll(const char* text, std::size_t n) {
+    while (n > 0) {
+        const ssize_t w = ::write(STDERR_FILENO, text, n);
+        if (w <= 0) return;
+        text += w;
+        n -= static_cast<std::size_t>(w);
+    }
+}
+
+void sayStopped(int signal) {
+    if (stopNameLength == 0 || signal == SIGHUP) return;
+    if (stderrIsTerminal) writeAll("\r\033[K", 4); // over the progress line, if any
+    writeAll(stopName, stopNameLength);
+    if (signal == SIGINT)
+        writeAll(": interrupted (SIGINT)\n", 23);
+    else
+        writeAll(": stopped (SIGTERM)\n", 20);
+}
+
 extern "C" void removeAndStop(int signal) {
     const int saved = errno;
     for (Slot& s : slots)
         if (s.state.load(std::memory_order_acquire) == kArmed) ::unlink(s.path);
+    sayStopped(signal);
     // SA_RESETHAND restored the default action: the signal, pending until this handler returns,
     // then ends the process as it would have without the handler (exit status 128 + signal).
     ::raise(signal);
@@ -38,7 +64,12 @@ extern "C" void removeAndStop(int signal) {
 
 } // namespace
 
-void removeTemporariesOnSignals() {
+void removeTemporariesOnSignals(const char* name) {
+    if (name) {
+        stopNameLength = std::min(std::strlen(name), sizeof stopName - 1);
+        std::memcpy(stopName, name, stopNameLength);
+        stderrIsTerminal = ::isatty(STDERR_FILENO) == 1;
+    }
     struct sigaction action {};
     action.sa_handler = removeAndStop;
     sigemptyset(&action.sa_mask);

@@ -14,8 +14,10 @@
 
 namespace kinstab {
 
-// Installs the handler for SIGINT, SIGTERM and SIGHUP (once, at start-up).
-void removeTemporariesOnSignals();
+// Installs the handler for SIGINT, SIGTERM and SIGHUP (once, at start-up). With a name, SIGINT
+// and SIGTERM also print one line on stderr ("kinstab-cli surface: interrupted (SIGINT)"), after
+// clearing a progress line when stderr is a terminal; SIGHUP prints nothing (no terminal left).
+void removeTemporariesOnSignals(const char* name = nullptr);
 
 // A path armed for removal while this object lives (or until disarm()). Up to 16 at a time;
 // beyond that, or for a path longer than PATH_MAX, nothing is armed (the file is still removed

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
 namespace kinstab {
 
@@ -23,10 +24,18 @@ public:
     ExactRun(const Excitation1D& a, const SlabParams& p, const RunOptions& o)
         : a_(a), p_(p), o_(o) {}
 
-    SlabResult run();
+    // The run, with the evaluations the excitation made for its own root solves (the |a| = mu
+    // crossings) added to the work counter: every closed-form evaluation is counted.
+    SlabResult run() {
+        const long before = a_.threadEvaluations();
+        runEvents();
+        r_.work.accelEvaluations += a_.threadEvaluations() - before;
+        return std::move(r_);
+    }
 
 private:
     enum class Step { Continue, Done };
+    void runEvents();
 
     // Slip state relative to (t_, x_, v_) with slip sign s_.
     // With accelAtTau, also a(tau), from the same closed-form evaluation.
@@ -146,12 +155,12 @@ private:
     int s_ = 0; // 0 sticking, +1/-1 slipping with that sign of relative velocity
 };
 
-SlabResult ExactRun::run() {
+void ExactRun::runEvents() {
     const double end = p_.duration.value_or(std::numeric_limits<double>::infinity());
     if (!p_.duration && a_.boundAfter(std::numeric_limits<double>::infinity()) >= p_.mu) {
         r_.failure = "the excitation never decays below mu: set a duration (tau_out)";
         finish(Outcome::Failed);
-        return r_;
+        return;
     }
     double segStart = 0.0;
     while (true) {
@@ -159,7 +168,7 @@ SlabResult ExactRun::run() {
             t_ = std::max(t_, segStart);
             event(EventKind::Stable, 0);
             finish(Outcome::Stable);
-            return r_;
+            return;
         }
         if (segStart >= end) {
             // The run ends at the cap, sticking or slipping.
@@ -169,7 +178,7 @@ SlabResult ExactRun::run() {
                 t_ = end;
             event(EventKind::DurationCap, s_);
             finish(Outcome::Stable);
-            return r_;
+            return;
         }
         const double segEnd = std::min(a_.segmentEnd(segStart), end);
         if (!(segEnd > segStart) || ++r_.work.steps > kMaxSegments) {
@@ -181,9 +190,9 @@ SlabResult ExactRun::run() {
                              : "more than " + std::to_string(kMaxSegments) +
                                    " segments (half-periods) before the excitation decays below "
                                    "mu: set a shorter duration";
-            return r_;
+            return;
         }
-        if (segment(segStart, segEnd) == Step::Done) return r_;
+        if (segment(segStart, segEnd) == Step::Done) return;
         segStart = segEnd;
     }
 }

@@ -59,8 +59,8 @@ SlabModel2D planarModel(const PlanarCase& c, double ax, double fxHz) {
     return SlabModel2D(std::move(x), std::move(y), c.vertical, c.slab);
 }
 
-PlanarResult runPlanar(const PlanarCase& c, double ax, double fxHz) {
-    return solvePlanar(planarModel(c, ax, fxHz), c.solver);
+PlanarResult runPlanar(const PlanarCase& c, double ax, double fxHz, PlanarRecorder* recorder) {
+    return solvePlanar(planarModel(c, ax, fxHz), c.solver, recorder);
 }
 
 PointFunction planarPoint(const PlanarCase& c) {

@@ -47,7 +47,9 @@ PlanarCase planarCaseSharing(const Slab1DCase& common);
 
 // The model of one grid point, sharing the case's vertical motion.
 SlabModel2D planarModel(const PlanarCase& c, double ax, double fxHz);
-PlanarResult runPlanar(const PlanarCase& c, double ax, double fxHz);
+// recorder: what is kept beyond the result (core/slab/PlanarRecorder.h); null: nothing.
+PlanarResult runPlanar(const PlanarCase& c, double ax, double fxHz,
+                       PlanarRecorder* recorder = nullptr);
 PointFunction planarPoint(const PlanarCase& c);
 // Below this A_x nothing can slip: |a_h| <= A_x sqrt(1 + ratio^2) < mu min n (each component
 // peaks at most at its amplitude). Where a critical-amplitude scan may start.

@@ -15,33 +15,19 @@
 //    the last instants, F7).
 //  - Collapse across (|dx| > limit) or along (|dy| > theta) the walls is located by safeguarded
 //    Newton on re-taken steps.
+// Each event is a row of one table located the same way (core/slab/PlanarEvents.h); the code is
+// split by concern as core/slab/PlanarRun.h lists.
 
+#include "core/slab/PlanarRecorder.h"
 #include "core/slab/SlabModel2D.h"
 
 #include <limits>
-#include <vector>
 
 namespace kinstab {
-
-struct PlanarEvent {
-    double tau = 0;
-    EventKind kind = EventKind::SlipOnset;
-    double dx = 0, dy = 0; // relative displacement
-    double ux = 0, uy = 0; // relative velocity just after the event
-};
-
-// A point of the computed path: every accepted step and every event (only when asked).
-struct PlanarSample {
-    double tau = 0;
-    double dx = 0, dy = 0, ux = 0, uy = 0;
-    bool slipping = false;
-};
 
 struct PlanarOptions {
     double relTol = 1e-10;
     double absTol = 1e-12;
-    bool recordEvents = false;
-    bool recordPath = false;
     long maxEvents = 2'000'000; // chattering guard
     long maxSteps = 20'000'000;
 };
@@ -53,10 +39,10 @@ struct PlanarResult {
     double tauLiftOff = std::numeric_limits<double>::quiet_NaN();
     double maxAbsDeltaY = 0;
     double residualDeltaY = 0;
-    std::vector<PlanarEvent> events;
-    std::vector<PlanarSample> path;
 };
 
-PlanarResult solvePlanar(const SlabModel2D& model, const PlanarOptions& options = {});
+// recorder: what is kept beyond the result (core/slab/PlanarRecorder.h); null: nothing.
+PlanarResult solvePlanar(const SlabModel2D& model, const PlanarOptions& options = {},
+                         PlanarRecorder* recorder = nullptr);
 
 } // namespace kinstab

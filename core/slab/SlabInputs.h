@@ -26,6 +26,9 @@ inline constexpr NumberInput kLimitInput{
 // sheet, a thousand inches (25 m) no wall. No default: t* has one.
 inline constexpr NumberInput kWallWidthInput{
     "wall_width_in", "in", {0.01, limits::kMaxWallWidthIn}, 8.0, "wall width"};
+// The same wall in millimetres (the command line's --wall-width-mm): 0.254 mm to 25.4 m.
+inline constexpr NumberInput kWallWidthMmInput{
+    "wall_width_mm", "mm", {0.254, limits::kMaxWallWidthIn * 25.4}, 203.2, "wall width"};
 // τ_out, the end of the run in units of t*: a million is a day at the paper's t*.
 inline constexpr NumberInput kDurationInput{
     "duration", "", {0.0, 1e6, true}, 0.0, "run length tau_out"};

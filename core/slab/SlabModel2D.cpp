@@ -54,10 +54,27 @@ Vec2 SlabModel2D::accelSlope(double tau) const {
         const auto s = series_->slope(tau);
         return {s[0], s[1]};
     }
-    return {ax_->accelSlope(tau), ay_ ? ay_->accelSlope(tau) : 0.0};
+    return {x_.slope(*ax_, tau), ay_ ? y_.slope(*ay_, tau) : 0.0};
 }
 double SlabModel2D::normalSlope(double tau) const {
+    if (z_.covers(tau)) return z_.piece.slope;
     return az_ ? az_->accelSlope(tau) : 0.0;
+}
+
+void SlabModel2D::WindowPiece::enter(const Excitation1D* a, double l, double h) {
+    lo = hi = 0.0;
+    if (a && a->linearOn(l, h, piece)) {
+        lo = l;
+        hi = h;
+    }
+}
+
+void SlabModel2D::enterWindow(double lo, double hi) const {
+    if (!series_) {
+        x_.enter(ax_.get(), lo, hi);
+        y_.enter(ay_.get(), lo, hi);
+    }
+    z_.enter(az_.get(), lo, hi);
 }
 
 double SlabModel2D::onsetMargin(double tau) const {

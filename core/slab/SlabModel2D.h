@@ -48,14 +48,26 @@ public:
             const auto a = series_->accel(tau);
             return {a[0], a[1]};
         }
-        return {ax_->accel(tau), ay_ ? ay_->accel(tau) : 0.0};
+        return {x_.accel(*ax_, tau), ay_ ? y_.accel(*ay_, tau) : 0.0};
     }
-    Vec2 accelSlope(double tau) const;                                              // a_h'
-    double normal(double tau) const { return 1.0 + (az_ ? az_->accel(tau) : 0.0); } // n = 1 + a_z
+    Vec2 accelSlope(double tau) const; // a_h'
+    double normal(double tau) const {  // n = 1 + a_z
+        if (z_.covers(tau)) return 1.0 + z_.piece.accel(tau);
+        return 1.0 + (az_ ? az_->accel(tau) : 0.0);
+    }
     double normalSlope(double tau) const;
+    // The solver works in [lo, hi) next (a window of the time line, inside one segment of each
+    // component): a component that is one linear piece there (a record inside one sample
+    // interval) is evaluated from that piece, without finding its sample interval at every call
+    // (issue 34: the lookup was a tenth of a run with a vertical record). The same bits as
+    // without: outside [lo, hi) and where a piece is not known, the components themselves.
+    void enterWindow(double lo, double hi) const;
     // g_on = |a_h| - mu n: the slab slips where it is positive (a time-only event).
     double onsetMargin(double tau) const;
     double onsetMarginSlope(double tau) const;
+    // g_lift = -n: the slab leaves its support where it is positive (a time-only event).
+    double liftMargin(double tau) const { return -normal(tau); }
+    double liftMarginSlope(double tau) const { return -normalSlope(tau); }
     // True when nothing can start any more after tau: the root-sum-square of both components'
     // bounds is below mu times the least n can be (docs/theory.md §5, "End").
     bool quietAfter(double tau) const;
@@ -75,7 +87,22 @@ public:
     bool hasAlongWalls() const { return ay_ != nullptr; }
 
 private:
+    // A component's linear piece on the current window [lo, hi), when it has one.
+    struct WindowPiece {
+        double lo = 0, hi = 0; // empty: covers nothing
+        LinearPiece piece;
+        bool covers(double tau) const { return tau >= lo && tau < hi; }
+        double accel(const Excitation1D& a, double tau) const {
+            return covers(tau) ? piece.accel(tau) : a.accel(tau);
+        }
+        double slope(const Excitation1D& a, double tau) const {
+            return covers(tau) ? piece.slope : a.accelSlope(tau);
+        }
+        void enter(const Excitation1D* a, double l, double h);
+    };
     std::shared_ptr<const Excitation1D> ax_, ay_, az_;
+    // Filled by enterWindow; a model is used by one thread at a time (each point builds its own).
+    mutable WindowPiece x_, y_, z_;
     // Both horizontal components enveloped sines under one envelope (the planar case of
     // ch. VI): accel() and accelSlope() sum local Taylor series, a few times cheaper than the
     // closed forms (four transcendental functions) that took half of the solver's time. It

@@ -14,7 +14,7 @@ namespace kinstab {
 
 struct ModelPoint {
     PointFunction point;
-    double scanFrom = 0; // the `mu` argument of criticalAmplitude
+    double scanFrom = 0; // criticalAmplitude's scanFrom: below it nothing slips
     double tauRef = 1;   // γc = tauRef / tau_c
 };
 

@@ -46,6 +46,19 @@ SurfaceBenchmark benchmarkSurface(const Slab1DCase& c, const SweepGrid& grid, in
             ++b.outcomeDisagreements;
         if (exactResult.points[k].outcome == Outcome::Collapsed) ++b.exactCollapsed;
     }
+    // The solver's work, counted once outside the timed runs.
+    std::atomic<long> events = 0, evaluations = 0;
+    runSweep(
+        grid,
+        [&](double a, double f) {
+            const SlabResult r = runSlab1D(exact, a, f, RunOptions{});
+            events += r.work.events;
+            evaluations += r.work.accelEvaluations;
+            return PointResult{r.outcome, r.tauC, ExitSide::None};
+        },
+        nullptr, b.threads);
+    b.exactEvents = events;
+    b.exactEvaluations = evaluations;
     return b;
 }
 

@@ -20,6 +20,9 @@ struct SurfaceBenchmark {
     double ratioCpu = 0;    // the same for CPU time
     std::size_t outcomeDisagreements = 0;
     std::size_t exactCollapsed = 0;
+    // The exact solver's work over the surface (one pass, outside the timings): its events and
+    // its closed-form evaluations, every root solve's included (issue 34).
+    long exactEvents = 0, exactEvaluations = 0;
 };
 
 // The 257 x 257 moderate surface of the speed target: A = 0.5..1.5 g by 1/256,

@@ -147,9 +147,8 @@ void bindRunResults(py::module_& m) {
         .def_property_readonly("residual_delta_y",
                                [](const PlanarRun& r) { return r.result.residualDeltaY; })
         .def_property_readonly(
-            "events", [](const PlanarRun& r) { return planarEventArrays(r.result.events); })
-        .def_property_readonly("path",
-                               [](const PlanarRun& r) { return pathArrays(r.result.path); });
+            "events", [](const PlanarRun& r) { return planarEventArrays(r.events.events); })
+        .def_property_readonly("path", [](const PlanarRun& r) { return pathArrays(r.path.path); });
 }
 
 } // namespace kinstab::python

@@ -23,6 +23,8 @@ struct SlabRun {
 
 struct PlanarRun {
     PlanarResult result;
+    PlanarEventLog events; // when asked for
+    PlanarPathLog path;    // when asked for
     double tauRef = 1;
     double amplitude = 0;
     double frequency = 0;

@@ -64,12 +64,10 @@ PlanarRun simulatePlanar(const PlanarCase& c, Real amplitude, Real frequency, bo
     run.tauRef = c.tauRef();
     run.amplitude = amplitude;
     run.frequency = frequency;
-    PlanarOptions options = c.solver;
-    options.recordEvents = events;
-    options.recordPath = path;
+    PlanarRecorderPair recorder(events ? &run.events : nullptr, path ? &run.path : nullptr);
     py::gil_scoped_release unlocked;
     const SlabModel2D model = planarModel(c, amplitude, frequency);
-    run.result = solvePlanar(model, options);
+    run.result = solvePlanar(model, c.solver, &recorder);
     return run;
 }
 

@@ -75,7 +75,8 @@ private slots:
     // The building and slab inputs of resources/examples/paper-16-story.json, with units.
     void containsInputs() {
         const QString text = pdfText(a4_);
-        for (const char* s : {"177.00", "78.62", "dual system", "0.600", "0.0990", "moderate",
+        // h_n in the project's ft, to 0.01 ft without trailing zeros (core/base/UnitSystem.h).
+        for (const char* s : {"177 ft", "78.62", "dual system", "0.600", "0.0990", "moderate",
                               "SHA-256", "kinstab " KINSTAB_VERSION})
             QVERIFY2(text.contains(QString::fromUtf8(s)), s);
         QVERIFY(QRegularExpression("stories\\s+n\\s+16").match(text).hasMatch());

@@ -36,7 +36,9 @@ std::vector<SlabEvent> solverEvents(const TeachingParams& p) {
         return runSlab1D(p.toCase(), p.amplitude, p.frequencyHz, RunOptions{.recordEvents = true})
             .events;
     std::vector<SlabEvent> ev;
-    for (const PlanarEvent& e : runPlanar(p.toPlanarCase(), p.amplitude, p.frequencyHz).events)
+    PlanarEventLog log;
+    runPlanar(p.toPlanarCase(), p.amplitude, p.frequencyHz, &log);
+    for (const PlanarEvent& e : log.events)
         ev.push_back({e.tau, e.kind, e.dx, e.ux, 0});
     return ev;
 }

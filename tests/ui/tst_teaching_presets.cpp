@@ -77,9 +77,11 @@ private slots:
         QCOMPARE(view.mapRange(), kPlanarRange); // ch. VI: A_x 0.5..1.15, f_x 0.5..2.0
         QCOMPARE(view.parameterPanel()->params(), p);
         // The run shown is the planar solver's (independent call).
-        const PlanarResult direct = runPlanar(p.toPlanarCase(), p.amplitude, p.frequencyHz);
+        PlanarEventLog directEvents;
+        const PlanarResult direct =
+            runPlanar(p.toPlanarCase(), p.amplitude, p.frequencyHz, &directEvents);
         QCOMPARE(view.run().result().outcome, direct.slab.outcome);
-        QCOMPARE(view.run().events().size(), direct.events.size());
+        QCOMPARE(view.run().events().size(), directEvents.events.size());
         QCOMPARE(view.run().exitSide(), direct.exitSide);
     }
 

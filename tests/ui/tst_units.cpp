@@ -2,10 +2,14 @@
 // One unit system for the whole window (View → Units, issue #18): every length field shows SI
 // or US customary lengths, switching re-shows the same values (1 ft = 0.3048 m and
 // 1 in = 25.4 mm exactly, by the 1959 international yard and pound agreement), the choice is
-// remembered, and the project the window saves is the same byte for byte in either system.
+// remembered, and the project the window saves is the same in either system but for the
+// "units" it is now reported in (issue 35). A project opens in its own units; lengths shown
+// after a conversion are to the millimetre or 0.01 in/ft (issue 35), and the Friction tab
+// follows (kip, psi, in or kN, kPa, mm).
 
 #include "WindowFields.h"
 #include "core/io/Project.h"
+#include "ui/FrictionPanel.h"
 #include "ui/MainWindow.h"
 #include "ui/NumberField.h"
 #include "ui/Units.h"
@@ -17,6 +21,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QStandardPaths>
+#include <QTableWidget>
 #include <QtTest>
 
 using namespace kinstab;
@@ -35,8 +40,11 @@ void choose(MainWindow& w, const char* action) {
     QVERIFY(a);
     a->trigger();
 }
+// The project as saved, less the unit system it is reported in.
 std::string saved(const MainWindow& w) {
-    return projectToJson(w.project()).dump(2);
+    nlohmann::json j = projectToJson(w.project());
+    j.erase("units");
+    return j.dump(2);
 }
 } // namespace
 
@@ -67,8 +75,9 @@ private slots:
         f.lineEdit()->setText(QStringLiteral("7.625")); // the paper's 8-inch block wall
         QCOMPARE_LE(std::abs(*f.value() - 0.193675), 1e-15);
         f.setUnitSystem(UnitSystem::SI);
-        QCOMPARE(f.text(), QStringLiteral("193.675"));
+        QCOMPARE(f.text(), QStringLiteral("193.7")); // 193.675 mm to 0.1 mm
         QCOMPARE(unitLabel(&f), QStringLiteral("mm"));
+        QCOMPARE_LE(std::abs(*f.value() - 0.193675), 1e-15); // not edited: exact
     }
 
     void rangeErrorSaysTheStoredValue() {
@@ -87,22 +96,57 @@ private slots:
         NumberField* height = namedField(&w, "height");
         NumberField* width = namedField(&w, "wallWidth");
         QCOMPARE(height->text(), QStringLiteral("177")); // the paper's building, h_n in ft
-        QCOMPARE(width->text(), QStringLiteral("7.625"));
+        // The paper gives t* = 0.099 s: the greyed width is d = 2g t*² = 0.192234 m = 7.568 in,
+        // the width Teaching and the report show (it was a stale 7.625 in, 193.675 mm).
+        QCOMPARE(width->text(), QStringLiteral("7.57"));
         QCOMPARE(unitLabel(width), QStringLiteral("in"));
         const std::string us = saved(w);
         choose(w, "unitsSI");
-        QCOMPARE(height->text(), QStringLiteral("53.9496")); // 177 × 0.3048
+        QCOMPARE(height->text(), QStringLiteral("53.95")); // 177 × 0.3048 = 53.9496 m
         QCOMPARE(unitLabel(height), QStringLiteral("m"));
         QCOMPARE(unitLabel(namedField(&w, "planDimension")), QStringLiteral("m"));
-        QCOMPARE(width->text(), QStringLiteral("193.675")); // 7.625 × 25.4
+        QCOMPARE(width->text(), QStringLiteral("192.2"));
         QCOMPARE(unitLabel(width), QStringLiteral("mm"));
         QCOMPARE(saved(w), us);
+        QVERIFY(w.project().units == UnitSystem::SI); // the report prints it in SI now
         QCOMPARE(savedUnitSystem(), UnitSystem::SI);
         choose(w, "unitsUS");
         QCOMPARE(saved(w), us);
         QCOMPARE(savedUnitSystem(), UnitSystem::US);
         MainWindow next; // the next start shows the remembered system
         QCOMPARE(unitLabel(namedField(&next, "height")), QStringLiteral("ft"));
+    }
+
+    // The paper's example is in ft: it opens in US units whatever was chosen before, and the
+    // title names the file, not "untitled".
+    void projectOpensInItsOwnUnits() {
+        saveUnitSystem(UnitSystem::SI);
+        MainWindow w;
+        QCOMPARE(w.unitSystem(), UnitSystem::US);
+        QCOMPARE(namedField(&w, "height")->text(), QStringLiteral("177"));
+        QVERIFY2(w.windowTitle().contains(QStringLiteral("paper-16-story.json")),
+                 qPrintable(w.windowTitle()));
+        QVERIFY(!w.project().units); // US is its building's: nothing to add to the file
+    }
+
+    // The Friction tab: the paper's Table 1 is in kip and psi; SI shows kN and kPa.
+    void frictionFollows() {
+        MainWindow w;
+        choose(w, "unitsUS");
+        auto* table = w.frictionPanel()->findChild<QTableWidget*>(QStringLiteral("fits"));
+        QVERIFY(table && table->rowCount() > 0);
+        const double cpPsi = table->item(0, 1)->text().toDouble();
+        const double v1Kip = table->item(0, 3)->text().toDouble();
+        choose(w, "unitsSI");
+        QCOMPARE(table->horizontalHeaderItem(1)->text(), QStringLiteral("CP kPa"));
+        QCOMPARE(table->horizontalHeaderItem(3)->text(), QStringLiteral("V1 kN"));
+        // 1 psi = 6.894757 kPa, 1 kip = 4.448222 kN (NIST SP 811); shown to 1 kPa, 0.01 kN.
+        QVERIFY2(std::abs(table->item(0, 1)->text().toDouble() - cpPsi * 6.894757) <= 0.5,
+                 qPrintable(table->item(0, 1)->text() + " vs " + QString::number(cpPsi)));
+        QCOMPARE_LE(std::abs(table->item(0, 3)->text().toDouble() - v1Kip * 4.448222),
+                    0.005 * 4.448222 + 0.005);
+        w.frictionPanel()->setBearingArea(65.7); // in², shown in cm²
+        QCOMPARE_LE(std::abs(w.frictionPanel()->bearingAreaIn2() - 65.7), 1e-9);
     }
 
     // The Teaching view's wall width follows too, and its run keeps the exact width.

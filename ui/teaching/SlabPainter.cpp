@@ -99,9 +99,12 @@ void paintBaseAndRuler(QPainter& p, const Frame2D& f, const SlabScene& s) {
     const double a = s.frame.accel;
     const QPointF c = f.at(kSpan / 2, -kWallH - kBaseH / 2);
     if (std::abs(a) > 1e-3) arrow(p, c, c + QPointF(a * 1.2 * f.k, 0), QColor(0x1f, 0x3b, 0x73), 3);
-    labelBox(p, c + QPointF(0, -0.42 * f.k),
-             QStringLiteral("base acceleration a = %1 g").arg(a, 0, 'f', 2),
-             QColor(0x1f, 0x3b, 0x73));
+    // Between the walls: in a small view or at 200 % text the long form ran over the wall
+    // width's "d = …" label at the left wall.
+    QString accel = QStringLiteral("base acceleration a = %1 g").arg(a, 0, 'f', 2);
+    if (p.fontMetrics().horizontalAdvance(accel) > (kSpan - 2.6) * f.k)
+        accel = QStringLiteral("a = %1 g").arg(a, 0, 'f', 2);
+    labelBox(p, c + QPointF(0, -0.42 * f.k), accel, QColor(0x1f, 0x3b, 0x73));
     // Fixed ground: ticks every d/2 in the inertial frame, seen from the moving base.
     const double yTop = -kWallH - kBaseH - 0.12, yBot = yTop - 0.25;
     p.setPen(QPen(QColor(0x33, 0x33, 0x33), 1.2));
@@ -124,11 +127,14 @@ void paintBaseAndRuler(QPainter& p, const Frame2D& f, const SlabScene& s) {
                        QString::number(n * minor, 'g', 6));
     }
     p.setPen(QColor(0x33, 0x33, 0x33));
-    p.drawText(QRectF(f.at(left, yBot - 0.28), f.at(right, yBot - 0.6)),
-               Qt::AlignLeft | Qt::AlignVCenter,
-               QStringLiteral("fixed ground (%1) — base displacement y_b = %2")
-                   .arg(lengthSymbol(s.units, LengthScale::Detail),
-                        lengthText(s.frame.baseDisp * dMetres / 2, s.units)));
+    const QRectF ground(f.at(left, yBot - 0.28), f.at(right, yBot - 0.6));
+    const QString unit = lengthSymbol(s.units, LengthScale::Detail),
+                  yb = lengthText(s.frame.baseDisp * dMetres / 2, s.units);
+    QString groundText =
+        QStringLiteral("fixed ground (%1) — base displacement y_b = %2").arg(unit, yb);
+    if (p.fontMetrics().horizontalAdvance(groundText) > ground.width()) // was cut at the right
+        groundText = QStringLiteral("ground (%1), y_b = %2").arg(unit, yb);
+    p.drawText(ground, Qt::AlignLeft | Qt::AlignVCenter, groundText);
 }
 
 // The slab as two pieces with a break in the middle, so the shortened span is not taken as

@@ -31,9 +31,7 @@ MarkerMap computeMap(const TeachingParams& p, const MapRange& r, MapMode mode,
     m.range = r;
     m.mode = mode;
     const bool planar = p.model == TeachingModel::Planar;
-    PlanarCase pc = p.toPlanarCase();
-    pc.solver.recordEvents = pc.solver.recordPath =
-        false; // a sweep keeps tau_c only (docs/theory.md §6.6)
+    const PlanarCase pc = p.toPlanarCase(); // a sweep keeps tau_c only (docs/theory.md §6.6)
     const Slab1DCase c = p.toCase();
     m.tauRef = c.tauRef();
     SweepGrid grid;

@@ -32,8 +32,6 @@ PlanarCase TeachingParams::toPlanarCase() const {
     c.ayRatio = ayRatio;
     c.fyHz = fyHz;
     c.scale = scale;
-    c.solver.recordEvents = true;
-    c.solver.recordPath = true;
     return c;
 }
 
@@ -148,12 +146,15 @@ void TeachingRun::runPlanar(const TeachingParams& p) {
     // The product normalization (PlanarCase's default): each component peaks at its amplitude.
     accel_ = std::make_unique<EnvelopedSine>(c.envelope, p.amplitude, p.frequencyHz, c.tstar);
     accelY_ = std::make_unique<EnvelopedSine>(c.envelope, p.ayRatio * p.amplitude, p.fyHz, c.tstar);
-    PlanarResult r = kinstab::runPlanar(c, p.amplitude, p.frequencyHz);
+    PlanarEventLog events;
+    PlanarPathLog path;
+    PlanarRecorderPair both(&events, &path);
+    PlanarResult r = kinstab::runPlanar(c, p.amplitude, p.frequencyHz, &both);
     result_ = std::move(r.slab);
     exitSide_ = r.exitSide;
-    path_ = std::move(r.path);
+    path_ = std::move(path.path);
     result_.events.clear();
-    for (const PlanarEvent& e : r.events) {
+    for (const PlanarEvent& e : events.events) {
         // A slip starts from rest against the base acceleration (u' = -a_h at u = 0), so its
         // direction across the walls is that of -a_x; later events carry their own velocity.
         const double ax = accel_->accel(e.tau);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/teaching/TeachingView.h"
 
+#include "ui/ProjectFolder.h"
 #include "ui/teaching/EventLog.h"
 #include "ui/teaching/FrameExport.h"
 #include "ui/teaching/ParameterPanel.h"
@@ -367,9 +368,9 @@ int TeachingView::exportSequence(const QString& directory, double framesPerSecon
 
 void TeachingView::exportFrameDialog() {
     QString filter;
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Save frame"), QStringLiteral("teaching-frame.png"),
-                                     tr("PNG image (*.png);;SVG drawing (*.svg)"), &filter);
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save frame"), inOpenProjectFolder("teaching-frame.png"),
+        tr("PNG image (*.png);;SVG drawing (*.svg)"), &filter);
     if (path.isEmpty()) return;
     const bool svg = path.endsWith(QStringLiteral(".svg"), Qt::CaseInsensitive) ||
                      filter.contains(QStringLiteral("svg"));

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The vertical motion a planar project names (core/slab/PlanarSettings.h), read for a run without
+// Qt: the shipped RSN68 UP from the text compiled into the program (core/records/ShippedRecords.h),
+// or a record file. kinstab-cli's compute commands use it directly; the GUI and the report through
+// report/PlanarVertical.h, so every front end runs the same case.
+
+#include "core/records/Accelerogram.h"
+#include "core/slab/PlanarSettings.h"
+
+#include <optional>
+#include <string>
+
+namespace kinstab {
+
+// The shipped record's name in messages and as its source: the path the GUI's resources give it.
+inline constexpr const char* kRsn68UpSource = ":/records/RSN68_SFERN_PEL-UP.AT2";
+
+// nullopt for "none". Throws InputError "planar.vertical = 'PATH': reason" when it cannot be read.
+std::optional<Accelerogram> loadVerticalRecord(const PlanarSettings& s);
+
+// The planar case of a project's 1-DOF case and settings, with its vertical record loaded.
+// Throws InputError naming the field.
+PlanarCase planarCaseWithVertical(const Slab1DCase& common, const PlanarSettings& s);
+
+} // namespace kinstab
