@@ -5,6 +5,7 @@
 // 2001, figs. 7-9), where the safe cape shows.
 
 #include "core/rocking/OverturningMap.h"
+#include "report/ComparisonTable.h"
 #include "report/PlotFrame.h"
 #include "report/ReportSections.h"
 
@@ -92,27 +93,6 @@ void blockTable(ReportDocument& doc, const std::vector<BlockCheckPart>& blocks) 
     doc.addTable(t);
 }
 
-// The assessment's block checks, each comparison on its own row (the governing one bold).
-void checkTable(ReportDocument& doc, const Assessment& s) {
-    Table t{{"check", "compares", "demand (g)", "capacity (g)", "margin", "verdict"},
-            {},
-            {2.9, 2.0, 0.9, 1.0, 0.8, 2.0},
-            {Align::Left, Align::Left, Align::Right, Align::Right, Align::Right, Align::Left},
-            {}};
-    for (const Check& c : s.checks) {
-        if (c.basis != CheckBasis::Block) continue;
-        for (std::size_t k = 0; k < c.comparisons.size(); ++k) {
-            const Comparison& x = c.comparisons[k];
-            const bool governs = k == c.governingComparison;
-            if (governs) t.boldRows.push_back(static_cast<int>(t.rows.size()));
-            t.rows.push_back({k == 0 ? qs(c.id) : QString(), qs(x.intensity), num(x.demand, 3),
-                              num(x.capacity, 3, QStringLiteral("none")), qs(marginText(x)),
-                              governs ? qs(c.verdict) : QString()});
-        }
-    }
-    doc.addTable(t);
-}
-
 void blockDetail(ReportDocument& doc, const BlockCheckPart& b, const OverturningMap* map) {
     doc.addHeading(QStringLiteral("Block '%1'").arg(qs(b.block.name)), 2);
     doc.addParagraph(QStringLiteral("%1, on level %2. Overturning peaks of the level's motion "
@@ -180,7 +160,7 @@ void addBlocksSection(ReportDocument& doc, const Project& p, const ReportAnalysi
     blockTable(doc, *r.blocks);
     if (hasBasis(r.assessment, CheckBasis::Block)) {
         doc.addHeading(QStringLiteral("Block checks"), 2);
-        checkTable(doc, r.assessment);
+        addComparisonTable(doc, r.assessment, CheckBasis::Block, {2.9, 2.0, 0.9, 1.0, 0.8, 2.0});
     }
     for (std::size_t k = 0; k < r.blocks->size(); ++k)
         blockDetail(doc, r.blocks->at(k), k < r.blockMaps.size() ? &r.blockMaps[k] : nullptr);

@@ -5,6 +5,7 @@
 // critical PGA per level and the verdicts at the slab's level.
 
 #include "core/assessment/RunAssessment.h"
+#include "report/ComparisonTable.h"
 #include "report/CurveFigure.h"
 #include "report/ReportSections.h"
 
@@ -90,29 +91,6 @@ void profileFigure(ReportDocument& doc, const Project& p, const FloorAnalysis& a
              .arg(num(a.pga, 3))});
 }
 
-// The assessment's floor checks, each comparison on its own row: the ground PGA through the
-// building model, and the code's floor formula at the slab's level; the governing one (bold)
-// gives the check's margin and verdict.
-void comparisonTable(ReportDocument& doc, const Assessment& s) {
-    Table t{{"check", "compares", "demand (g)", "capacity (g)", "margin", "verdict"},
-            {},
-            {1.9, 2.4, 0.8, 0.8, 0.7, 1.8},
-            {Align::Left, Align::Left, Align::Right, Align::Right, Align::Right, Align::Left},
-            {}};
-    for (const Check& c : s.checks) {
-        if (c.basis != CheckBasis::Floors) continue;
-        for (std::size_t k = 0; k < c.comparisons.size(); ++k) {
-            const Comparison& x = c.comparisons[k];
-            const bool governs = k == c.governingComparison;
-            if (governs) t.boldRows.push_back(static_cast<int>(t.rows.size()));
-            t.rows.push_back({k == 0 ? qs(c.id) : QString(), qs(x.intensity), num(x.demand, 3),
-                              num(x.capacity, 3, QStringLiteral("none")), qs(marginText(x)),
-                              governs ? qs(c.verdict) : QString()});
-        }
-    }
-    doc.addTable(t);
-}
-
 void trailTable(ReportDocument& doc, const FloorDemand& d) {
     Table t{{"coefficient", "symbol", "value", "clause"},
             {},
@@ -170,7 +148,7 @@ void addFloorsSection(ReportDocument& doc, const Project& p, const ReportAnalysi
         true);
     if (hasBasis(r.assessment, CheckBasis::Floors)) {
         doc.addHeading(QStringLiteral("Floor checks at the slab's level"), 2);
-        comparisonTable(doc, r.assessment);
+        addComparisonTable(doc, r.assessment, CheckBasis::Floors, {1.9, 2.4, 0.8, 0.8, 0.7, 1.8});
     }
     for (const FloorDemand& d : a.demands)
         trailTable(doc, d);

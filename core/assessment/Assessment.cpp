@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/assessment/Assessment.h"
 
+#include "core/base/SignificantDigits.h"
 #include "core/base/TextInput.h"
 #include "core/codes/CodeCatalog.h"
 #include "core/io/Project.h"
@@ -16,11 +17,7 @@ namespace kinstab {
 namespace {
 
 std::string g(double x) {
-    std::ostringstream s;
-    s.imbue(std::locale::classic());
-    s.precision(4);
-    s << x;
-    return s.str();
+    return significantDigits(x, 4);
 }
 
 std::string verticalText(const PlanarSettings& s) {

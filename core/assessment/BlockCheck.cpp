@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/assessment/BlockCheck.h"
 
+#include "core/base/SignificantDigits.h"
 #include "core/building/FloorAnalysis.h"
 #include "core/io/Project.h"
 #include "core/rocking/OverturningAmplitude.h"
@@ -16,11 +17,7 @@ namespace kinstab {
 namespace {
 
 std::string g(double x) {
-    std::ostringstream s;
-    s.imbue(std::locale::classic());
-    s.precision(4);
-    s << x;
-    return s.str();
+    return significantDigits(x, 4);
 }
 
 // The search over the level's peak: the project's own limit and scan step (check.max_amplitude,

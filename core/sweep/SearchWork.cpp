@@ -1,27 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/sweep/SearchWork.h"
 
+#include "core/base/SignificantDigits.h"
 #include "core/base/TextInput.h"
 
 #include <algorithm>
 #include <cmath>
-#include <locale>
-#include <sstream>
 
 namespace kinstab {
-
-namespace {
-
-// Three significant digits in the C locale: the message gives a size, not an exact count.
-std::string threeDigits(double x) {
-    std::ostringstream s;
-    s.imbue(std::locale::classic());
-    s.precision(3);
-    s << x;
-    return s.str();
-}
-
-} // namespace
 
 double solverCostFactor(const Slab1DCase& c) {
     if (c.solver != SolverKind::Paper) return 1.0;
@@ -55,9 +41,9 @@ InputProblem workProblem(double runs, double perRun, double limit, const std::st
     const double work = runs * perRun;
     if (work <= limit) return {};
     return {"frequency", m.frequencyHz, "Hz",
-            what + " would walk up to " + threeDigits(work) + " half-periods of the sine (" +
-                threeDigits(runs) + " runs of up to " + threeDigits(perRun) + "; at most " +
-                threeDigits(limit) +
+            what + " would walk up to " + significantDigits(work, 3) +
+                " half-periods of the sine (" + significantDigits(runs, 3) + " runs of up to " +
+                significantDigits(perRun, 3) + "; at most " + significantDigits(limit, 3) +
                 "): lower the frequency or the amplitude, shorten the envelope (alpha) or the "
                 "run (duration)"};
 }

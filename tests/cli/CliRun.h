@@ -3,6 +3,7 @@
 // Runs kinstab-cli (or another program) as a user would, for the cli tests.
 
 #include <QByteArray>
+#include <QElapsedTimer>
 #include <QProcess>
 #include <QStringList>
 
@@ -21,4 +22,22 @@ inline Run run(const QString& program, const QStringList& args, int timeoutMs = 
 
 inline Run cli(const QStringList& args) {
     return run(KINSTAB_CLI, args);
+}
+
+// kinstab-cli at an extreme input (issues 31 and 32): the run, its wall time, and the text a
+// failed check shows. Such a run must end in seconds with exit 0 (an answer) or 2 (a refusal).
+struct TimedRun {
+    Run r;
+    qint64 ms = 0;
+    bool answeredOrRefused() const { return r.code == 0 || r.code == 2; }
+    QByteArray exitText() const {
+        return QString("exit %1 after %2 ms: %3").arg(r.code).arg(ms).arg(r.err).toUtf8();
+    }
+};
+
+inline TimedRun timedCli(const QStringList& args) {
+    QElapsedTimer clock;
+    clock.start();
+    Run r = run(KINSTAB_CLI, args, 30000);
+    return {r, clock.elapsed()};
 }

@@ -273,13 +273,10 @@ private slots:
         // (exit 2): never a hang, a crash or a bug's exit 1.
         QFETCH(QStringList, args);
         QFETCH(bool, inRange);
-        QElapsedTimer clock;
-        clock.start();
-        const Run r = run(KINSTAB_CLI, args, 30000);
-        const qint64 ms = clock.elapsed();
-        QVERIFY2(r.code == 0 || r.code == 2,
-                 qPrintable(QString("exit %1 after %2 ms: %3").arg(r.code).arg(ms).arg(r.err)));
-        QVERIFY2(ms < 10000, qPrintable(QString("%1 ms").arg(ms)));
+        const TimedRun t = timedCli(args);
+        const Run& r = t.r;
+        QVERIFY2(t.answeredOrRefused(), t.exitText().constData());
+        QVERIFY2(t.ms < 10000, t.exitText().constData());
         if (!inRange) {
             QCOMPARE(r.code, 2);
             QVERIFY2(r.err.contains(args[args.size() - 2].toUtf8()), r.err.constData());
