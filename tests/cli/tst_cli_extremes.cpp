@@ -4,14 +4,13 @@
 // subnormal 4.9e-324, 1e308, zero and -1, and values drawn from a seeded log-uniform law over
 // the whole double range. Each run must end in seconds with exit 0 (an answer) or 2 (a refusal
 // naming the flag): never a hang, a crash, exit 1 (a bug) or a NaN in the output.
-#include "CliRun.h"
+#include "ExtremeInputs.h"
 
 #include "core/excitation/Envelope.h"
 #include "core/excitation/EnvelopedSine.h"
 #include "core/slab/SlabInputs.h"
 #include "core/sweep/CriticalAmplitude.h"
 
-#include <QElapsedTimer>
 #include <QtTest>
 
 #include <cmath>
@@ -28,25 +27,6 @@ struct FlagCase {
 
 QString shown(double x) {
     return QString::number(x, 'g', 17);
-}
-
-// The values tried for one input: its range's ends and what lies just beyond them, the
-// extremes of the double range, and six seeded draws (seed 31, the number).
-QList<double> valuesFor(const NumberInput& in, std::mt19937_64& rng) {
-    QList<double> v{in.range.lo,
-                    in.range.hi,
-                    in.range.lo * (1 - 1e-9),
-                    in.range.hi * 1.001,
-                    1e-300,
-                    4.9e-324,
-                    1e308,
-                    0.0,
-                    -1.0,
-                    in.fallback};
-    std::uniform_real_distribution<double> exponent(-320.0, 308.0);
-    for (int k = 0; k < 6; ++k)
-        v.push_back(std::pow(10.0, exponent(rng)));
-    return v;
 }
 
 const QStringList kSimulate{"simulate", "--amplitude", "0.9", "--frequency", "1"};
@@ -87,7 +67,7 @@ private slots:
         std::mt19937_64 rng(31);
         for (const FlagCase& c : flagCases()) {
             const QString flag = QString::fromStdString(flagName(*c.input));
-            for (double x : valuesFor(*c.input, rng))
+            for (double x : extremeValues(*c.input, rng, 6))
                 QTest::newRow(qPrintable(c.command.first() + " " + flag + " " + shown(x)))
                     << (c.command + QStringList{flag, shown(x)}) << c.input->range.contains(x);
         }
@@ -95,18 +75,7 @@ private slots:
     void everyFlagAtItsExtremesEndsInSeconds() {
         QFETCH(QStringList, args);
         QFETCH(bool, inRange);
-        const TimedRun t = timedCli(args);
-        const Run& r = t.r;
-        QVERIFY2(t.answeredOrRefused(), t.exitText().constData());
-        QVERIFY2(t.ms < 10000, t.exitText().constData());
-        // Out of its range the value is refused naming the flag; in range it runs unless another
-        // rule of core refuses the combination (a step above the searched range).
-        if (!inRange) {
-            QCOMPARE(r.code, 2);
-            QVERIFY2(r.err.contains(args[args.size() - 2].toUtf8()), r.err.constData());
-        }
-        if (r.code == 0)
-            QVERIFY2(!r.out.contains("NaN") && !r.out.contains("nan"), r.out.left(400));
+        verifyExtremeRun(args, inRange);
     }
     // Inputs each in range whose product is the work (core/sweep/SearchWork.h): a search at
     // the fastest sine, under the slowest envelope, with the finest paper solver, over the
