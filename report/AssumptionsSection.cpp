@@ -5,7 +5,7 @@
 #include "report/PlanarVertical.h"
 #include "report/ReportSections.h"
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -86,4 +86,4 @@ void addAssumptionsSection(ReportDocument& doc, const Project& p, const ReportAn
         doc.addParagraph(QStringLiteral("%1. %2").arg(k + 1).arg(all[k]));
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

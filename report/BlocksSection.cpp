@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -166,4 +166,4 @@ void addBlocksSection(ReportDocument& doc, const Project& p, const ReportAnalysi
         blockDetail(doc, r.blocks->at(k), k < r.blockMaps.size() ? &r.blockMaps[k] : nullptr);
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -3,7 +3,7 @@
 
 #include "core/codes/CodeCatalog.h"
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 QString shortCodeName(const std::string& key) {
     const CodeInfo* c = findCode(key);
@@ -15,4 +15,4 @@ QColor codeColour(const std::string& key) {
     return c ? QColor::fromRgb(static_cast<QRgb>(c->rgb)) : QColor(Qt::gray);
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

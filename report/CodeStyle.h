@@ -8,11 +8,11 @@
 
 #include <string>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 // "UBC 1976", "ATC 3-06", ... for labels and legends; the key itself when it names no code.
 QString shortCodeName(const std::string& key);
 // The code's colour; grey for an unknown key.
 QColor codeColour(const std::string& key);
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -3,7 +3,7 @@
 
 #include "report/ReportSections.h"
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 void addComparisonTable(ReportDocument& doc, const Assessment& s, CheckBasis basis,
                         std::vector<double> columnWeights) {
@@ -26,4 +26,4 @@ void addComparisonTable(ReportDocument& doc, const Assessment& s, CheckBasis bas
     doc.addTable(t);
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

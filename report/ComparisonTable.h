@@ -9,9 +9,9 @@
 
 #include <vector>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 void addComparisonTable(ReportDocument& doc, const Assessment& s, CheckBasis basis,
                         std::vector<double> columnWeights);
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -199,4 +199,4 @@ void paintContourMap(QPainter& p, const QRectF& area, const SurfaceData& s,
     p.restore();
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

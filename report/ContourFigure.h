@@ -10,9 +10,9 @@
 #include <QPainter>
 #include <QRectF>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 void paintContourMap(QPainter& p, const QRectF& area, const SurfaceData& s,
                      const DesignOverlay& overlay, const QString& gammaLabel);
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -3,7 +3,7 @@
 
 #include "report/PlotFrame.h"
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 void paintCurves(QPainter& p, const QRectF& area, const CurvePlot& plot) {
     const PlotFrame fr(area, plot.xlo, plot.xhi, plot.ylo, plot.yhi);
@@ -28,4 +28,4 @@ void paintCurves(QPainter& p, const QRectF& area, const CurvePlot& plot) {
     p.restore();
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -12,7 +12,7 @@
 
 #include <vector>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 struct Curve {
     QList<QPointF> points;
@@ -29,4 +29,4 @@ struct CurvePlot {
 
 void paintCurves(QPainter& p, const QRectF& area, const CurvePlot& plot);
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace kinstab::ui {
+namespace kinstab::report {
 
 QList<QPointF> decimatedSeries(const std::vector<double>& y, double dt, int buckets,
                                bool absolute) {
@@ -29,4 +29,4 @@ QList<QPointF> decimatedSeries(const std::vector<double>& y, double dt, int buck
     return out;
 }
 
-} // namespace kinstab::ui
+} // namespace kinstab::report

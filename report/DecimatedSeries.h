@@ -8,11 +8,11 @@
 
 #include <vector>
 
-namespace kinstab::ui {
+namespace kinstab::report {
 
 // About `buckets` pairs of points: each bucket keeps its minimum and maximum, so every peak
 // stays visible.
 QList<QPointF> decimatedSeries(const std::vector<double>& y, double dt, int buckets,
                                bool absolute = false);
 
-} // namespace kinstab::ui
+} // namespace kinstab::report

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 double SurfaceData::maxGamma() const {
     double m = 0;
@@ -26,4 +26,4 @@ SurfaceData surfaceFromSweep(const SweepResult& r, double tauRef) {
     return s;
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -14,7 +14,7 @@ namespace kinstab {
 struct SweepResult;
 }
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 struct SurfaceData {
     std::vector<double> amplitudes;  // g, ascending
@@ -48,4 +48,4 @@ struct SliceData {
     std::optional<double> aCrit;
 };
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

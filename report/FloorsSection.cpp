@@ -11,7 +11,7 @@
 
 #include <algorithm>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -154,4 +154,4 @@ void addFloorsSection(ReportDocument& doc, const Project& p, const ReportAnalysi
         trailTable(doc, d);
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

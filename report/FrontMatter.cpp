@@ -9,7 +9,7 @@
 
 #include <algorithm>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -148,4 +148,4 @@ void addAcceptanceCriterion(ReportDocument& doc, const Project& p, const ReportA
         true);
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

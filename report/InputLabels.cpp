@@ -9,7 +9,7 @@
 #include "core/codes/Ubc1997.h"
 #include "report/ReportSections.h"
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 QString systemLabel(StructuralSystem s) {
     switch (s) {
@@ -151,4 +151,4 @@ Table codeInputsTable(const CodeSelection& codes) {
     return t;
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -9,7 +9,7 @@
 
 #include <QString>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 QString systemLabel(StructuralSystem s); // "dual system: moment frame with shear walls"
 QString occupancyLabel(Occupancy o);     // "standard (offices, dwellings, commerce)"
@@ -18,4 +18,4 @@ QString occupancyLabel(Occupancy o);     // "standard (offices, dwellings, comme
 // reads "from the occupancy" or the like, never "default".
 Table codeInputsTable(const CodeSelection& codes);
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 QString num(double x, int digits) {
     return QString::number(x, 'f', digits);
@@ -279,4 +279,4 @@ void addExcitationSection(ReportDocument& doc, const Project& p, const ReportAna
                        .arg(num(*fd, 3))});
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

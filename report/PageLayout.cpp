@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <numeric>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -359,4 +359,4 @@ void PageLayout::paintFigure(QPainter& p, const Figure& f, double y) const {
     paintWrapped(p, QRectF(body_.left(), top, body_.width(), captionHeight(f)), f.caption);
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -13,7 +13,7 @@
 #include <optional>
 #include <vector>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 enum class PaperSize { A4, Letter };
 QPageSize pageSizeOf(PaperSize p);
@@ -77,4 +77,4 @@ private:
     std::vector<Page> pages_;
 };
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

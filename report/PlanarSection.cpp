@@ -4,7 +4,7 @@
 #include "report/PlanarVertical.h"
 #include "report/ReportSections.h"
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 QString modelName(const Project& p) {
     if (p.model != ModelKind::Planar)
@@ -47,4 +47,4 @@ void addPlanarInputs(ReportDocument& doc, const Project& p) {
                      true);
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -3,9 +3,7 @@
 
 #include "core/slab/VerticalRecord.h"
 
-#include <QFileInfo>
-
-namespace kinstab::ui {
+namespace kinstab::report {
 
 QString defaultVerticalRecordPath() {
     return QString::fromUtf8(kRsn68UpSource); // also in the resources, for the record preview
@@ -15,14 +13,6 @@ QString defaultVerticalRecordNote() {
     return QObject::tr(
         "Vertical motion: 1971 San Fernando, LA Hollywood Storage FF, UP (NGA RSN68) stands in for "
         "the paper's Pacoima Dam vertical, which is not publicly available.");
-}
-
-std::optional<Accelerogram> readVerticalRecord(const PlanarSettings& s) {
-    return loadVerticalRecord(s);
-}
-
-PlanarCase projectPlanarCase(const Slab1DCase& common, const PlanarSettings& s) {
-    return planarCaseWithVertical(common, s);
 }
 
 QString verticalDescription(const PlanarSettings& s) {
@@ -37,17 +27,4 @@ QString verticalDescription(const PlanarSettings& s) {
     return {};
 }
 
-QString planarSummary(const PlanarSettings& s) {
-    const QString vertical = s.vertical == VerticalSource::None ? QObject::tr("none")
-                             : s.vertical == VerticalSource::Rsn68Up
-                                 ? QStringLiteral("RSN68 UP")
-                                 : QFileInfo(QString::fromStdString(s.verticalPath)).fileName();
-    return QObject::tr("planar (f_y = %1 Hz, A_y/A_x = %2, Θ = %3, %4, vertical %5)")
-        .arg(s.fyHz)
-        .arg(s.ayRatio)
-        .arg(s.theta)
-        .arg(QString::fromStdString(normalizationName(s.normalization)))
-        .arg(vertical);
-}
-
-} // namespace kinstab::ui
+} // namespace kinstab::report

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 std::vector<double> niceTicks(double lo, double hi, int target) {
     std::vector<double> ticks;
@@ -172,4 +172,4 @@ void PlotFrame::drawAxes(QPainter& p, const QString& xLabel, const QString& yLab
     p.restore();
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

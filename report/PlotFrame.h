@@ -11,7 +11,7 @@
 
 #include <vector>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 // Round tick values covering [lo, hi] (about `target` of them, steps 1, 2, 2.5 or 5 × 10^k).
 std::vector<double> niceTicks(double lo, double hi, int target = 6);
@@ -61,4 +61,4 @@ private:
     FigureScale scale_;
 };
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -13,7 +13,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -193,4 +193,4 @@ void addRecordSection(ReportDocument& doc, const Project& p, const ReportAnalysi
                                         "on page 1."));
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

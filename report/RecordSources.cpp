@@ -3,7 +3,7 @@
 
 #include <QFileInfo>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -44,4 +44,4 @@ QString recordCitation(const Accelerogram& record, const QString& path) {
                    .arg(file);
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -8,9 +8,9 @@
 
 #include <QString>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 // path: the file the project names (":/records/RSN77_SFERN_PUL164.AT2" or a file on disk).
 QString recordCitation(const Accelerogram& record, const QString& path);
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -5,8 +5,8 @@
 
 #include "core/assessment/RunAssessment.h"
 #include "core/codes/CodeSet.h"
+#include "core/slab/VerticalRecord.h"
 #include "core/sweep/ModelPoint.h"
-#include "report/PlanarVertical.h"
 
 #include <algorithm>
 #include <chrono>
@@ -14,7 +14,7 @@
 #include <exception>
 #include <map>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -151,7 +151,7 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
     const bool planar = project.model == ModelKind::Planar;
     // Every sweep, A_crit search and the check below run the project's model (docs/user-guide.md).
     const std::optional<PlanarCase> planarCase =
-        planar ? std::optional(projectPlanarCase(c, project.planar)) : std::nullopt;
+        planar ? std::optional(planarCaseWithVertical(c, project.planar)) : std::nullopt;
     const ModelPoint model = modelPoint(c, planarCase);
     if (planarCase) a.planarSolver = planarCase->solver;
     a.scanFrom = model.scanFrom;
@@ -207,4 +207,4 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
     return a;
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -20,7 +20,7 @@
 #include <optional>
 #include <vector>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 // The exact solver's τc checked against the paper's RK4 solver at H = T / paperSteps on the
 // project grid (docs/theory.md §6.6): an estimate of the τc error, independent of the exact solver.
@@ -97,4 +97,4 @@ Assessment assessReport(const Project& project, const ReportAnalysis& a);
 // The building frequency 1/T the check used (first code's period; the entered period if any).
 std::optional<double> designFrequency(const Project& project, const DesignCheckResult& check);
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

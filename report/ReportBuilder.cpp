@@ -8,7 +8,7 @@
 #include <QCryptographicHash>
 #include <QFileInfo>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -80,4 +80,4 @@ ReportDocument buildReportDocument(const ReportSource& s, const ReportAnalysis& 
     return doc;
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -5,7 +5,7 @@
 #include <iterator>
 #include <utility>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 void ReportDocument::addTitle(TitleBlock t) {
     Block b{Block::Kind::Title, {}, {}, {}, {}, std::move(t)};
@@ -55,4 +55,4 @@ void ReportDocument::addPageBreak() {
     blocks_.push_back(Block{Block::Kind::PageBreak, {}, {}, {}, {}, {}});
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -14,7 +14,7 @@
 #include <optional>
 #include <vector>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 struct Heading {
     QString text;
@@ -91,4 +91,4 @@ private:
     int figures_ = 0;
 };
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 QString num(double x, int digits);
 QString num(const std::optional<double>& x, int digits, const QString& none = QStringLiteral("—"));
@@ -87,4 +87,4 @@ QStringList riskCitations(const ReportAnalysis& a);
 // The reference-list entries of the study's records (none without a study).
 QStringList studyCitations(const Project& p);
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -10,7 +10,7 @@
 #include <QPainter>
 #include <QPdfWriter>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 int renderReportPdf(const ReportDocument& doc, PaperSize paper, QByteArray& bytes) {
     QBuffer buffer(&bytes); // in memory, so that the file is written whole or not at all
@@ -54,4 +54,4 @@ int writeReport(const ReportSource& source, const ReportAnalysis& analysis, cons
     return writeReportPdf(buildReportDocument(source, analysis), path, paper);
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

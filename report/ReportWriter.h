@@ -16,7 +16,7 @@
 
 #include <stdexcept>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 struct ReportError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -44,4 +44,4 @@ int writeReportPdf(const ReportDocument& doc, const QString& path, PaperSize pap
 int writeReport(const ReportSource& source, const ReportAnalysis& analysis, const QString& path,
                 PaperSize paper);
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -3,6 +3,7 @@
 // the references.
 #include "core/codes/CodeCatalog.h"
 #include "core/codes/CodeSet.h"
+#include "core/slab/VerticalRecord.h"
 #include "report/ContourFigure.h"
 #include "report/PlanarVertical.h"
 #include "report/RecordSources.h"
@@ -13,7 +14,7 @@
 #include <cmath>
 #include <map>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -218,7 +219,7 @@ void addReferences(ReportDocument& doc, const Project& p, const ReportAnalysis& 
         if (isSelected(p.codes, c.id)) refs << QString::fromUtf8(c.citation);
     if (p.record && a.record) refs << recordCitation(a.record->ground, qs(p.record->file));
     if (p.model == ModelKind::Planar && p.planar.vertical != VerticalSource::None) {
-        if (const std::optional<Accelerogram> v = readVerticalRecord(p.planar))
+        if (const std::optional<Accelerogram> v = loadVerticalRecord(p.planar))
             refs << recordCitation(*v, p.planar.vertical == VerticalSource::Rsn68Up
                                            ? defaultVerticalRecordPath()
                                            : qs(p.planar.verticalPath));
@@ -230,4 +231,4 @@ void addReferences(ReportDocument& doc, const Project& p, const ReportAnalysis& 
         doc.addParagraph(QStringLiteral("[%1]  %2").arg(k + 1).arg(refs[k]), true);
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

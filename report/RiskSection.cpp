@@ -14,7 +14,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -190,4 +190,4 @@ QStringList riskCitations(const ReportAnalysis& a) {
                        "Struct. Dyn. 42, 2013 (second-order closed form).")};
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

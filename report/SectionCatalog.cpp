@@ -8,7 +8,7 @@
 
 #include <sstream>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -77,4 +77,4 @@ SectionSet parseSections(const std::string& list) {
     return s;
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

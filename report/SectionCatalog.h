@@ -13,7 +13,7 @@
 #include <span>
 #include <string>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 using AddSection = void (*)(ReportDocument&, const Project&, const ReportAnalysis&);
 
@@ -35,4 +35,4 @@ SectionSet parseSections(const std::string& list);
 // "assumptions, inputs, codes, ..." : every key, for messages and --help.
 std::string sectionKeyList();
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

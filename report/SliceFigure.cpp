@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -109,4 +109,4 @@ void paintExcitation(QPainter& p, const QRectF& area, const ExcitationPlot& e) {
     p.restore();
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

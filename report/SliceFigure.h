@@ -8,7 +8,7 @@
 #include <QPainter>
 #include <QRectF>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 void paintSlice(QPainter& p, const QRectF& area, const SliceData& s,
                 const std::vector<CodeMark>& codes, const QString& gammaLabel);
@@ -22,4 +22,4 @@ struct ExcitationPlot {
 
 void paintExcitation(QPainter& p, const QRectF& area, const ExcitationPlot& e);
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

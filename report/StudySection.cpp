@@ -25,7 +25,7 @@
 #include <cmath>
 #include <sstream>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -298,4 +298,4 @@ QStringList studyCitations(const Project& p) {
     return refs;
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <set>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -164,4 +164,4 @@ void addSummary(ReportDocument& doc, const Project& p, const ReportAnalysis& a) 
     if (p.record && a.record) doc.addParagraph(asRunText(p, *a.record), true);
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -3,7 +3,7 @@
 // listed once so that tables and figures can use the short forms.
 #include "report/ReportSections.h"
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 void addSymbolTable(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {
     doc.addSection(QStringLiteral("Symbols"));
@@ -41,4 +41,4 @@ void addSymbolTable(ReportDocument& doc, const Project& p, const ReportAnalysis&
     doc.addTable(t);
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "report/TableOfContents.h"
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -52,4 +52,4 @@ withContents(const ReportDocument& doc,
     return doc.withInserted(*at, contentsBlocks(doc, pages));
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

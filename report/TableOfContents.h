@@ -11,7 +11,7 @@
 #include <functional>
 #include <memory>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 inline constexpr int kContentsAfterPages = 6;
 
@@ -21,4 +21,4 @@ ReportDocument
 withContents(const ReportDocument& doc,
              const std::function<std::unique_ptr<PageLayout>(const ReportDocument&)>& layoutOf);
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

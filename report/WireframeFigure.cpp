@@ -10,7 +10,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -197,4 +197,4 @@ void paintWireframe(QPainter& p, const QRectF& area, const SurfaceData& s,
     p.restore();
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -9,7 +9,7 @@
 #include <QPainter>
 #include <QRectF>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 struct WireframeView {
     double azimuthDeg = 40;    // rotation of the (A, f) plane about the γ axis
@@ -23,4 +23,4 @@ void paintWireframe(QPainter& p, const QRectF& area, const SurfaceData& s,
                     const DesignOverlay& overlay, const QString& gammaLabel,
                     const WireframeView& view = {});
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 namespace {
 
@@ -68,4 +68,4 @@ QString elidedToLines(const QString& text, const QFont& font, double width, int 
     return kept + QFontMetricsF(font, device).elidedText(rest, Qt::ElideRight, width);
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

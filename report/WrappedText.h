@@ -11,7 +11,7 @@
 #include <QRectF>
 #include <QString>
 
-namespace kinstab::ui::report {
+namespace kinstab::report {
 
 // Height of the text in `width` with the font on the device, as paintWrapped paints it.
 double wrappedHeight(const QString& text, const QFont& font, double width, QPaintDevice* device);
@@ -25,4 +25,4 @@ void paintWrapped(QPainter& p, const QRectF& r, const QString& text,
 QString elidedToLines(const QString& text, const QFont& font, double width, int lines,
                       QPaintDevice* device);
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::report

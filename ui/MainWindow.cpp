@@ -218,7 +218,7 @@ void MainWindow::buildFileMenu() {
                       [this] { exportChart(m_critical, QStringLiteral("acrit")); });
     QAction* report = file->addAction(tr("Export &report (PDF)…"), this, [this] {
         // The same document as `kinstab-cli report` (report/ReportWriter.h).
-        report::exportReportDialog(this, project(), m_path, [this](const QString& out) {
+        exportReportDialog(this, project(), m_path, [this](const QString& out) {
             // In the status line, where it stays until the next message (a 5 s flash was easy
             // to miss), and as a notice that does not block the window.
             const QString text = tr("Report written to %1").arg(QDir::toNativeSeparators(out));

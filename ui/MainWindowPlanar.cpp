@@ -4,7 +4,7 @@
 // point shows its planar history (δx, δy). Everything else (surface, overlays, slice, verdict)
 // is model-blind.
 
-#include "report/PlanarVertical.h"
+#include "core/slab/VerticalRecord.h"
 #include "ui/MainWindow.h"
 #include "ui/ModelPanel.h"
 #include "ui/PlanarHistoryChart.h"
@@ -21,7 +21,7 @@ bool MainWindow::preparePlanar(SweepJob& job) {
     m_centre->setTabText(0, planar ? tr("γc surface — planar") : tr("γc surface"));
     if (!planar) return true;
     try {
-        job.planar = projectPlanarCase(job.slabCase, m_modelPanel->settings());
+        job.planar = planarCaseWithVertical(job.slabCase, m_modelPanel->settings());
     } catch (const std::exception& e) {
         m_status->setText(QString::fromStdString(e.what()));
         return false;

@@ -5,7 +5,7 @@
 // "inputs changed — Run to update", until a run with the new inputs replaces it.
 
 #include "core/assessment/RunAssessment.h"
-#include "report/PlanarVertical.h"
+#include "core/slab/VerticalRecord.h"
 #include "ui/CriticalChart.h"
 #include "ui/ExcitationPanel.h"
 #include "ui/GridPanel.h"
@@ -105,7 +105,7 @@ void MainWindow::startAssessment() {
             auto& control = static_cast<AnalysisJobContext&>(job).analysis;
             try {
                 std::optional<PlanarCase> planar;
-                if (p.model == ModelKind::Planar) planar = projectPlanarCase(p.slab, p.planar);
+                if (p.model == ModelKind::Planar) planar = planarCaseWithVertical(p.slab, p.planar);
                 const AssessmentRun run = runAssessment(p, planar, control);
                 if (run.cancelled) return std::nullopt;
                 return run.assessment;

@@ -3,7 +3,7 @@
 
 #include "core/excitation/FrequencyRange.h"
 #include "core/slab/SlabInputs.h"
-#include "report/PlanarVertical.h"
+#include "core/slab/VerticalRecord.h"
 #include "ui/NumberField.h"
 #include "ui/RecordPreview.h"
 
@@ -122,7 +122,7 @@ void ModelPanel::checkVerticalFile() {
             error = tr("name the vertical record file");
         } else {
             try {
-                readVerticalRecord(s);
+                loadVerticalRecord(s);
             } catch (const std::exception& e) {
                 error = QString::fromStdString(e.what());
             }

@@ -152,11 +152,11 @@ QChart* RecordPreview::spectrumChart() const {
 }
 
 QString RecordPreview::defaultVerticalRecord() {
-    return defaultVerticalRecordPath();
+    return report::defaultVerticalRecordPath();
 }
 
 QString RecordPreview::defaultVerticalNote() {
-    return defaultVerticalRecordNote();
+    return report::defaultVerticalRecordNote();
 }
 
 QString RecordPreview::fileDialogFilter() {
@@ -253,7 +253,7 @@ void RecordPreview::rebuild() {
 void RecordPreview::plotGround() {
     QChart* c = groundChart();
     clearSeries(c);
-    addSeries(c, tr("ground"), decimatedSeries(ground_->samples, ground_->dt, kBuckets),
+    addSeries(c, tr("ground"), report::decimatedSeries(ground_->samples, ground_->dt, kBuckets),
               QColor(40, 90, 160));
     const double peak = std::abs(ground_->peak().value);
     axis(c, Qt::Horizontal)->setRange(0.0, ground_->duration());
@@ -269,7 +269,7 @@ void RecordPreview::plotFloor() {
     c->setTitle(floor_ ? tr("|Floor acceleration| and fitted envelope (Fig. 27)")
                        : tr("|Ground acceleration| and fitted envelope (floor filter off)"));
     addSeries(c, floor_ ? tr("|floor|") : tr("|ground|"),
-              decimatedSeries(m.samples, m.dt, kBuckets, true), QColor(120, 120, 120));
+              report::decimatedSeries(m.samples, m.dt, kBuckets, true), QColor(120, 120, 120));
     if (fit_) {
         QList<QPointF> env;
         for (int i = 0; i <= 400; ++i) {

@@ -16,7 +16,9 @@
 
 #include <memory>
 
-namespace kinstab::ui::report {
+namespace kinstab::ui {
+
+using namespace kinstab::report;
 
 struct AnalysisRun {
     std::optional<ReportAnalysis> analysis;
@@ -134,4 +136,4 @@ void ReportExport::finish(const QString& path) {
     deleteLater();
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::ui

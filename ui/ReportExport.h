@@ -16,7 +16,7 @@
 class QProgressDialog;
 class QWidget;
 
-namespace kinstab::ui::report {
+namespace kinstab::ui {
 
 struct AnalysisRun;
 
@@ -29,7 +29,7 @@ public:
     // the panels differ from that file, the title block hashes the project JSON as used instead,
     // and says so.
     ReportExport(QWidget* parent, const Project& project, const QString& projectPath,
-                 const QString& out, const SectionSet& sections);
+                 const QString& out, const report::SectionSet& sections);
     ~ReportExport() override;
 
 signals:
@@ -44,7 +44,7 @@ private:
     Project m_project;
     QString m_projectPath;
     QString m_out;
-    SectionSet m_sections;
+    report::SectionSet m_sections;
     QPointer<QProgressDialog> m_busy;
     BackgroundJob m_job;
 };
@@ -55,6 +55,7 @@ void exportReportDialog(QWidget* parent, const Project& project, const QString& 
                         const std::function<void(const QString&)>& written);
 // The same without the file dialog: starts writing out and returns the export (watch done()).
 ReportExport* exportReportTo(QWidget* parent, const Project& project, const QString& projectPath,
-                             const QString& out, const SectionSet& sections = defaultSections());
+                             const QString& out,
+                             const report::SectionSet& sections = report::defaultSections());
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::ui

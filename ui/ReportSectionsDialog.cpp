@@ -7,7 +7,9 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-namespace kinstab::ui::report {
+namespace kinstab::ui {
+
+using namespace kinstab::report;
 
 ReportSectionsDialog::ReportSectionsDialog(const SectionSet& initial, QWidget* parent)
     : QDialog(parent) {
@@ -49,4 +51,4 @@ bool ReportSectionsDialog::choose(QWidget* parent, SectionSet& sections) {
     return true;
 }
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::ui

@@ -11,19 +11,19 @@
 
 class QCheckBox;
 
-namespace kinstab::ui::report {
+namespace kinstab::ui {
 
 class ReportSectionsDialog : public QDialog {
     Q_OBJECT
 public:
-    explicit ReportSectionsDialog(const SectionSet& initial, QWidget* parent = nullptr);
-    SectionSet sections() const;
+    explicit ReportSectionsDialog(const report::SectionSet& initial, QWidget* parent = nullptr);
+    report::SectionSet sections() const;
 
     // Shows the dialog; false when the user cancels.
-    static bool choose(QWidget* parent, SectionSet& sections);
+    static bool choose(QWidget* parent, report::SectionSet& sections);
 
 private:
     std::vector<std::pair<QCheckBox*, std::string>> boxes_;
 };
 
-} // namespace kinstab::ui::report
+} // namespace kinstab::ui

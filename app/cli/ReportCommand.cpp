@@ -35,7 +35,7 @@ std::unique_ptr<QGuiApplication> ensureGuiApplication() {
 }
 
 // The run times the report leaves out (its numerics appendix is for the engineer).
-nlohmann::json reportTimings(const ui::report::ReportAnalysis& a) {
+nlohmann::json reportTimings(const report::ReportAnalysis& a) {
     nlohmann::json j = {{"project_sweep_s", a.projectSweep.wallTimeSeconds},
                         {"figure_sweeps_s", a.figureSweepSeconds},
                         {"design_check_s", a.checkSeconds},
@@ -60,7 +60,7 @@ QByteArray readProjectBytes(const std::string& path) {
 
 int writeReport(const ArgList& argv) {
     const Args args(argv, {"project", "o", "page", "figure-grid", "sections", "units"});
-    using namespace kinstab::ui::report;
+    using namespace kinstab::report;
     const auto t0 = std::chrono::steady_clock::now();
     if (!args.has("project")) throw UsageError("--project FILE is required");
     if (!args.has("o")) throw UsageError("-o FILE.pdf is required");

@@ -2,8 +2,8 @@
 #pragma once
 // The vertical motion a planar project names (core/slab/PlanarSettings.h), read for a run without
 // Qt: the shipped RSN68 UP from the text compiled into the program (core/records/ShippedRecords.h),
-// or a record file. kinstab-cli's compute commands use it directly; the GUI and the report through
-// report/PlanarVertical.h, so every front end runs the same case.
+// or a record file. kinstab-cli, the GUI and the report all call it, so every front end runs the
+// same case.
 
 #include "core/records/Accelerogram.h"
 #include "core/slab/PlanarSettings.h"

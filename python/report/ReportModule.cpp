@@ -21,7 +21,7 @@ namespace py = pybind11;
 namespace {
 
 using namespace kinstab;
-using namespace kinstab::ui::report;
+using namespace kinstab::report;
 
 void ensureGuiApplication() {
     if (QCoreApplication::instance()) return;

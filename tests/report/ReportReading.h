@@ -11,8 +11,8 @@
 #include <utility>
 
 // Small figure grids, no solver cross-check: the tests read words and the tabled numbers.
-inline kinstab::ui::report::AnalysisOptions quickAnalysis() {
-    kinstab::ui::report::AnalysisOptions o;
+inline kinstab::report::AnalysisOptions quickAnalysis() {
+    kinstab::report::AnalysisOptions o;
     o.figureGrid = 7;
     o.planarFigureGrid = 5;
     o.sliceStep = 0.05;

@@ -15,7 +15,7 @@
 #include <QtTest>
 
 using namespace kinstab;
-using namespace kinstab::ui::report;
+using namespace kinstab::report;
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
-using namespace kinstab::ui::report;
+using namespace kinstab::report;
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include <QtTest>
 
 using namespace kinstab;
-using namespace kinstab::ui::report;
+using namespace kinstab::report;
 
 class TestReportUnits : public QObject {
     Q_OBJECT

@@ -18,7 +18,7 @@
 #include <QtTest>
 
 using namespace kinstab;
-using namespace kinstab::ui::report;
+using namespace kinstab::report;
 
 class TestReportVerdict : public QObject {
     Q_OBJECT

@@ -100,7 +100,7 @@ private slots:
         QCOMPARE(panel.building().name, std::string("Tower A"));
     }
     void sectionDialogStartsFromTheDefault() {
-        using namespace kinstab::ui::report;
+        using namespace kinstab::report;
         ReportSectionsDialog d(defaultSections());
         QCOMPARE(d.sections(), defaultSections());
         d.findChild<QCheckBox*>("section_numerics")->setChecked(false);

@@ -103,7 +103,7 @@ void TestRecordPreview::decimationKeepsExtremes() {
     std::vector<double> y(42000);
     for (std::size_t i = 0; i < y.size(); ++i)
         y[i] = std::sin(0.01 * static_cast<double>(i)) * (i == 31234 ? 5.0 : 1.0);
-    const QList<QPointF> d = ui::decimatedSeries(y, 0.005, 1500);
+    const QList<QPointF> d = report::decimatedSeries(y, 0.005, 1500);
     QVERIFY(d.size() <= 2 * 1500 + 4);
     double top = -1e9, bottom = 1e9;
     for (const QPointF& p : d) {

@@ -33,7 +33,7 @@ QString pdfText(const QString& pdf) {
 
 // Runs one export to its end (the window's event loop keeps running meanwhile).
 QString exportAndWait(QWidget* w, const Project& p, const QString& out) {
-    QSignalSpy done(report::exportReportTo(w, p, QString(), out), &report::ReportExport::done);
+    QSignalSpy done(ui::exportReportTo(w, p, QString(), out), &ui::ReportExport::done);
     if (!done.wait(300000)) return QStringLiteral("(no result in 300 s)");
     return done.at(0).at(0).toString();
 }
