@@ -2,7 +2,6 @@
 // "Assumptions and limitations": the idealizations behind the numbers of this report, generated
 // from the project so that only those that apply are listed (Furgerson 1980, ch. IV-VI: rigid
 // bodies, Coulomb friction, enveloped-sine floor motion at the building frequency).
-#include "report/PlanarVertical.h"
 #include "report/ReportSections.h"
 
 namespace kinstab::report {

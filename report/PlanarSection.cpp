@@ -1,10 +1,25 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The planar model's inputs in the report (docs/user-guide.md, Furgerson 1980 ch. VI): shown only
 // when the project's model is planar; the surfaces, A_crit(f) and the check then come from it.
-#include "report/PlanarVertical.h"
+#include "core/records/ShippedRecords.h"
 #include "report/ReportSections.h"
 
 namespace kinstab::report {
+
+namespace {
+// One line below the table: the shipped record's note, or what else moves the slab vertically.
+QString verticalDescription(const PlanarSettings& s) {
+    switch (s.vertical) {
+    case VerticalSource::None:
+        return QStringLiteral("Vertical motion: none (gravity only).");
+    case VerticalSource::Rsn68Up:
+        return QString::fromUtf8(kRsn68UpNote);
+    case VerticalSource::File:
+        return QStringLiteral("Vertical motion: record file %1.").arg(qs(s.verticalPath));
+    }
+    return {};
+}
+} // namespace
 
 QString modelName(const Project& p) {
     if (p.model != ModelKind::Planar)
@@ -40,11 +55,7 @@ void addPlanarInputs(ReportDocument& doc, const Project& p) {
                                                               : qs(s.verticalPath),
                       ""});
     doc.addTable(t);
-    // The RSN68 UP note starts with "Vertical motion:" itself (defaultVerticalRecordNote).
-    doc.addParagraph(s.vertical == VerticalSource::Rsn68Up
-                         ? verticalDescription(s)
-                         : QStringLiteral("Vertical motion: ") + verticalDescription(s) + ".",
-                     true);
+    doc.addParagraph(verticalDescription(s), true);
 }
 
 } // namespace kinstab::report

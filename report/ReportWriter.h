@@ -8,19 +8,14 @@
 #include "report/PageLayout.h"
 #include "report/ReportAnalysis.h"
 #include "report/ReportDocument.h"
+#include "report/ReportError.h"
 #include "report/SectionCatalog.h"
 
 #include <QByteArray>
 #include <QDateTime>
 #include <QString>
 
-#include <stdexcept>
-
 namespace kinstab::report {
-
-struct ReportError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
 
 struct ReportSource {
     Project project;

@@ -5,7 +5,6 @@
 #include "core/codes/CodeSet.h"
 #include "core/slab/VerticalRecord.h"
 #include "report/ContourFigure.h"
-#include "report/PlanarVertical.h"
 #include "report/RecordSources.h"
 #include "report/ReportSections.h"
 #include "report/SliceFigure.h"
@@ -221,7 +220,7 @@ void addReferences(ReportDocument& doc, const Project& p, const ReportAnalysis& 
     if (p.model == ModelKind::Planar && p.planar.vertical != VerticalSource::None) {
         if (const std::optional<Accelerogram> v = loadVerticalRecord(p.planar))
             refs << recordCitation(*v, p.planar.vertical == VerticalSource::Rsn68Up
-                                           ? defaultVerticalRecordPath()
+                                           ? QString::fromUtf8(kRsn68UpSource)
                                            : qs(p.planar.verticalPath));
     }
     refs << studyCitations(p);

@@ -3,8 +3,8 @@
 
 #include "core/base/TextInput.h"
 
+#include "report/ReportError.h"
 #include "report/ReportSections.h"
-#include "report/ReportWriter.h"
 
 #include <sstream>
 

@@ -16,8 +16,8 @@
 #include "report/CurveFigure.h"
 #include "report/PlotFrame.h"
 #include "report/RecordSources.h"
+#include "report/ReportError.h"
 #include "report/ReportSections.h"
-#include "report/ReportWriter.h"
 
 #include <QFileInfo>
 

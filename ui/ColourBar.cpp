@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/ColourBar.h"
 
-#include "ui/HeatMapView.h"
 #include "ui/NiceTicks.h"
 
 #include <QPainter>
+
+#include <algorithm>
+#include <cmath>
 
 namespace kinstab::ui {
 
@@ -16,6 +18,30 @@ QString tickText(double v, int decimals) {
     return QString::number(v, 'f', decimals); // 'f' is locale-independent
 }
 } // namespace
+
+QColor gammaColor(double t) {
+    // Stable (0) dark blue, then through teal and yellow to red at the largest γc.
+    static const QColor stops[] = {QColor(40, 60, 140), QColor(30, 150, 160), QColor(240, 220, 60),
+                                   QColor(215, 50, 40)};
+    t = std::clamp(t, 0.0, 1.0) * 3.0;
+    const int i = std::min(static_cast<int>(t), 2);
+    const double u = t - i;
+    auto mix = [&](int a, int b) { return static_cast<int>(a + (b - a) * u); };
+    return QColor(mix(stops[i].red(), stops[i + 1].red()),
+                  mix(stops[i].green(), stops[i + 1].green()),
+                  mix(stops[i].blue(), stops[i + 1].blue()));
+}
+
+QColor notComputedColor() {
+    return QColor(205, 205, 205);
+}
+
+double colourScaleMaximum(const GammaGrid& g) {
+    double gMax = 0;
+    for (double v : g.gamma)
+        if (std::isfinite(v)) gMax = std::max(gMax, v);
+    return gMax > 0 ? niceAxis(0, gMax, 6).max : 1.0;
+}
 
 int colourBarWidth(const QFontMetrics& fm, double gMax) {
     const NiceAxis axis = niceAxis(0, gMax, kMaxTicks);

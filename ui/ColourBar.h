@@ -3,11 +3,22 @@
 // The γc colour scale: the surface's gradient from 0 (stable) to the largest γc of the grid,
 // with values on 1-2-5 ticks. One painter for the 2D map and the bar beside the 3D view.
 
+#include "ui/SurfaceData.h"
+
+#include <QColor>
 #include <QWidget>
 
 class QPainter;
 
 namespace kinstab::ui {
+
+// Colour of γc / γmax in [0, 1] (the 3D surface uses the same stops).
+QColor gammaColor(double t);
+// Colour of a point not computed (a cancelled or running sweep): light grey, unlike any γc.
+QColor notComputedColor();
+// Top of the colour scale: the grid's largest γc rounded up to a 1-2-5 step (1 if none), the
+// same for the 2D map, the 3D view's Y axis and the colour bar, so a colour means one value.
+double colourScaleMaximum(const GammaGrid& g);
 
 // Paints the gradient into `bar` and tick labels to its right; the title goes above the bar.
 void paintColourBar(QPainter& p, const QRectF& bar, double gMax, const QString& title,

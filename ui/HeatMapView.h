@@ -44,13 +44,6 @@ private:
     bool m_stale = false;
 };
 
-// Colour of γc / γmax in [0, 1] (the 3D surface uses the same stops).
-QColor gammaColor(double t);
-// Colour of a point not computed (a cancelled or running sweep): light grey, unlike any γc.
-QColor notComputedColor();
-// Top of the colour scale: the grid's largest γc rounded up to a 1-2-5 step (1 if none), the
-// same for the 2D map, the 3D view's Y axis and the colour bar, so a colour means one value.
-double colourScaleMaximum(const GammaGrid& g);
 // What the surface area says before anything is computed.
 QString emptyHint();
 

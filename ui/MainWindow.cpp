@@ -36,7 +36,7 @@
 #include "ui/SliceChart.h"
 #include "ui/StaleFrame.h"
 #include "ui/SurfaceView.h"
-#include "ui/Units.h"
+#include "ui/UnitsMenu.h"
 #include "ui/VerdictPanel.h"
 #include "ui/teaching/PresentationMode.h"
 #include "ui/teaching/TeachingView.h"

@@ -21,6 +21,7 @@
 #include "ui/SlabPanel.h"
 #include "ui/StudyTab.h"
 #include "ui/SurfaceView.h"
+#include "ui/UnitsMenu.h"
 #include "ui/VerdictPanel.h"
 #include "ui/teaching/TeachingView.h"
 

@@ -2,7 +2,7 @@
 #include "ui/RecordPreview.h"
 
 #include "core/excitation/FourierSpectrum.h"
-#include "report/PlanarVertical.h"
+#include "core/records/ShippedRecords.h"
 #include "ui/NiceAxisTicks.h"
 #include "ui/RecordMetricsText.h"
 
@@ -152,11 +152,11 @@ QChart* RecordPreview::spectrumChart() const {
 }
 
 QString RecordPreview::defaultVerticalRecord() {
-    return report::defaultVerticalRecordPath();
+    return QString::fromUtf8(kRsn68UpSource);
 }
 
 QString RecordPreview::defaultVerticalNote() {
-    return report::defaultVerticalRecordNote();
+    return tr(kRsn68UpNote);
 }
 
 QString RecordPreview::fileDialogFilter() {

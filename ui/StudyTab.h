@@ -35,10 +35,12 @@ class QTableWidget;
 
 namespace kinstab::ui {
 
+struct StudyOutcome; // ui/StudyTabOutcome.h
+
 class StudyTab : public QWidget {
     Q_OBJECT
 public:
-    struct Outcome; // what the worker hands back
+    using Outcome = StudyOutcome; // what the worker hands back
 
     explicit StudyTab(QWidget* parent = nullptr);
     ~StudyTab() override;

@@ -4,7 +4,7 @@
 
 #include "core/study/Fragility.h"
 #include "core/study/StudyRecordMetrics.h"
-#include "ui/StudyTab.h"
+#include "core/study/StudyRow.h"
 
 #include <QString>
 
@@ -14,7 +14,7 @@
 
 namespace kinstab::ui {
 
-struct StudyTab::Outcome {
+struct StudyOutcome {
     std::string rows, error;
     bool cancelled = false;
     std::vector<StudyRow> parsed;
@@ -28,7 +28,6 @@ struct StudyTab::Outcome {
 
 // The job that reads a results file back, checks it is the study file's and fits the fragility
 // (ui/StudyTabProject.cpp); runs off the GUI thread.
-std::shared_ptr<StudyTab::Outcome> readStudyResults(const QString& specPath,
-                                                    const QString& rowsPath);
+std::shared_ptr<StudyOutcome> readStudyResults(const QString& specPath, const QString& rowsPath);
 
 } // namespace kinstab::ui

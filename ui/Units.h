@@ -9,11 +9,6 @@
 
 #include <QString>
 
-#include <functional>
-
-class QMenu;
-class QWidget;
-
 namespace kinstab::ui {
 
 using kinstab::LengthScale; // core/base/UnitSystem.h
@@ -27,17 +22,5 @@ QString unitSystemTitle(UnitSystem s);
 // The choice kept in QSettings (SI when none was made yet).
 UnitSystem savedUnitSystem();
 void saveUnitSystem(UnitSystem s);
-
-// The menu's check mark follows s (a project opened in its own units), without saving it as
-// the user's choice.
-void showUnitSystem(QWidget* root, UnitSystem s);
-
-// Every NumberField below root shows its length in s (fields that are no length ignore it).
-void applyUnitSystem(QWidget* root, UnitSystem s);
-
-// View → Units: SI / US customary. Applies the saved choice to root now, and a new choice to
-// root, to `also` (views that draw lengths) and to QSettings.
-void installUnitsMenu(QMenu* viewMenu, QWidget* root,
-                      std::function<void(UnitSystem)> also = nullptr);
 
 } // namespace kinstab::ui

@@ -3,7 +3,6 @@
 
 #include "core/base/InputError.h"
 #include "core/records/RecordReader.h"
-#include "core/records/ShippedRecords.h"
 
 #include <cerrno>
 #include <cstring>

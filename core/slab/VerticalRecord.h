@@ -6,15 +6,13 @@
 // same case.
 
 #include "core/records/Accelerogram.h"
+#include "core/records/ShippedRecords.h"
 #include "core/slab/PlanarSettings.h"
 
 #include <optional>
 #include <string>
 
 namespace kinstab {
-
-// The shipped record's name in messages and as its source: the path the GUI's resources give it.
-inline constexpr const char* kRsn68UpSource = ":/records/RSN68_SFERN_PEL-UP.AT2";
 
 // nullopt for "none". Throws InputError "planar.vertical = 'PATH': reason" when it cannot be read.
 std::optional<Accelerogram> loadVerticalRecord(const PlanarSettings& s);

@@ -11,6 +11,7 @@
 
 #include "core/precision/PlanarPrecision.h"
 #include "core/records/RecordReader.h"
+#include "core/records/ShippedRecords.h"
 #include "core/slab/PlanarSettings.h"
 
 #include "RecordMotions.h"

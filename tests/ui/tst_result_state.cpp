@@ -10,6 +10,7 @@
 #include "core/io/Project.h"
 #include "ui/BuildingPanel.h"
 #include "ui/CodesPanel.h"
+#include "ui/ColourBar.h"
 #include "ui/CriticalChart.h"
 #include "ui/ExcitationPanel.h"
 #include "ui/GridPanel.h"
