@@ -41,7 +41,6 @@ inline void verifyExtremeRun(const QStringList& args, bool inRange) {
     const TimedRun t = timedCli(args);
     const Run& r = t.r;
     QVERIFY2(t.answeredOrRefused(), t.exitText().constData());
-    QVERIFY2(t.ms < 10000, t.exitText().constData());
     if (!inRange) {
         QCOMPARE(r.code, 2);
         QVERIFY2(r.err.contains(args[args.size() - 2].toUtf8()), r.err.constData());

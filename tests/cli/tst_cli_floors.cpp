@@ -52,30 +52,30 @@ void TestCliFloors::paperBuildingUnderPacoima() {
     const QJsonObject j = json(r);
     const QJsonArray modes = j["modes"].toArray(), levels = j["levels"].toArray();
     QCOMPARE(modes.size(), 16);
-    QVERIFY(std::abs(modes[0].toObject()["period_s"].toDouble() - 1.0) < 1e-12);
+    QCOMPARE_LT(std::abs(modes[0].toObject()["period_s"].toDouble() - 1.0), 1e-12);
     double roof = 0;
     for (const auto& m : modes)
         roof += m.toObject()["participation"].toDouble();
-    QVERIFY(std::abs(roof - 1.0) < 1e-9);
-    QVERIFY(std::abs(j["asce7_22_ta_s"].toDouble() - 0.97053) < 5e-5);
+    QCOMPARE_LT(std::abs(roof - 1.0), 1e-9);
+    QCOMPARE_LT(std::abs(j["asce7_22_ta_s"].toDouble() - 0.97053), 5e-5);
     QCOMPARE(levels.size(), 16);
     const double pga = j["pga_g"].toDouble();
     QVERIFY(pga > 1.0); // the Pacoima Dam record's PGA exceeds 1 g
     for (int i = 0; i < 16; ++i) {
         const QJsonObject l = levels[i].toObject();
         QCOMPARE(l["level"].toInt(), i + 1);
-        QVERIFY(std::abs(l["height"].toDouble() - 177.0 * (i + 1) / 16.0) < 1e-9);
+        QCOMPARE_LT(std::abs(l["height"].toDouble() - 177.0 * (i + 1) / 16.0), 1e-9);
         QCOMPARE(l["weight"].toDouble(), 1.0);
         const double pfa = l["pfa_g"].toDouble();
-        QVERIFY(std::abs(l["pfa_over_pga"].toDouble() - pfa / pga) < 1e-12);
+        QCOMPARE_LT(std::abs(l["pfa_over_pga"].toDouble() - pfa / pga), 1e-12);
         QVERIFY(l["asce7_22_hf"].isDouble() && l["ec8_pfa_g"].isDouble());
         QVERIFY(l["critical_pga_g"].isDouble());
         const double expect = l["critical_floor_peak_g"].toDouble() * pga / pfa;
-        QVERIFY(std::abs(l["critical_pga_g"].toDouble() - expect) < 1e-9 * expect);
+        QCOMPARE_LT(std::abs(l["critical_pga_g"].toDouble() - expect), 1e-9 * expect);
     }
     const QJsonObject top = levels[15].toObject();
-    QVERIFY(std::abs(top["asce7_22_pfa_g"].toDouble() - 0.70421) < 5e-5);
-    QVERIFY(std::abs(top["ec8_pfa_g"].toDouble() - 0.71875) < 1e-12);
+    QCOMPARE_LT(std::abs(top["asce7_22_pfa_g"].toDouble() - 0.70421), 5e-5);
+    QCOMPARE_LT(std::abs(top["ec8_pfa_g"].toDouble() - 0.71875), 1e-12);
     QCOMPARE(j["slab_level"].toInt(), 16);
     QCOMPARE(j["checks"].toArray().size(), 3);
     QVERIFY(j["sdof_roof"].toObject()["pfa_g"].toDouble() > 0);
@@ -84,9 +84,9 @@ void TestCliFloors::paperBuildingUnderPacoima() {
     const QJsonObject asce = j["checks"].toArray()[0].toObject();
     QCOMPARE(asce["id"].toString(), QString("floors.asce7_22.design"));
     const QJsonArray cmp = asce["comparisons"].toArray();
-    QVERIFY(std::abs(cmp[0].toObject()["demand"].toDouble() - 0.4) < 1e-12);
+    QCOMPARE_LT(std::abs(cmp[0].toObject()["demand"].toDouble() - 0.4), 1e-12);
     QCOMPARE(cmp[0].toObject()["capacity"].toDouble(), top["critical_pga_g"].toDouble());
-    QVERIFY(std::abs(cmp[1].toObject()["demand"].toDouble() - 0.70421) < 5e-5);
+    QCOMPARE_LT(std::abs(cmp[1].toObject()["demand"].toDouble() - 0.70421), 5e-5);
     QCOMPARE(cmp[1].toObject()["capacity"].toDouble(), top["critical_floor_peak_g"].toDouble());
 }
 

@@ -1,39 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// kinstab-cli's JSON outputs on a fixed set of commands, every number bit-identical to a golden
-// file (issue 15: moving the analysis into one core entry point must not change a single bit).
-// The goldens in tests/data/golden/ were written by kinstab-cli as it was before the #15
-// refactor (commit c5b59cc), run from the repository root, with the keys that change from run
-// to run (version, wall times, rates, thread counts) removed, the keys sorted, and the checkout's
-// folder cut from the record paths that projects resolve. The same is done here before
-// comparing; numbers are compared as the bits of the doubles they parse to, so "1" and "1.0"
-// agree and 0.7999999999999999 and 0.8 do not.
-// One golden is an intended change: 08-check-planar.json. Before #15 `check` refused a planar
-// project (exit 2, "the design check uses the slab1d model"); through the analysis entry point
-// it runs the planar model's check, and that golden was written by the CLI after the change;
-// planarCheckIsThePlanarCritical checks its A_crit against `critical --model planar` there.
-// The planar goldens (04, 08, 10, 11) were rewritten once more by the faster planar solver of
-// issue 22: τc and γc moved by at most 1e-11 (within the solver's tolerance), max |dx| is now
-// the interpolated peak inside a step rather than the largest step end (0.76601 → 0.76691 in
-// 10), and A_crit at 1.5 Hz in 04 fell from 0.839468 to 0.839241 g: between them the slab
-// passes the wall's edge inside one integration step and comes back (max |dx| 1.00005 by the
-// interpolant), a collapse the old end-of-step check missed; the step is now retaken to end at
-// that peak, where the integrated state itself is beyond the edge.
-// 10 and 11 were rewritten again when slow slips went to the implicit Radau IIA step (issue
-// 22): γc moved by at most 1.3e-11 relative, max |dx| in 10 by 4e-10 (the interpolated peak
-// inside a step depends on where the steps fall), the work counters fell.
-// 10 and 11 were rewritten a third time when the planar excitation went to local Taylor series
-// (core/slab/SinePairSeries.h, within 2 units of the phase's rounding of the closed forms) and
-// DOP853's step factor to square roots instead of pow: γc and τc moved by at most 3.4e-11
-// relative, max |dx| in 10 by 2.7e-10 and its residual dx by 7.9e-10.
-// 10 and 11 were rewritten a fourth time when the implicit step went to five-stage Radau IIA
-// (order 9) with predictive step control: γc and τc moved by at most 5.6e-12 relative, the
-// residual dx in 10 by 1.8e-9 (now 7e-12 from the value at rtol 1e-13, was 2.6e-10) and its
-// max |dx|, a cubic interpolant's peak inside an explicit step, by 5.1e-7 (now 3.4e-7 from the
-// value at rtol 1e-13, was 7.5e-7); the steps fell from 559 to 362.
-// Issue 30 added keys and changed none: 06, 07 and 08 gained "assessment" (every value that was
-// there before is bit-identical); 12 gained "checks" (the assessment's floor checks) and lost
-// "verdicts", "enveloped_sine_a_crit_g" and "enveloped_sine_verdicts", the floor verdicts that
-// contradicted the assessment.
+// kinstab-cli's JSON outputs on a fixed set of commands (the twelve in tests/data/golden/: surface,
+// critical, codes, check, simulate and floors, 1-DOF and planar), every number bit-identical to
+// its golden file. Before comparing, both sides lose the keys that change from run to run
+// (version, wall times, rates, thread counts) and the checkout's folder in record paths, and their
+// keys are sorted; numbers are compared as the bits of the doubles they parse to, so "1" and "1.0"
+// agree and 0.7999999999999999 and 0.8 do not. planarCheckIsThePlanarCritical ties the planar
+// check's A_crit to `critical --model planar`. When a golden is rewritten on purpose, CHANGELOG.md
+// says which, why and by how much its numbers moved.
 
 #include <QDir>
 #include <QFile>

@@ -50,7 +50,7 @@ void TestCliRecords::recordSummary() {
     const QJsonObject rec = r.json["record"].toObject();
     QCOMPARE(rec["npts"].toInt(), 7945);
     QCOMPARE(rec["dt"].toDouble(), 0.01);
-    QVERIFY(std::abs(rec["peak_g"].toDouble() - 0.1643) <= 5e-5);
+    QCOMPARE_LE(std::abs(rec["peak_g"].toDouble() - 0.1643), 5e-5);
     QCOMPARE(rec["file_units"].toString(), QString("g"));
     QCOMPARE(rec["component"].toString(), QString("UP"));
     QVERIFY(r.json["floor"].isNull());
@@ -65,7 +65,7 @@ void TestCliRecords::recordFloorSpectrumAtOneOverT() {
     QCOMPARE(r.exitCode, 0);
     const QJsonObject floor = r.json["floor"].toObject();
     const double df = floor["spectrum"]["df_hz"].toDouble();
-    QVERIFY(std::abs(floor["spectrum"]["peaks"][0]["frequency_hz"].toDouble() - 1.0) <= df);
+    QCOMPARE_LE(std::abs(floor["spectrum"]["peaks"][0]["frequency_hz"].toDouble() - 1.0), df);
     QVERIFY(floor["energy_near_1_over_T"].toDouble() > 0.5);
     QCOMPARE(r.json["envelope"]["of"].toString(), QString("floor"));
     QVERIFY(r.json["envelope"]["beta"].toDouble() > r.json["envelope"]["alpha"].toDouble());
@@ -92,7 +92,7 @@ void TestCliRecords::simulateRecordCollapses() {
     const Run r = runCli({"simulate", "--record", kRecords + "Rinaldi228.AT2", "--mu", "0.5"});
     QCOMPARE(r.exitCode, 0);
     QCOMPARE(r.json["outcome"].toString(), QString("collapsed"));
-    QVERIFY(std::abs(r.json["tau_c"].toDouble() - 27.91484) <= 1e-4);
+    QCOMPARE_LE(std::abs(r.json["tau_c"].toDouble() - 27.91484), 1e-4);
     QCOMPARE(r.json["solver"].toString(), QString("exact"));
     QVERIFY(r.json["gamma_c"].toDouble() > 0.0);
     QCOMPARE(r.json["record"]["npts"].toInt(), 1991);
@@ -105,7 +105,7 @@ void TestCliRecords::simulateRecordScaledAndHistory() {
         runCli({"simulate", "--record", kRecords + "RSN68_SFERN_PEL-UP.AT2", "--amplitude", "0.9",
                 "--floor-period", "0.5", "--scale", "one", "--history", csv});
     QCOMPARE(r.exitCode, 0);
-    QVERIFY(std::abs(r.json["amplitude"].toDouble() - 0.9) < 1e-12);
+    QCOMPARE_LT(std::abs(r.json["amplitude"].toDouble() - 0.9), 1e-12);
     QCOMPARE(r.json["tau_ref"].toDouble(), 1.0);
     QCOMPARE(r.json["floor_filter"]["period_s"].toDouble(), 0.5);
     QFile f(csv);

@@ -9,7 +9,6 @@
 #include "CliRun.h"
 #include "FileBytes.h"
 
-#include <QElapsedTimer>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -145,16 +144,14 @@ private slots:
     void resultsWithoutLineBreaksAreRefusedAtOnce() {
         const QJsonObject study{{"spec", kSpec}, {"results", "/dev/zero"}};
         const QString project = projectWith(study, "zero-results.json");
-        QElapsedTimer t;
-        t.start();
+        // A run that read /dev/zero to its end would never finish: the 20 s guard kills it (exit
+        // -1). How fast the refusal comes is not asserted (timing belongs to kinstab-cli bench).
         const Run r = run(KINSTAB_CLI,
                           {"report", "--project", project, "-o", dir_.filePath("zero.pdf")}, 20000);
-        const qint64 ms = t.elapsed();
         QCOMPARE(r.code, 2);
         QVERIFY2(r.err.contains("study.results = '/dev/zero'") &&
                      r.err.contains("line 1 is longer than the limit of 65536 bytes"),
                  r.err.constData());
-        QVERIFY2(ms < 10000, qPrintable(QString::number(ms)));
         QVERIFY(!QFile::exists(dir_.filePath("zero.pdf")));
     }
 };

@@ -65,8 +65,8 @@ private slots:
             QCOMPARE(c["demand"].toDouble(), lambda);
             // -ln(0.99) / 50, the code's 1 % in 50 years (core/risk/RiskTargets.h).
             const double target = -std::log(0.99) / 50;
-            QVERIFY(std::abs(c["capacity"].toDouble() / target - 1) < 1e-14);
-            QVERIFY(std::abs(c["margin"].toDouble() / (target / lambda) - 1) < 1e-14);
+            QCOMPARE_LT(std::abs(c["capacity"].toDouble() / target - 1), 1e-14);
+            QCOMPARE_LT(std::abs(c["margin"].toDouble() / (target / lambda) - 1), 1e-14);
             QCOMPARE(c["holds"].toBool(), lambda < target);
         }
     }

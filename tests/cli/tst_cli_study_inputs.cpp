@@ -153,10 +153,12 @@ private slots:
             QVERIFY(!filter["critical_im_g"].isNull());
             const double perPeak =
                 filter["critical_im_g"].toDouble() / filter["critical_peak_g"].toDouble();
-            QVERIFY(std::abs(level["critical_peak_g"].toDouble() -
-                             filter["critical_peak_g"].toDouble()) <= kTolerance);
-            QVERIFY(std::abs(level["critical_im_g"].toDouble() -
-                             filter["critical_im_g"].toDouble()) <= kTolerance * perPeak);
+            QCOMPARE_LE(std::abs(level["critical_peak_g"].toDouble() -
+                                 filter["critical_peak_g"].toDouble()),
+                        kTolerance);
+            QCOMPARE_LE(
+                std::abs(level["critical_im_g"].toDouble() - filter["critical_im_g"].toDouble()),
+                kTolerance * perPeak);
         }
     }
     void badLevelNamesTheField_data() {
@@ -229,11 +231,11 @@ private slots:
         QVERIFY2(crit.code == 0, crit.err);
         const double aCrit = QJsonDocument::fromJson(crit.out)["a_crit"][0].toDouble();
         QVERIFY(aCrit > 0);
-        QVERIFY(std::abs(rows[1]["critical_peak_g"].toDouble() - aCrit) <= kTolerance);
+        QCOMPARE_LE(std::abs(rows[1]["critical_peak_g"].toDouble() - aCrit), kTolerance);
         // Scaled like the record it stands for: IM x A_crit / the fitted envelope's peak.
-        QVERIFY(std::abs(rows[1]["critical_im_g"].toDouble() -
-                         rows[1]["record_im_g"].toDouble() * aCrit / env["peak_g"].toDouble()) <=
-                1e-9);
+        QCOMPARE_LE(std::abs(rows[1]["critical_im_g"].toDouble() -
+                             rows[1]["record_im_g"].toDouble() * aCrit / env["peak_g"].toDouble()),
+                    1e-9);
     }
     void aPulseHasNoFitAndSaysWhy() {
         // One half sine of 0.3 g over 2 s: a single half-cycle peak, no envelope to fit.

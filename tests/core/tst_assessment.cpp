@@ -68,7 +68,7 @@ void TestAssessment::sineProjectImpliesOneCheckPerCode() {
         const Comparison& x = c.governing();
         QVERIFY(x.capacity && x.margin);
         QCOMPARE(*x.margin, *x.capacity / x.demand);
-        QVERIFY(std::abs(*x.capacity - 0.979) < 0.0005);
+        QCOMPARE_LT(std::abs(*x.capacity - 0.979), 0.0005);
     }
     QCOMPARE(r.assessment.governingCheck()->id, std::string("sine.atc306")); // largest ratio
 }
@@ -88,11 +88,12 @@ void TestAssessment::floorsProjectImpliesRecordAndFloorChecks() {
     // Both comparisons appear; the ground one against 0.4 S_MS = 0.4 * 1.5 * S_DS (S_DS = 1.0).
     QCOMPARE(mce.comparisons.size(), std::size_t(2));
     QCOMPARE(mce.comparisons[0].intensity, std::string("ground PGA"));
-    QVERIFY(std::abs(mce.comparisons[0].demand - 0.6) < 1e-12);
-    QVERIFY(std::abs(byId(r.assessment, "floors.asce7_22.design").comparisons[0].demand - 0.4) <
-            1e-12);
+    QCOMPARE_LT(std::abs(mce.comparisons[0].demand - 0.6), 1e-12);
+    QCOMPARE_LT(std::abs(byId(r.assessment, "floors.asce7_22.design").comparisons[0].demand - 0.4),
+                1e-12);
     // EC8: alpha S = 0.25 * 1.15 (ground type C, type 1 spectrum, importance class II).
-    QVERIFY(std::abs(byId(r.assessment, "floors.ec8").comparisons[0].demand - 0.25 * 1.15) < 1e-12);
+    QCOMPARE_LT(std::abs(byId(r.assessment, "floors.ec8").comparisons[0].demand - 0.25 * 1.15),
+                1e-12);
     // The ground comparison is the check's own; the formula's governs only where it fails
     // while the ground's holds.
     const bool disagree = mce.comparisons[0].holds() && !mce.comparisons[1].holds();

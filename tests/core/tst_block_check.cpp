@@ -123,8 +123,8 @@ void TestBlockCheck::westStaticRuleBoundsTheCapacity() {
         const double west = b.block.block.halfWidth / b.block.block.halfHeight;
         QVERIFY2(*b.criticalFloorPeak >= west, b.block.name.c_str());
         // The ground PGA follows from the floor peak through the linear building.
-        QVERIFY(std::abs(*b.criticalPga - *b.criticalFloorPeak * b.pga / b.floorPeak) <
-                1e-12 * *b.criticalPga);
+        QCOMPARE_LT(std::abs(*b.criticalPga - *b.criticalFloorPeak * b.pga / b.floorPeak),
+                    1e-12 * *b.criticalPga);
         QCOMPARE(b.level, 16);
     }
 }
@@ -180,7 +180,7 @@ void TestBlockCheck::criticalPeakIsWhereTheSolverFalls() {
     QCOMPARE(scaledLevel.size(), level.size());
     const double peak = std::abs(level.peak().value);
     for (std::size_t k = 0; k < level.size(); ++k)
-        QVERIFY(std::abs(scaledLevel.samples[k] - 0.37 * level.samples[k]) < 1e-12 * peak);
+        QCOMPARE_LT(std::abs(scaledLevel.samples[k] - 0.37 * level.samples[k]), 1e-12 * peak);
     const FreeBlock& parapet = p.blocks.front();
     Project one = p;
     one.blocks = {parapet};
@@ -210,7 +210,7 @@ void TestBlockCheck::exampleChecksAndJson() {
         QCOMPARE(c.comparisons.size(), std::size_t(2));
         const Comparison& x = c.comparisons.front();
         QCOMPARE(x.intensity, std::string("ground PGA"));
-        if (x.margin) QVERIFY(std::abs(*x.margin - *x.capacity / x.demand) < 1e-12);
+        if (x.margin) QCOMPARE_LT(std::abs(*x.margin - *x.capacity / x.demand), 1e-12);
     }
     QCOMPARE(blockChecks, 6); // 2 blocks x (ASCE 7-22 design, MCE_R, EC8)
     const nlohmann::json j = assessmentJson(run.assessment);

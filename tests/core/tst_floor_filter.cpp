@@ -166,7 +166,7 @@ void TestFloorFilter::paperFig25and26FloorMotionIsOneFrequency() {
           "%.2f %.2f Hz",
           top.frequency, eFloor, eGround, spectrumPeaks(sg, 3)[0].frequency,
           spectrumPeaks(sg, 3)[1].frequency, spectrumPeaks(sg, 3)[2].frequency);
-    QVERIFY(std::abs(top.frequency - 1.0) <= sf.df);
+    QCOMPARE_LE(std::abs(top.frequency - 1.0), sf.df);
     QVERIFY(eFloor > 0.5);
     QVERIFY(eGround < 0.5 * eFloor);
 }
@@ -178,11 +178,11 @@ void TestFloorFilter::spectrumOfBinSine() {
         x[i] = 0.7 * std::sin(2 * kPi * 25.0 * static_cast<double>(i) / 512.0);
     const AmplitudeSpectrum s = amplitudeSpectrum(x, dt);
     QCOMPARE(s.points, std::size_t(512));
-    QVERIFY(std::abs(s.df - 1.0 / (512 * dt)) < 1e-15);
-    QVERIFY(std::abs(s.amplitude[25] - 1.0) < 1e-12);
+    QCOMPARE_LT(std::abs(s.df - 1.0 / (512 * dt)), 1e-15);
+    QCOMPARE_LT(std::abs(s.amplitude[25] - 1.0), 1e-12);
     for (std::size_t k = 0; k < s.amplitude.size(); ++k)
         if (k != 25) QVERIFY2(s.amplitude[k] < 1e-12, qPrintable(QString::number(k)));
-    QVERIFY(std::abs(spectrumPeaks(s, 3).front().frequency - 25.0 * s.df) < 1e-12);
+    QCOMPARE_LT(std::abs(spectrumPeaks(s, 3).front().frequency - 25.0 * s.df), 1e-12);
 }
 
 void TestFloorFilter::envelopeFitRecoversSyntheticEnvelope_data() {
@@ -211,9 +211,9 @@ void TestFloorFilter::envelopeFitRecoversSyntheticEnvelope() {
     }
     const EnvelopeFit fit = fitEnvelope(m);
     qInfo("alpha %.5f beta %.5f scale %.5f rms %.2g", fit.alpha, fit.beta, fit.scale, fit.rms);
-    QVERIFY(std::abs(fit.alpha - alpha) <= 0.02 * alpha);
-    QVERIFY(std::abs(fit.beta - beta) <= 0.02 * beta);
-    QVERIFY(std::abs(fit.scale - 0.5) <= 0.01);
+    QCOMPARE_LE(std::abs(fit.alpha - alpha), 0.02 * alpha);
+    QCOMPARE_LE(std::abs(fit.beta - beta), 0.02 * beta);
+    QCOMPARE_LE(std::abs(fit.scale - 0.5), 0.01);
 }
 
 void TestFloorFilter::floorMotionTailAndValidation() {
@@ -222,7 +222,7 @@ void TestFloorFilter::floorMotionTailAndValidation() {
     // Default tail: ln 100 / (zeta w) = 36.6 s for T = 1 s, 2 %.
     const double tail = std::log(100.0) / (0.02 * 2 * kPi);
     QCOMPARE(floor.size(), ground.size() + static_cast<std::size_t>(std::ceil(tail / ground.dt)));
-    QVERIFY(std::abs(floor.samples.back()) < 0.02 * std::abs(floor.peak().value));
+    QCOMPARE_LT(std::abs(floor.samples.back()), 0.02 * std::abs(floor.peak().value));
     QVERIFY(!validateFloorFilter({-1.0, 0.02, {}}).empty());
     QVERIFY(!validateFloorFilter({1.0, 1.0, {}}).empty());
     QVERIFY(!validateFloorFilter({1.0, std::nan(""), {}}).empty());

@@ -66,23 +66,23 @@ void TestFloorsModel::twoLevelsMatchClosedForm() {
     const ShearBuilding s = shearBuilding(building(2, 0.5, {2.0, 1.0}), StiffnessProfile::Weight);
     const double m1 = s.masses[0], m2 = s.masses[1], k1 = s.stiffness[0], k2 = s.stiffness[1];
     QCOMPARE(m1 / m2, 2.0);
-    QVERIFY(std::abs(k1 / k2 - 3.0) < 1e-12);
+    QCOMPARE_LT(std::abs(k1 / k2 - 3.0), 1e-12);
     const double b = m1 * k2 + m2 * (k1 + k2), disc = std::sqrt(b * b - 4 * m1 * m2 * k1 * k2);
     const double w1sq = (b - disc) / (2 * m1 * m2), w2sq = (b + disc) / (2 * m1 * m2);
     const ModalModel model = modalModel(s);
     QCOMPARE(model.modes.size(), std::size_t(2));
     const double pi = std::numbers::pi;
-    QVERIFY(std::abs(model.modes[0].period - 2 * pi / std::sqrt(w1sq)) < 1e-12);
-    QVERIFY(std::abs(model.modes[0].period - 0.5) < 1e-12);
-    QVERIFY(std::abs(model.modes[1].period - 2 * pi / std::sqrt(w2sq)) < 1e-12);
+    QCOMPARE_LT(std::abs(model.modes[0].period - 2 * pi / std::sqrt(w1sq)), 1e-12);
+    QCOMPARE_LT(std::abs(model.modes[0].period - 0.5), 1e-12);
+    QCOMPARE_LT(std::abs(model.modes[1].period - 2 * pi / std::sqrt(w2sq)), 1e-12);
     // Second row of (K - w^2 M) phi = 0 with phi_2 = 1: phi_1 = (k2 - w^2 m2) / k2.
     for (int r = 0; r < 2; ++r) {
         const double wsq = r == 0 ? w1sq : w2sq;
         const double phi1 = (k2 - wsq * m2) / k2;
-        QVERIFY(std::abs(model.modes[r].shape[0] - phi1) < 1e-10);
+        QCOMPARE_LT(std::abs(model.modes[r].shape[0] - phi1), 1e-10);
         QCOMPARE(model.modes[r].shape[1], 1.0);
         const double gamma = (m1 * phi1 + m2) / (m1 * phi1 * phi1 + m2);
-        QVERIFY(std::abs(model.modes[r].participation - gamma) < 1e-10);
+        QCOMPARE_LT(std::abs(model.modes[r].participation - gamma), 1e-10);
     }
 }
 
@@ -108,7 +108,7 @@ void TestFloorsModel::modesAreMassOrthogonalAndComplete() {
     const ShearBuilding s = shearBuilding(b, static_cast<StiffnessProfile>(profile));
     const ModalModel model = modalModel(s);
     QCOMPARE(model.modes.size(), std::size_t(16));
-    QVERIFY(std::abs(model.modes.front().period - 1.0) < 1e-12); // scaled to T
+    QCOMPARE_LT(std::abs(model.modes.front().period - 1.0), 1e-12); // scaled to T
     const Eigen::MatrixXd M = massMatrix(s), K = stiffnessMatrix(s);
     Eigen::VectorXd sum = Eigen::VectorXd::Zero(16);
     double effective = 0;
@@ -119,14 +119,14 @@ void TestFloorsModel::modesAreMassOrthogonalAndComplete() {
         if (r > 0) QVERIFY(model.modes[r].period < model.modes[r - 1].period);
         const double mrr = pr.dot(M * pr);
         const double w2 = model.modes[r].omega * model.modes[r].omega;
-        QVERIFY(std::abs(pr.dot(K * pr) / mrr - w2) < 1e-9 * w2);
+        QCOMPARE_LT(std::abs(pr.dot(K * pr) / mrr - w2), 1e-9 * w2);
         for (std::size_t q = 0; q < r; ++q) {
             const Eigen::Map<const Eigen::VectorXd> pq(model.modes[q].shape.data(), 16);
             QVERIFY2(std::abs(pq.dot(M * pr)) < 1e-10 * mrr, "phi_q' M phi_r != 0");
         }
     }
     QVERIFY((sum - Eigen::VectorXd::Ones(16)).cwiseAbs().maxCoeff() < 1e-10);
-    QVERIFY(std::abs(effective - 1.0) < 1e-10);
+    QCOMPARE_LT(std::abs(effective - 1.0), 1e-10);
 }
 
 void TestFloorsModel::oneLevelEqualsFloorFilter() {
@@ -137,7 +137,7 @@ void TestFloorsModel::oneLevelEqualsFloorFilter() {
     QCOMPARE(levels.size(), std::size_t(1));
     QCOMPARE(levels[0].size(), sdof.size());
     for (std::size_t k = 0; k < sdof.size(); ++k)
-        QVERIFY(std::abs(levels[0].samples[k] - sdof.samples[k]) < 1e-12);
+        QCOMPARE_LT(std::abs(levels[0].samples[k] - sdof.samples[k]), 1e-12);
 }
 
 void TestFloorsModel::matchesRk4OfTheFullSystem() {
@@ -204,9 +204,9 @@ void TestFloorsModel::roofOfThePaperBuildingAgainstTheFloorFilter() {
     const double sdof = std::abs(floorMotion(ground, {1.0, 0.05, std::nullopt}).peak().value);
     // Gamma_1 phi_roof,1 of a uniform 16-storey shear building is about 1.27: the first mode
     // alone scales the SDOF motion by that; other modes add or subtract.
-    QVERIFY(std::abs(model.modes[0].participation - 1.27) < 0.01);
+    QCOMPARE_LT(std::abs(model.modes[0].participation - 1.27), 0.01);
     QVERIFY(roof > 0.5 * sdof && roof < 3.0 * sdof);
-    QVERIFY(std::abs(roof - sdof) > 0.01); // not the same motion
+    QCOMPARE_GT(std::abs(roof - sdof), 0.01); // not the same motion
 }
 
 QTEST_APPLESS_MAIN(TestFloorsModel)

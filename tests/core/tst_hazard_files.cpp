@@ -115,7 +115,7 @@ std::string errorOf(const std::string& text, const HazardRequest& r = {}) {
 
 } // namespace
 
-class TstHazardFiles : public QObject {
+class TestHazardFiles : public QObject {
     Q_OBJECT
 private slots:
     void threeFormatsOneCurve() {
@@ -331,5 +331,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TstHazardFiles)
+QTEST_GUILESS_MAIN(TestHazardFiles)
 #include "tst_hazard_files.moc"

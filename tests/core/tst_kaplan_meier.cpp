@@ -38,16 +38,16 @@ private slots:
         const auto steps = kaplanMeier({{0.8, 0.2, 0.5, 0.4}, {0.6, 0.3}});
         QCOMPARE(steps.size(), std::size_t(4));
         QCOMPARE(steps[0].probability, 1.0 / 6.0);
-        QVERIFY(std::abs(steps[1].probability - 3.0 / 8.0) < 1e-15);
-        QVERIFY(std::abs(steps[2].probability - 7.0 / 12.0) < 1e-15);
-        QVERIFY(std::abs(steps[3].probability - 1.0) < 1e-15);
+        QCOMPARE_LT(std::abs(steps[1].probability - 3.0 / 8.0), 1e-15);
+        QCOMPARE_LT(std::abs(steps[2].probability - 7.0 / 12.0), 1e-15);
+        QCOMPARE_LT(std::abs(steps[3].probability - 1.0), 1e-15);
     }
     void aRecordCensoredAtACollapseIsAtRiskThere() {
         // Collapses 0.1, 0.4; censored 0.1: t = 0.1 at risk 3, S = 2/3; t = 0.4 at risk 1, S = 0.
         // (Counting the censored record out at 0.1 would give S = 1/2 there.)
         const auto steps = kaplanMeier({{0.1, 0.4}, {0.1}});
         QCOMPARE(steps[0].probability, 1.0 / 3.0);
-        QVERIFY(std::abs(steps[1].probability - 1.0) < 1e-15);
+        QCOMPARE_LT(std::abs(steps[1].probability - 1.0), 1e-15);
         QVERIFY(kaplanMeier({{}, {0.5}}).empty());
     }
 };

@@ -85,7 +85,7 @@ QString joined(const std::vector<std::string>& lines) {
 
 } // namespace
 
-class TstLayering : public QObject {
+class TestLayering : public QObject {
     Q_OBJECT
 private slots:
     // A tree made for the test: slab/ including sweep/ runs back up; sweep/ including slab/ and
@@ -114,5 +114,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TstLayering)
+QTEST_GUILESS_MAIN(TestLayering)
 #include "tst_layering.moc"

@@ -8,7 +8,7 @@
 
 using namespace kinstab;
 
-class TstModelKind : public QObject {
+class TestModelKind : public QObject {
     Q_OBJECT
 private slots:
     void namesAreTheFileFormats() {
@@ -28,5 +28,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TstModelKind)
+QTEST_GUILESS_MAIN(TestModelKind)
 #include "tst_model_kind.moc"

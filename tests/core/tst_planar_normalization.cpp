@@ -58,11 +58,11 @@ void TestPlanarNormalization::componentPeaks() {
     double product = 0, envelope = 0;
     sampledMaxima(c.envelope, f, c.tstar, product, envelope);
     const double a = 0.8;
-    QVERIFY(std::abs(peakOfAx(planarModel(c, a, f)) - a) < 1e-6);
+    QCOMPARE_LT(std::abs(peakOfAx(planarModel(c, a, f)) - a), 1e-6);
     c.normalization = PlanarNormalization::Envelope;
     const double expected = a * product / envelope;
     QVERIFY(expected < a);
-    QVERIFY(std::abs(peakOfAx(planarModel(c, a, f)) - expected) < 1e-6);
+    QCOMPARE_LT(std::abs(peakOfAx(planarModel(c, a, f)) - expected), 1e-6);
 }
 
 void TestPlanarNormalization::alongWallExit_data() {
@@ -83,8 +83,8 @@ void TestPlanarNormalization::alongWallExit() {
         const PlanarResult r = runPlanar(c, ax, 2.0);
         QCOMPARE(r.slab.outcome, Outcome::Collapsed);
         QCOMPARE(r.exitSide, ExitSide::Along);
-        QVERIFY(std::abs(std::abs(r.residualDeltaY) - c.slab.theta) < 1e-9);
-        QVERIFY(std::abs(r.slab.residualDelta) <= c.slab.limit);
+        QCOMPARE_LT(std::abs(std::abs(r.residualDeltaY) - c.slab.theta), 1e-9);
+        QCOMPARE_LE(std::abs(r.slab.residualDelta), c.slab.limit);
     }
 }
 

@@ -152,7 +152,7 @@ void TestRecordedMotion::crossingsAndBounds() {
             for (int i = 0; i < c.n; ++i) {
                 const double t = c.t[static_cast<std::size_t>(i)];
                 QVERIFY(t > lo && t < hi);
-                QVERIFY(std::abs(m.accel(t) - level) < 1e-14);
+                QCOMPARE_LT(std::abs(m.accel(t) - level), 1e-14);
             }
             found += c.n;
             const double fl = m.accel(lo + 1e-13) - level, fh = m.accel(hi - 1e-13) - level;
@@ -175,11 +175,11 @@ void TestRecordedMotion::crossingsAndBounds() {
 void TestRecordedMotion::scaledToTargetPeak() {
     const Accelerogram rec = readRecord(kRecords + "RSN68_SFERN_PEL-UP.AT2");
     const RecordedMotion m(rec, 0.099, 0.5);
-    QVERIFY(std::abs(m.peak() - 0.5) < 1e-15);
-    QVERIFY(std::abs(m.scale() - 0.5 / 0.1643) < 1e-3 * m.scale()); // SOURCES.md: peak 0.1643 g
+    QCOMPARE_LT(std::abs(m.peak() - 0.5), 1e-15);
+    QCOMPARE_LT(std::abs(m.scale() - 0.5 / 0.1643), 1e-3 * m.scale()); // SOURCES.md: peak 0.1643 g
     const double t = 1234.5 * rec.dt / 0.099;
-    QVERIFY(std::abs(m.accel(t) - m.scale() * 0.5 * (rec.samples[1234] + rec.samples[1235])) <
-            1e-15);
+    QCOMPARE_LT(std::abs(m.accel(t) - m.scale() * 0.5 * (rec.samples[1234] + rec.samples[1235])),
+                1e-15);
 }
 
 void TestRecordedMotion::zeroAfterEnd() {
@@ -191,8 +191,8 @@ void TestRecordedMotion::zeroAfterEnd() {
     QCOMPARE(m.accel(m.endTau() * (1 + 1e-15)), 0.0);
     QCOMPARE(m.boundAfter(0.41), 0.0);
     // After the end the velocity stays and the displacement grows linearly: v = 0.2*(0+2*1+2)/2.
-    QVERIFY(std::abs(m.velocityChange(0.0, 5.0) - 0.4) < 1e-15);
-    QVERIFY(std::abs(m.displacementChange(m.endTau(), 5.0)) < 1e-15);
+    QCOMPARE_LT(std::abs(m.velocityChange(0.0, 5.0) - 0.4), 1e-15);
+    QCOMPARE_LT(std::abs(m.displacementChange(m.endTau(), 5.0)), 1e-15);
     QVERIFY(m.segmentEnd(0.4) > 0.4);
 }
 

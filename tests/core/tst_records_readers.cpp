@@ -159,10 +159,8 @@ void TestRecordReaders::sampleRecords() {
     QCOMPARE(a.dt, dt);
     QCOMPARE(QString::fromStdString(a.format), format);
     const SignedPeak p = a.peak();
-    if (!std::isnan(peak))
-        QVERIFY2(std::abs(p.value - peak) <= tol, qPrintable(QString::number(p.value, 'g', 10)));
-    QVERIFY2(std::abs(std::abs(p.value) - absPeak) <= tol,
-             qPrintable(QString::number(p.value, 'g', 10)));
+    if (!std::isnan(peak)) QCOMPARE_LE(std::abs(p.value - peak), tol);
+    QCOMPARE_LE(std::abs(std::abs(p.value) - absPeak), tol);
 }
 
 // Where a header states the peak, the data must agree with it to the header's printed digits.
@@ -266,7 +264,7 @@ void TestRecordReaders::twoColumnText() {
                     {RecordFormat::Auto, {}, AccelUnit::MetresPerS2, {}});
     QCOMPARE(csv.format, std::string("time-accel"));
     QCOMPARE(csv.size(), std::size_t(3));
-    QVERIFY(std::abs(csv.dt - 0.02) < 1e-15);
+    QCOMPARE_LT(std::abs(csv.dt - 0.02), 1e-15);
     QCOMPARE(csv.samples[2], 0.3 / 9.80665);
     const Accelerogram tab = parseRecord(RecordText("0\t-2.205\n0.02\t1.0\n", "b.dat"));
     QCOMPARE(tab.samples.front(), -2.205);
@@ -293,7 +291,7 @@ void TestRecordReaders::unitsConvert() {
     o.dt = 0.01;
     o.unit = *u;
     const Accelerogram a = parseRecord(RecordText("1.0 2.0\n", "v.txt"), o);
-    QVERIFY(std::abs(a.samples[1] - 2.0 * gPerUnit) <= 1e-15);
+    QCOMPARE_LE(std::abs(a.samples[1] - 2.0 * gPerUnit), 1e-15);
     QVERIFY(!accelUnitFromName("furlong/s2").has_value());
 }
 

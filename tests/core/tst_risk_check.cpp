@@ -137,7 +137,7 @@ private slots:
             const Check* c = findCheck(a, "risk.set0");
             QVERIFY(c);
             QCOMPARE(c->governing().demand, lambda);
-            QVERIFY(std::abs(*c->governing().margin - factor) < 1e-12);
+            QCOMPARE_LT(std::abs(*c->governing().margin - factor), 1e-12);
             QCOMPARE(c->holds, factor > 1);
             QVERIFY(contains(c->verdict, factor > 1 ? "meets the " : "exceeds the target rate"));
             // Not the code's target any more: the rate itself is named.

@@ -94,7 +94,7 @@ double bruteForce(const HazardCurve& c, const CollapseFragility& f, int n) {
 
 } // namespace
 
-class TstRiskIntegral : public QObject {
+class TestRiskIntegral : public QObject {
     Q_OBJECT
 private slots:
     void powerLawIsExact_data() {
@@ -348,5 +348,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TstRiskIntegral)
+QTEST_GUILESS_MAIN(TestRiskIntegral)
 #include "tst_risk_integral.moc"

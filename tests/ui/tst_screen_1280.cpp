@@ -85,7 +85,7 @@ QWidget* currentTab(MainWindow& w) {
 
 } // namespace
 
-class TstScreen1280 : public QObject {
+class TestScreen1280 : public QObject {
     Q_OBJECT
     std::unique_ptr<MainWindow> w;
 
@@ -281,7 +281,7 @@ int main(int argc, char** argv) {
     f.close();
     qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + file.toLocal8Bit());
     QApplication app(argc, argv);
-    TstScreen1280 test;
+    TestScreen1280 test;
     QTEST_SET_MAIN_SOURCE_PATH
     return QTest::qExec(&test, argc, argv);
 }

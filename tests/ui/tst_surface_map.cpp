@@ -32,7 +32,7 @@ GammaGrid testGrid() {
 }
 } // namespace
 
-class TstSurfaceMap : public QObject {
+class TestSurfaceMap : public QObject {
     Q_OBJECT
 private slots:
     void niceSteps_data() {
@@ -140,5 +140,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TstSurfaceMap)
+QTEST_MAIN(TestSurfaceMap)
 #include "tst_surface_map.moc"

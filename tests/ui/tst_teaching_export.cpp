@@ -18,7 +18,7 @@
 using namespace kinstab;
 using namespace kinstab::ui;
 
-class TstTeachingExport : public QObject {
+class TestTeachingExport : public QObject {
     Q_OBJECT
 private slots:
     void framePng() {
@@ -91,5 +91,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TstTeachingExport)
+QTEST_MAIN(TestTeachingExport)
 #include "tst_teaching_export.moc"

@@ -58,7 +58,7 @@ DisplayState expectedAt(const std::vector<SlabEvent>& ev, double tau) {
 
 } // namespace
 
-class TstTeachingPlayer : public QObject {
+class TestTeachingPlayer : public QObject {
     Q_OBJECT
 private slots:
     void playToEnd_data() {
@@ -172,5 +172,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TstTeachingPlayer)
+QTEST_MAIN(TestTeachingPlayer)
 #include "tst_teaching_player.moc"

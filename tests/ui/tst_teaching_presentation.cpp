@@ -41,7 +41,7 @@ bool showTeachingTab(MainWindow& w) {
 }
 } // namespace
 
-class TstTeachingPresentation : public QObject {
+class TestTeachingPresentation : public QObject {
     Q_OBJECT
 private slots:
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
@@ -156,5 +156,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TstTeachingPresentation)
+QTEST_MAIN(TestTeachingPresentation)
 #include "tst_teaching_presentation.moc"

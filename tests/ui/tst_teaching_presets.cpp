@@ -23,7 +23,7 @@
 using namespace kinstab;
 using namespace kinstab::ui;
 
-class TstTeachingPresets : public QObject {
+class TestTeachingPresets : public QObject {
     Q_OBJECT
 private slots:
     void presetSetsPaperParameters_data() {
@@ -236,5 +236,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TstTeachingPresets)
+QTEST_MAIN(TestTeachingPresets)
 #include "tst_teaching_presets.moc"

@@ -15,7 +15,7 @@
 using namespace kinstab;
 using namespace kinstab::ui;
 
-class TstTeachingScreenshots : public QObject {
+class TestTeachingScreenshots : public QObject {
     Q_OBJECT
 private:
     QTemporaryDir tmp_;
@@ -80,5 +80,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TstTeachingScreenshots)
+QTEST_MAIN(TestTeachingScreenshots)
 #include "tst_teaching_screenshots.moc"

@@ -48,7 +48,7 @@ std::string saved(const MainWindow& w) {
 }
 } // namespace
 
-class TstUnits : public QObject {
+class TestUnits : public QObject {
     Q_OBJECT
 private slots:
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
@@ -165,5 +165,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TstUnits)
+QTEST_MAIN(TestUnits)
 #include "tst_units.moc"
