@@ -5,6 +5,7 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "core/base/TextInput.h"
+#include "core/io/JsonText.h"
 #include "core/study/CpuAffinity.h"
 #include "core/study/FragilityText.h"
 #include "core/study/StudyResults.h"
@@ -50,9 +51,7 @@ int runFragility(const ArgList& argv) {
     if (format == "csv") {
         text = fragilityCsv(sets);
     } else {
-        nlohmann::ordered_json j = fragilityJson(sets, b);
-        j["kinstab_version"] = KINSTAB_VERSION; // as jsonText does for every JSON output
-        text = j.dump(2) + "\n";
+        text = jsonText(fragilityJson(sets, b), 2) + "\n";
     }
     writeOutput(args, "o", text);
     return 0;

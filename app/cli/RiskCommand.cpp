@@ -6,10 +6,12 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "core/base/TextInput.h"
+#include "core/io/JsonText.h"
 #include "core/risk/RiskReport.h"
 #include "core/study/StudyRow.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace kinstab::cli {
 
@@ -83,8 +85,7 @@ int runRisk(const ArgList& argv) {
     } catch (const StudyRowError& e) {
         throw UsageError("--results " + std::string(e.what()));
     }
-    j["kinstab_version"] = KINSTAB_VERSION; // as jsonText does for every JSON output
-    writeOutput(args, "o", j.dump(2) + "\n");
+    writeOutput(args, "o", jsonText(std::move(j), 2) + "\n");
     return 0;
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/assessment/AssessmentJson.h"
 
+#include "core/io/JsonValue.h"
+
 #include <algorithm>
 #include <iomanip>
 #include <locale>
@@ -10,19 +12,15 @@ namespace kinstab {
 
 namespace {
 
-nlohmann::json optionalNumber(const std::optional<double>& x) {
-    return x ? nlohmann::json(*x) : nlohmann::json();
-}
-
 nlohmann::json comparisonJson(const Comparison& x) {
     return {{"intensity", x.intensity},
             {"unit", x.unit},
             {"demand_name", x.demandName},
             {"demand", x.demand},
             {"capacity_name", x.capacityName},
-            {"capacity", optionalNumber(x.capacity)},
+            {"capacity", orNull(x.capacity)},
             {"search_limit", x.searchLimit},
-            {"margin", optionalNumber(x.margin)},
+            {"margin", orNull(x.margin)},
             {"margin_at_least", x.margin ? nlohmann::json() : nlohmann::json(x.orderingMargin())},
             {"holds", x.holds()}};
 }
@@ -54,7 +52,7 @@ nlohmann::json assessmentJson(const Assessment& a) {
     nlohmann::json governing;
     if (const Check* c = a.governingCheck())
         governing = {{"id", c->id},
-                     {"margin", optionalNumber(c->governing().margin)},
+                     {"margin", orNull(c->governing().margin)},
                      {"margin_at_least", c->governing().margin
                                              ? nlohmann::json()
                                              : nlohmann::json(c->governing().orderingMargin())},

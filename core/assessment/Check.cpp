@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/assessment/Check.h"
 
+#include "core/base/NameTable.h"
+
 #include "core/codes/Verdict.h"
 
 #include <iomanip>
@@ -9,34 +11,21 @@
 
 namespace kinstab {
 
+// CheckBasis's names, in its declaration order (Sine, Record, Floors, Planar, Risk, Block).
+constexpr std::array<const char*, 6> kCheckBasisNames = {"sine",   "record", "floors",
+                                                         "planar", "risk",   "block"};
+static_assert(kCheckBasisNames.size() == static_cast<std::size_t>(CheckBasis::Block) + 1);
+
 std::string checkBasisName(CheckBasis b) {
-    switch (b) {
-    case CheckBasis::Sine:
-        return "sine";
-    case CheckBasis::Record:
-        return "record";
-    case CheckBasis::Floors:
-        return "floors";
-    case CheckBasis::Planar:
-        return "planar";
-    case CheckBasis::Risk:
-        return "risk";
-    case CheckBasis::Block:
-        return "block";
-    }
-    return "sine";
+    return enumName(kCheckBasisNames, b);
 }
 
+// CheckLevel's names, in its declaration order (Design, MceR, Collapse).
+constexpr std::array<const char*, 3> kCheckLevelNames = {"design", "mce_r", "collapse"};
+static_assert(kCheckLevelNames.size() == static_cast<std::size_t>(CheckLevel::Collapse) + 1);
+
 std::string checkLevelName(CheckLevel l) {
-    switch (l) {
-    case CheckLevel::Design:
-        return "design";
-    case CheckLevel::MceR:
-        return "mce_r";
-    case CheckLevel::Collapse:
-        return "collapse";
-    }
-    return "design";
+    return enumName(kCheckLevelNames, l);
 }
 
 void settleComparisons(Check& c) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/base/UnitSystem.h"
 
+#include "core/base/NameTable.h"
+
 #include <charconv>
 #include <cmath>
 
@@ -34,13 +36,19 @@ std::string lengthText(double metres, UnitSystem s, LengthScale scale) {
     return t == "-0" ? "0" : t;
 }
 
+// UnitSystem's names, in its declaration order (SI, US).
+constexpr std::array<const char*, 2> kUnitSystemNames = {"si", "us"};
+static_assert(kUnitSystemNames.size() == static_cast<std::size_t>(UnitSystem::US) + 1);
+
 std::string unitSystemName(UnitSystem s) {
-    return s == UnitSystem::US ? "us" : "si";
+    return enumName(kUnitSystemNames, s);
 }
 
 std::optional<UnitSystem> unitSystemFromName(const std::string& name) {
-    if (name == "si" || name == "SI") return UnitSystem::SI;
-    if (name == "us" || name == "US") return UnitSystem::US;
+    // The names, or the same in capitals ("SI", "US").
+    if (auto s = enumFromName<UnitSystem>(kUnitSystemNames, name)) return s;
+    for (UnitSystem s : {UnitSystem::SI, UnitSystem::US})
+        if (name == (s == UnitSystem::SI ? "SI" : "US")) return s;
     return std::nullopt;
 }
 

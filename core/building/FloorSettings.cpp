@@ -1,19 +1,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/building/FloorSettings.h"
 
+#include "core/base/NameTable.h"
+
 #include <cmath>
 #include <sstream>
 
 namespace kinstab {
 
+// StiffnessProfile's names, in its declaration order (Uniform, Weight).
+constexpr std::array<const char*, 2> kStiffnessNames = {"uniform", "weight"};
+static_assert(kStiffnessNames.size() == static_cast<std::size_t>(StiffnessProfile::Weight) + 1);
+
 std::string stiffnessName(StiffnessProfile s) {
-    return s == StiffnessProfile::Weight ? "weight" : "uniform";
+    return enumName(kStiffnessNames, s);
 }
 
 std::optional<StiffnessProfile> stiffnessFromName(const std::string& s) {
-    if (s == "uniform") return StiffnessProfile::Uniform;
-    if (s == "weight") return StiffnessProfile::Weight;
-    return std::nullopt;
+    return enumFromName<StiffnessProfile>(kStiffnessNames, s);
 }
 
 InputProblem checkFloorSettings(const FloorSettings& s, int stories) {

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/codes/Atc306.h"
+
+#include "core/base/NameTable.h"
 #include "core/codes/CodeCatalog.h"
 
 #include <algorithm>
@@ -37,15 +39,16 @@ double atcSoilFactor(AtcSoil s) {
     return s == AtcSoil::S1 ? 1.0 : s == AtcSoil::S2 ? 1.2 : 1.5;
 }
 
+// AtcSoil's names, in its declaration order (S1, S2, S3).
+constexpr std::array<const char*, 3> kAtcSoilNames = {"S1", "S2", "S3"};
+static_assert(kAtcSoilNames.size() == static_cast<std::size_t>(AtcSoil::S3) + 1);
+
 std::string atcSoilName(AtcSoil s) {
-    return s == AtcSoil::S1 ? "S1" : s == AtcSoil::S2 ? "S2" : "S3";
+    return enumName(kAtcSoilNames, s);
 }
 
 std::optional<AtcSoil> atcSoilFromName(const std::string& s) {
-    if (s == "S1") return AtcSoil::S1;
-    if (s == "S2") return AtcSoil::S2;
-    if (s == "S3") return AtcSoil::S3;
-    return std::nullopt;
+    return enumFromName<AtcSoil>(kAtcSoilNames, s);
 }
 
 // §4.2.2: T_a = C_T h_n^(3/4) for moment frames (C_T 0.035 steel, 0.025 concrete), else

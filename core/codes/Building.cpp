@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/codes/Building.h"
 
+#include "core/base/NameTable.h"
+
 #include "core/codes/CodeResult.h"
 
 #include <cmath>
@@ -116,14 +118,16 @@ int occupancyClass(Occupancy o) {
     }
 }
 
+// LengthUnit's names, in its declaration order (Feet, Metres).
+constexpr std::array<const char*, 2> kLengthUnitNames = {"ft", "m"};
+static_assert(kLengthUnitNames.size() == static_cast<std::size_t>(LengthUnit::Metres) + 1);
+
 std::string unitName(LengthUnit u) {
-    return u == LengthUnit::Feet ? "ft" : "m";
+    return enumName(kLengthUnitNames, u);
 }
 
 std::optional<LengthUnit> unitFromName(const std::string& s) {
-    if (s == "ft") return LengthUnit::Feet;
-    if (s == "m") return LengthUnit::Metres;
-    return std::nullopt;
+    return enumFromName<LengthUnit>(kLengthUnitNames, s);
 }
 
 namespace {

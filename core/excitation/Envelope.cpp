@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/excitation/Envelope.h"
 
+#include "core/base/NameTable.h"
+
 #include "core/base/TextInput.h"
 
 #include "core/numerics/RootFinding.h"
@@ -109,45 +111,28 @@ std::string Envelope::name() const {
     return s.str();
 }
 
+// EnvelopePreset's names, in its declaration order (Fast, Moderate, Slow).
+constexpr std::array<const char*, 3> kPresetNames = {"fast", "moderate", "slow"};
+static_assert(kPresetNames.size() == static_cast<std::size_t>(EnvelopePreset::Slow) + 1);
+
 std::optional<EnvelopePreset> presetFromName(const std::string& name) {
-    if (name == "fast") return EnvelopePreset::Fast;
-    if (name == "moderate") return EnvelopePreset::Moderate;
-    if (name == "slow") return EnvelopePreset::Slow;
-    return std::nullopt;
+    return enumFromName<EnvelopePreset>(kPresetNames, name);
 }
 
 std::string presetName(EnvelopePreset p) {
-    switch (p) {
-    case EnvelopePreset::Fast:
-        return "fast";
-    case EnvelopePreset::Moderate:
-        return "moderate";
-    case EnvelopePreset::Slow:
-        return "slow";
-    }
-    return "?";
+    return enumName(kPresetNames, p);
 }
 
+// TauScale's names, in its declaration order (TauRise, TauMax, TauDur, One).
+constexpr std::array<const char*, 4> kTauScaleNames = {"tau_rise", "tau_max", "tau_dur", "one"};
+static_assert(kTauScaleNames.size() == static_cast<std::size_t>(TauScale::One) + 1);
+
 std::optional<TauScale> tauScaleFromName(const std::string& name) {
-    if (name == "tau_rise") return TauScale::TauRise;
-    if (name == "tau_max") return TauScale::TauMax;
-    if (name == "tau_dur") return TauScale::TauDur;
-    if (name == "one") return TauScale::One;
-    return std::nullopt;
+    return enumFromName<TauScale>(kTauScaleNames, name);
 }
 
 std::string tauScaleName(TauScale s) {
-    switch (s) {
-    case TauScale::TauRise:
-        return "tau_rise";
-    case TauScale::TauMax:
-        return "tau_max";
-    case TauScale::TauDur:
-        return "tau_dur";
-    case TauScale::One:
-        return "one";
-    }
-    return "?";
+    return enumName(kTauScaleNames, s);
 }
 
 InputProblem checkEnvelope(double alpha, double beta) {

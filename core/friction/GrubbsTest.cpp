@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/friction/GrubbsTest.h"
 
+#include "core/base/NameTable.h"
+
 #include "core/numerics/StudentT.h"
 
 #include <cmath>
@@ -45,16 +47,12 @@ GrubbsResult grubbsTest(const std::vector<double>& x, double alpha, OutlierSide 
     return r;
 }
 
+// OutlierSide's names, in its declaration order (Largest, Smallest, TwoSided).
+constexpr std::array<const char*, 3> kOutlierSideNames = {"largest", "smallest", "two-sided"};
+static_assert(kOutlierSideNames.size() == static_cast<std::size_t>(OutlierSide::TwoSided) + 1);
+
 const char* outlierSideName(OutlierSide side) {
-    switch (side) {
-    case OutlierSide::Largest:
-        return "largest";
-    case OutlierSide::Smallest:
-        return "smallest";
-    case OutlierSide::TwoSided:
-        return "two-sided";
-    }
-    return "?";
+    return enumName(kOutlierSideNames, side);
 }
 
 } // namespace kinstab

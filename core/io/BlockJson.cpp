@@ -1,15 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/BlockJson.h"
 
+#include "core/io/JsonValue.h"
+
 namespace kinstab {
 
 using nlohmann::json;
 
 namespace {
-
-template <class T> json orNull(const std::optional<T>& x) {
-    return x ? json(*x) : json();
-}
 
 // A project lists a handful of blocks; the bound keeps a hostile file from asking for millions
 // of overturning searches.

@@ -2,6 +2,7 @@
 #include "core/io/FloorsJson.h"
 
 #include "core/excitation/FloorFilter.h"
+#include "core/io/JsonValue.h"
 
 #include <locale>
 #include <sstream>
@@ -36,10 +37,6 @@ FloorSettings floorSettingsFromJson(const JsonReader& r) {
 namespace kinstab {
 
 namespace {
-
-json orNull(const std::optional<double>& x) {
-    return x ? json(*x) : json();
-}
 
 const FloorDemand* demandOf(const FloorAnalysis& a, const std::string& code) {
     for (const FloorDemand& d : a.demands)

@@ -8,4 +8,9 @@ std::string jsonText(nlohmann::json j, int indent) {
     return j.dump(indent);
 }
 
+std::string jsonText(nlohmann::ordered_json j, int indent) {
+    if (j.is_object()) j["kinstab_version"] = KINSTAB_VERSION;
+    return j.dump(indent);
+}
+
 } // namespace kinstab

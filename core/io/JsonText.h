@@ -9,7 +9,10 @@
 
 namespace kinstab {
 
-// j with "kinstab_version" added, dumped (indent < 0: one line), without a trailing newline.
+// j with "kinstab_version" added, dumped (indent < 0: one line), without a trailing newline. The
+// one place the version is stamped: a sorted object gets it among its keys, an ordered one
+// (the fragility and risk reports, whose key order is their reading order) last.
 std::string jsonText(nlohmann::json j, int indent = -1);
+std::string jsonText(nlohmann::ordered_json j, int indent = -1);
 
 } // namespace kinstab

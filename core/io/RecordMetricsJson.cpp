@@ -1,15 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/RecordMetricsJson.h"
 
+#include "core/io/JsonValue.h"
+
 namespace kinstab {
-
-namespace {
-
-nlohmann::json orNull(const std::optional<double>& v) {
-    return v ? nlohmann::json(*v) : nlohmann::json();
-}
-
-} // namespace
 
 nlohmann::json recordMetricsJson(const RecordMetrics& m) {
     nlohmann::json j = {{"pga_g", m.pga},

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/records/Accelerogram.h"
 
+#include "core/base/NameTable.h"
+
 #include "core/base/PhysicalConstants.h"
 #include "core/base/TextInput.h"
 
@@ -13,20 +15,12 @@ namespace kinstab {
 
 namespace {} // namespace
 
+// AccelUnit's names, in its declaration order (G, MetresPerS2, CmPerS2, FtPerS2, InPerS2).
+constexpr std::array<const char*, 5> kAccelUnitNames = {"g", "m/s2", "cm/s2", "ft/s2", "in/s2"};
+static_assert(kAccelUnitNames.size() == static_cast<std::size_t>(AccelUnit::InPerS2) + 1);
+
 std::string accelUnitName(AccelUnit u) {
-    switch (u) {
-    case AccelUnit::G:
-        return "g";
-    case AccelUnit::MetresPerS2:
-        return "m/s2";
-    case AccelUnit::CmPerS2:
-        return "cm/s2";
-    case AccelUnit::FtPerS2:
-        return "ft/s2";
-    case AccelUnit::InPerS2:
-        return "in/s2";
-    }
-    return "g";
+    return enumName(kAccelUnitNames, u);
 }
 
 std::optional<AccelUnit> accelUnitFromName(const std::string& name) {

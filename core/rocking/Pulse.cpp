@@ -1,31 +1,25 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/rocking/Pulse.h"
 
+#include "core/base/NameTable.h"
+
 #include <cmath>
 #include <limits>
 #include <numbers>
 
 namespace kinstab {
 
+// PulseShape's names, in its declaration order (HalfSine, OneSine, OneCosine, Rectangular).
+constexpr std::array<const char*, 4> kPulseShapeNames = {"half-sine", "one-sine", "one-cosine",
+                                                         "rectangular"};
+static_assert(kPulseShapeNames.size() == static_cast<std::size_t>(PulseShape::Rectangular) + 1);
+
 std::string_view pulseShapeName(PulseShape s) {
-    switch (s) {
-    case PulseShape::HalfSine:
-        return "half-sine";
-    case PulseShape::OneSine:
-        return "one-sine";
-    case PulseShape::OneCosine:
-        return "one-cosine";
-    case PulseShape::Rectangular:
-        return "rectangular";
-    }
-    return "half-sine";
+    return enumName(kPulseShapeNames, s);
 }
 
 std::optional<PulseShape> pulseShapeFromName(std::string_view name) {
-    for (PulseShape s : {PulseShape::HalfSine, PulseShape::OneSine, PulseShape::OneCosine,
-                         PulseShape::Rectangular})
-        if (pulseShapeName(s) == name) return s;
-    return std::nullopt;
+    return enumFromName<PulseShape>(kPulseShapeNames, name);
 }
 
 double Pulse::omega() const {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/PlanarCase.h"
 
+#include "core/base/NameTable.h"
+
 #include "core/excitation/EnvelopedSine.h"
 #include "core/excitation/FrequencyRange.h"
 #include "core/slab/SlabInputs.h"
@@ -10,14 +12,17 @@
 
 namespace kinstab {
 
+// PlanarNormalization's names, in its declaration order (Product, Envelope).
+constexpr std::array<const char*, 2> kNormalizationNames = {"product", "envelope"};
+static_assert(kNormalizationNames.size() ==
+              static_cast<std::size_t>(PlanarNormalization::Envelope) + 1);
+
 std::string normalizationName(PlanarNormalization n) {
-    return n == PlanarNormalization::Product ? "product" : "envelope";
+    return enumName(kNormalizationNames, n);
 }
 
 std::optional<PlanarNormalization> normalizationFromName(const std::string& name) {
-    if (name == "product") return PlanarNormalization::Product;
-    if (name == "envelope") return PlanarNormalization::Envelope;
-    return std::nullopt;
+    return enumFromName<PlanarNormalization>(kNormalizationNames, name);
 }
 
 InputProblem checkPlanarCase(const PlanarCase& c) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/PlanarSettings.h"
 
+#include "core/base/NameTable.h"
+
 #include "core/base/InputError.h"
 #include "core/codes/Building.h"
 #include "core/excitation/RecordedMotion.h"
@@ -8,22 +10,16 @@
 
 namespace kinstab {
 
+// VerticalSource's names, in its declaration order (None, Rsn68Up, File).
+constexpr std::array<const char*, 3> kVerticalSourceNames = {"none", "rsn68_up", "file"};
+static_assert(kVerticalSourceNames.size() == static_cast<std::size_t>(VerticalSource::File) + 1);
+
 std::string verticalSourceName(VerticalSource v) {
-    switch (v) {
-    case VerticalSource::None:
-        return "none";
-    case VerticalSource::Rsn68Up:
-        return "rsn68_up";
-    case VerticalSource::File:
-        return "file";
-    }
-    return "none";
+    return enumName(kVerticalSourceNames, v);
 }
 
 std::optional<VerticalSource> verticalSourceFromName(const std::string& name) {
-    for (VerticalSource v : {VerticalSource::None, VerticalSource::Rsn68Up, VerticalSource::File})
-        if (verticalSourceName(v) == name) return v;
-    return std::nullopt;
+    return enumFromName<VerticalSource>(kVerticalSourceNames, name);
 }
 
 std::string validatePlanarSettings(const PlanarSettings& s) {

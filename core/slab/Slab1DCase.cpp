@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/Slab1DCase.h"
 
+#include "core/base/NameTable.h"
+
 #include "core/base/InternalError.h"
 #include "core/base/PhysicalConstants.h"
 #include "core/excitation/EnvelopedSine.h"
@@ -14,8 +16,12 @@
 
 namespace kinstab {
 
+// SolverKind's names, in its declaration order (Exact, Paper).
+constexpr std::array<const char*, 2> kSolverNames = {"exact", "paper"};
+static_assert(kSolverNames.size() == static_cast<std::size_t>(SolverKind::Paper) + 1);
+
 std::string solverName(SolverKind s) {
-    return s == SolverKind::Exact ? "exact" : "paper";
+    return enumName(kSolverNames, s);
 }
 
 double tstarFromWallWidth(double d) {

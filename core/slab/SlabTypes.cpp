@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/SlabTypes.h"
+
+#include "core/base/NameTable.h"
 #include "core/slab/SlabInputs.h"
 
 #include <cmath>
@@ -7,50 +9,30 @@
 
 namespace kinstab {
 
+// Outcome's names, in its declaration order (Collapsed, Stable, LiftOff, Failed).
+constexpr std::array<const char*, 4> kOutcomeNames = {"collapsed", "stable", "lift_off", "failed"};
+static_assert(kOutcomeNames.size() == static_cast<std::size_t>(Outcome::Failed) + 1);
+
 std::string outcomeName(Outcome o) {
-    switch (o) {
-    case Outcome::Collapsed:
-        return "collapsed";
-    case Outcome::Stable:
-        return "stable";
-    case Outcome::LiftOff:
-        return "lift_off";
-    case Outcome::Failed:
-        return "failed";
-    }
-    return "failed";
+    return enumName(kOutcomeNames, o);
 }
+
+// ExitSide's names, in its declaration order (None, Across, Along).
+constexpr std::array<const char*, 3> kExitSideNames = {"none", "across", "along"};
+static_assert(kExitSideNames.size() == static_cast<std::size_t>(ExitSide::Along) + 1);
 
 std::string exitSideName(ExitSide s) {
-    switch (s) {
-    case ExitSide::Across:
-        return "across";
-    case ExitSide::Along:
-        return "along";
-    case ExitSide::None:
-        return "none";
-    }
-    return "none";
+    return enumName(kExitSideNames, s);
 }
 
+// EventKind's names, in its declaration order (SlipOnset, Stick, Reversal, Collapse, Stable,
+// DurationCap, LiftOff).
+constexpr std::array<const char*, 7> kEventKindNames = {
+    "slip", "stick", "reversal", "collapse", "stable", "duration_cap", "lift_off"};
+static_assert(kEventKindNames.size() == static_cast<std::size_t>(EventKind::LiftOff) + 1);
+
 std::string eventKindName(EventKind k) {
-    switch (k) {
-    case EventKind::SlipOnset:
-        return "slip";
-    case EventKind::Stick:
-        return "stick";
-    case EventKind::Reversal:
-        return "reversal";
-    case EventKind::Collapse:
-        return "collapse";
-    case EventKind::Stable:
-        return "stable";
-    case EventKind::DurationCap:
-        return "duration_cap";
-    case EventKind::LiftOff:
-        return "lift_off";
-    }
-    return "?";
+    return enumName(kEventKindNames, k);
 }
 
 InputProblem checkSlabParams(const SlabParams& p) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/teaching/TeachingRun.h"
 
+#include "core/base/NameTable.h"
+
 #include "core/base/TextInput.h"
 #include "core/slab/History.h"
 #include "ui/teaching/PlanarPath.h"
@@ -86,26 +88,14 @@ DisplayState displayStateOf(EventKind k) {
     return DisplayState::Failed;
 }
 
+// DisplayState's names, in its declaration order (AtRest, Slip, Stick, Reversal, Collapse, Stable,
+// LiftOff, Failed).
+constexpr std::array<const char*, 8> kDisplayStateNames = {
+    "at rest", "slip", "stick", "reversal", "collapse", "stable", "lift-off", "failed"};
+static_assert(kDisplayStateNames.size() == static_cast<std::size_t>(DisplayState::Failed) + 1);
+
 const char* displayStateName(DisplayState s) {
-    switch (s) {
-    case DisplayState::AtRest:
-        return "at rest";
-    case DisplayState::Slip:
-        return "slip";
-    case DisplayState::Stick:
-        return "stick";
-    case DisplayState::Reversal:
-        return "reversal";
-    case DisplayState::Collapse:
-        return "collapse";
-    case DisplayState::Stable:
-        return "stable";
-    case DisplayState::LiftOff:
-        return "lift-off";
-    case DisplayState::Failed:
-        return "failed";
-    }
-    return "?";
+    return enumName(kDisplayStateNames, s);
 }
 
 TeachingRun::TeachingRun(const TeachingParams& p) : params_(p) {
