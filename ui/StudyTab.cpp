@@ -4,6 +4,7 @@
 
 #include "core/base/TextInput.h"
 #include "core/io/AtomicFile.h"
+#include "core/io/StudyFileWriter.h"
 #include "core/io/StudySpecJson.h"
 #include "core/study/CpuAffinity.h"
 #include "core/study/FragilityText.h"
@@ -55,8 +56,8 @@ QDoubleSpinBox* spin(double lo, double hi, double value, int decimals, const QSt
     return s;
 }
 
-nlohmann::json patternList(const QString& text) {
-    nlohmann::json a = nlohmann::json::array();
+std::vector<std::string> patternList(const QString& text) {
+    std::vector<std::string> a;
     for (const QString& p : text.split(',', Qt::SkipEmptyParts))
         a.push_back(p.trimmed().toStdString());
     return a;
@@ -229,43 +230,21 @@ void StudyTab::setSearch(double maxG, double scanStepG) {
 }
 
 std::string StudyTab::studyJson() const {
-    nlohmann::json study = m_base;
-    nlohmann::json records = {{"path", m_folder->text().toStdString()},
-                              {"include", patternList(m_include->text())},
-                              {"exclude", patternList(m_exclude->text())}};
-    nlohmann::json im = {{"measure", m_measure->currentText().toStdString()}};
-    if (m_measure->currentText() == "sa") im["period_s"] = m_saPeriod->value();
-    // LIST text ("0.4,0.6" or "0.3:0.8:0.1") is what the study file's lists accept too.
-    nlohmann::json params = {{"mu", listText(m_mu)}, {"tstar", listText(m_tstar)}};
-    if (!m_floors->text().trimmed().isEmpty())
-        params["floor_filter"] = {{"periods_s", listText(m_floors)}};
-    study["format"] = "kinstab-study";
-    study["version"] = 1;
+    StudyFileFields f;
+    f.folder = m_folder->text().toStdString();
+    f.include = patternList(m_include->text());
+    f.exclude = patternList(m_exclude->text());
     const QStringList fields{m_folder->text(), m_include->text(), m_exclude->text()};
-    study["records"] =
-        fields == m_openedRecordFields ? m_openedRecords : nlohmann::json::array({records});
-    const nlohmann::json base = m_base.value("intensity", nlohmann::json::object());
-    study["intensity"] = base.is_object() ? base : nlohmann::json::object();
-    study["intensity"].update(im);
-    if (im["measure"] == "pga") study["intensity"].erase("period_s");
-    const nlohmann::json baseParams = m_base.value("parameters", nlohmann::json::object());
-    nlohmann::json& p = study["parameters"] =
-        baseParams.is_object() ? baseParams : nlohmann::json::object();
-    p["mu"] = params["mu"];
-    p["tstar"] = params["tstar"];
-    p.erase("wall_width_in"); // the field is t*
-    if (params.contains("floor_filter")) {
-        if (!p.contains("floor_filter") || !p["floor_filter"].is_object())
-            p["floor_filter"] = nlohmann::json::object();
-        p["floor_filter"]["periods_s"] = params["floor_filter"]["periods_s"];
-    } else {
-        p.erase("floor_filter");
-    }
-    const nlohmann::json baseSearch = m_base.value("search", nlohmann::json::object());
-    study["search"] = baseSearch.is_object() ? baseSearch : nlohmann::json::object();
-    study["search"]["max_g"] = m_maxG->value();
-    study["search"]["scan_step_g"] = m_step->value();
-    return study.dump(2);
+    if (fields == m_openedRecordFields) f.openedRecords = m_openedRecords;
+    f.measure = m_measure->currentText().toStdString();
+    f.saPeriodS = m_saPeriod->value();
+    // LIST text ("0.4,0.6" or "0.3:0.8:0.1") is what the study file's lists accept too.
+    f.mu = listText(m_mu);
+    f.tstar = listText(m_tstar);
+    if (!m_floors->text().trimmed().isEmpty()) f.floorPeriods = listText(m_floors);
+    f.maxG = m_maxG->value();
+    f.scanStepG = m_step->value();
+    return studyFileText(m_base, f);
 }
 
 bool StudyTab::openStudy(const QString& path) {
