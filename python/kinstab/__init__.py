@@ -1,4 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
+# Over 400 lines on purpose: this is the package's whole public surface, each function's
+# signature and docstring, so that help(kinstab) reads as one page beside its stub _core.pyi.
+# What the functions do lives elsewhere: the engine in python/src (C++), the argument checks in
+# _api.py, the result types in _results.py, projects in project.py, studies in study.py.
 """kinstab: can a floor slab held by friction slide off its walls in an earthquake?
 
 The engine of kinstab (Furgerson 1980 stick-slip model) in Python::
