@@ -21,28 +21,6 @@ namespace kinstab::cli {
 
 namespace {
 
-nlohmann::json spectrumJson(const AmplitudeSpectrum& s, std::size_t count) {
-    nlohmann::json peaks = nlohmann::json::array();
-    for (const SpectrumPeak& p : spectrumPeaks(s, count))
-        peaks.push_back({{"frequency_hz", p.frequency}, {"amplitude", p.amplitude}});
-    return {{"points", s.points}, {"df_hz", s.df}, {"peaks", peaks}};
-}
-
-nlohmann::json envelopeFitJson(const Accelerogram& motion) {
-    try {
-        const EnvelopeFit fit = fitEnvelope(motion);
-        // With t* = 1 s the dimensionless times are seconds.
-        const CharacteristicTimes t =
-            Envelope{fit.alpha, fit.beta, std::nullopt}.computedTimes(1.0);
-        return {
-            {"alpha", fit.alpha},    {"beta", fit.beta},     {"scale_g", fit.scale},
-            {"rms_g", fit.rms},      {"peak_g", fit.peak()}, {"peaks", fit.peaks},
-            {"t_rise_s", t.tauRise}, {"t_max_s", t.tauMax},  {"t_dur_s", numberOrNull(t.tauDur)}};
-    } catch (const std::invalid_argument& e) {
-        return {{"error", e.what()}};
-    }
-}
-
 std::string spectraCsv(const AmplitudeSpectrum& ground, const AmplitudeSpectrum* floor) {
     std::ostringstream out;
     out.precision(10);

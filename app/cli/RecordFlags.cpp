@@ -65,25 +65,4 @@ RecordExcitation recordExcitationFromFlags(const Args& args, const std::string& 
     return e;
 }
 
-nlohmann::json accelerogramJson(const Accelerogram& a) {
-    const SignedPeak p = a.peak();
-    return {
-        {"file", utf8FromLegacy(a.sourceFile)}, // a file name need not be UTF-8; JSON must be
-        {"format", a.format},
-        {"name", a.name},
-        {"station", a.station},
-        {"component", a.component},
-        {"npts", a.size()},
-        {"dt", a.dt},
-        {"duration_s", a.duration()},
-        {"file_units", accelUnitName(a.fileUnit)},
-        {"peak_g", p.value},
-        {"peak_time_s", p.time},
-        {"header_peak_g", a.headerPeak ? nlohmann::json(*a.headerPeak) : nlohmann::json(nullptr)}};
-}
-
-nlohmann::json floorFilterJson(const FloorFilterParams& p) {
-    return {{"period_s", p.period}, {"damping", p.damping}, {"tail_s", floorTailSeconds(p)}};
-}
-
 } // namespace kinstab::cli

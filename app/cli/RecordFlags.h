@@ -10,6 +10,7 @@
 #include "app/cli/Args.h"
 #include "core/excitation/FloorFilter.h"
 #include "core/excitation/RecordExcitation.h"
+#include "core/io/RecordJson.h" // the record and floor filter as the commands write them
 #include "core/records/RecordReader.h"
 
 #include <nlohmann/json.hpp>
@@ -30,8 +31,5 @@ std::optional<FloorFilterParams> floorFilterFromFlags(const Args& args);
 // and the scaling (--amplitude PEAK_G or --scale-factor F, exclusive; neither: as recorded).
 // Checks the flags only; the file is read later.
 RecordExcitation recordExcitationFromFlags(const Args& args, const std::string& fileFlag);
-
-nlohmann::json accelerogramJson(const Accelerogram& a); // summary: npts, dt, peak, units, names
-nlohmann::json floorFilterJson(const FloorFilterParams& p);
 
 } // namespace kinstab::cli

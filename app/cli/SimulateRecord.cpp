@@ -40,25 +40,6 @@ void rejectSineFlags(const Args& args) {
             if (args.has(f)) throw UsageError("--" + f + " " + args.text(f) + ": needs --critical");
 }
 
-nlohmann::json fitJson(const RecordAnalysis& a) {
-    if (!a.fit) return {{"error", a.fitError}};
-    const EnvelopeFit& f = *a.fit;
-    return {{"alpha", f.alpha}, {"beta", f.beta},     {"scale_g", f.scale},
-            {"rms_g", f.rms},   {"peak_g", f.peak()}, {"peak_time_s", f.peakTime()}};
-}
-
-nlohmann::json criticalJson(const RecordAnalysis& a, const CriticalSearch& s) {
-    const RecordCriticalScale& c = *a.critical;
-    return {{"peak_g", c.peak ? nlohmann::json(*c.peak) : nlohmann::json()},
-            {"scale_factor", c.factor ? nlohmann::json(*c.factor) : nlohmann::json()},
-            {"motion_peak_g", c.motionPeak},
-            {"runs", c.runs},
-            {"max_amplitude", s.to},
-            {"scan_step", s.scanStep},
-            {"tolerance", s.tolerance},
-            {"wall_time_s", a.criticalSeconds}};
-}
-
 RecordAnalysis analyse(const Args& args, const RecordAnalysisInput& in) {
     try {
         return analyseRecord(in);
@@ -97,11 +78,11 @@ int runSimulateRecord(const Args& args) {
     j["tstar"] = c.tstar;
     j["tau_ref"] = a.tauRef ? nlohmann::json(*a.tauRef) : nlohmann::json(nullptr);
     j["scale"] = tauScaleName(c.scale);
-    j["envelope_fit"] = fitJson(a);
+    j["envelope_fit"] = recordFitJson(a);
     const RecordedMotion motion(a.motion, c.tstar, a.peak);
     j["record_end_tau"] = motion.endTau();
     j["wall_time_s"] = a.runSeconds;
-    if (in.critical) j["critical"] = criticalJson(a, in.search);
+    if (in.critical) j["critical"] = recordCriticalJson(a, in.search);
     if (args.has("events")) j["events"] = eventsJson(a.run.events);
     if (args.has("history")) {
         if (const std::string e = validateHistoryStep(a.run.tauEnd, historyStep); !e.empty())
