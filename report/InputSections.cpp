@@ -3,6 +3,7 @@
 // codes made of it.
 #include "core/excitation/EnvelopedSine.h"
 #include "report/InputLabels.h"
+#include "report/QuantityTable.h"
 #include "report/ReportSections.h"
 #include "report/SliceFigure.h"
 
@@ -97,11 +98,7 @@ void addInputSections(ReportDocument& doc, const Project& p, const ReportAnalysi
     auto len = [&](double v) { return lengthOf(p, buildingMetres(b, v), LengthScale::Structure); };
     doc.addSection(QStringLiteral("Inputs"));
     doc.addHeading(QStringLiteral("Building"), 2);
-    Table t{{"quantity", "symbol", "value", "unit"},
-            {},
-            {3, 1, 2, 1},
-            {Align::Left, Align::Left, Align::Right, Align::Left},
-            {}};
+    Table t = quantityTable();
     t.rows.push_back({"name", "", qs(b.name.empty() ? p.name : b.name), ""});
     t.rows.push_back({"stories", "n", QString::number(b.stories), ""});
     t.rows.push_back({"height of the roof above the base", "h_n", len(b.height), u});
@@ -129,11 +126,7 @@ void addInputSections(ReportDocument& doc, const Project& p, const ReportAnalysi
 
     const Slab1DCase& s = p.slab;
     doc.addHeading(QStringLiteral("Slab, wall and analysis"), 2);
-    Table sl{{"quantity", "symbol", "value", "unit"},
-             {},
-             {3, 1, 2, 1},
-             {Align::Left, Align::Left, Align::Right, Align::Left},
-             {}};
+    Table sl = quantityTable();
     sl.rows.push_back({"model", "",
                        p.model == ModelKind::Planar ? "planar 2-DOF slab" : "1-DOF slab (ch. IV)",
                        ""});
@@ -230,11 +223,7 @@ void addExcitationSection(ReportDocument& doc, const Project& p, const ReportAna
             .arg(qs(e.name())));
     const CharacteristicTimes table = e.scalingTimes(c.tstar);
     const CharacteristicTimes comp = e.computedTimes(c.tstar);
-    Table t{{"parameter", "symbol", "value", "unit"},
-            {},
-            {3, 1, 2, 1},
-            {Align::Left, Align::Left, Align::Right, Align::Left},
-            {}};
+    Table t = quantityTable(QStringLiteral("parameter"));
     t.rows.push_back({"envelope decay rate", "α", num(e.alpha, 4), "1/s"});
     t.rows.push_back({"envelope rise rate", "β", num(e.beta, 4), "1/s"});
     t.rows.push_back({"characteristic time", "t*", num(c.tstar, 4), "s"});

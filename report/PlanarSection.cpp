@@ -2,6 +2,7 @@
 // The planar model's inputs in the report (docs/user-guide.md, Furgerson 1980 ch. VI): shown only
 // when the project's model is planar; the surfaces, A_crit(f) and the check then come from it.
 #include "core/records/ShippedRecords.h"
+#include "report/QuantityTable.h"
 #include "report/ReportSections.h"
 
 namespace kinstab::report {
@@ -40,11 +41,7 @@ void addPlanarInputs(ReportDocument& doc, const Project& p) {
         "wall motion a_x is the enveloped sine of the sweep (amplitude A = A_x, frequency f = "
         "f_x); the along-wall motion a_y has the same envelope. Every surface, A_crit(f) and the "
         "design check in this report come from the planar model."));
-    Table t{{"quantity", "symbol", "value", "unit"},
-            {},
-            {3, 1, 2, 1},
-            {Align::Left, Align::Left, Align::Right, Align::Left},
-            {}};
+    Table t = quantityTable();
     t.rows.push_back({"frequency along the walls", "f_y", num(s.fyHz, 3), "Hz"});
     t.rows.push_back({"amplitude ratio along / across", "A_y/A_x", num(s.ayRatio, 3), ""});
     t.rows.push_back({"along-wall limit (2 length / width)", "Θ", num(s.theta, 2), ""});
