@@ -2,7 +2,7 @@
 #include "core/io/FloorsJson.h"
 
 #include "core/excitation/FloorFilter.h"
-#include "core/io/JsonValue.h"
+#include "core/base/JsonValue.h"
 
 #include <locale>
 #include <sstream>

@@ -1,16 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/FrictionJson.h"
 
+#include "core/base/JsonValue.h"
 #include "core/io/ResultJson.h"
 
 #include <cmath>
 
 namespace kinstab {
 namespace {
-
-nlohmann::json optionalJson(const std::optional<double>& x) {
-    return x ? numberOrNull(*x) : nlohmann::json();
-}
 
 nlohmann::json curveJson(const TripletCurve& c) {
     return {{"delta_in", std::vector<double>(c.delta.begin(), c.delta.end())},
@@ -28,12 +25,12 @@ nlohmann::json coulombJson(const ConfigurationCalibration& c) {
     }
     const CoulombFit& f = *c.coulomb;
     j["points_used"] = f.points;
-    j["bearing_area_in2"] = optionalJson(f.bearingAreaIn2);
+    j["bearing_area_in2"] = finiteOrNull(f.bearingAreaIn2);
     j["through_origin"] = {{"slope_kips_per_psi", f.slopeThroughOrigin},
-                           {"mu_inf", optionalJson(f.muThroughOrigin)}};
+                           {"mu_inf", finiteOrNull(f.muThroughOrigin)}};
     j["with_intercept"] = {{"slope_kips_per_psi", f.slopeWithIntercept},
                            {"intercept_kips", f.interceptKips},
-                           {"mu_inf", optionalJson(f.muWithIntercept)}};
+                           {"mu_inf", finiteOrNull(f.muWithIntercept)}};
     return j;
 }
 
@@ -107,7 +104,7 @@ nlohmann::json frictionCalibrationJson(const FrictionCalibration& cal) {
         {"alpha", o.fit.alpha},
         {"betas", o.betas},
         {"max_cp_psi", o.maxCpPsi},
-        {"bearing_area_in2", optionalJson(o.bearingAreaIn2)},
+        {"bearing_area_in2", finiteOrNull(o.bearingAreaIn2)},
         {"outlier_test", "Grubbs"},
         {"outlier_alpha", o.outlierAlpha},
         {"outlier_side", outlierSideName(o.outlierSide)},

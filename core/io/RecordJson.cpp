@@ -4,7 +4,7 @@
 #include "core/base/TextInput.h"
 #include "core/excitation/Envelope.h"
 #include "core/excitation/EnvelopeFit.h"
-#include "core/io/JsonValue.h"
+#include "core/base/JsonValue.h"
 #include "core/io/ResultJson.h"
 
 #include <stdexcept>

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/FragilityText.h"
 
+#include "core/base/JsonValue.h"
 #include "core/base/TextInput.h"
 
 #include <cmath>
@@ -12,20 +13,15 @@ using ojson = nlohmann::ordered_json;
 
 namespace {
 
-// A number, or null when absent or infinite (an unbounded bootstrap bound).
-ojson orNull(const std::optional<double>& v) {
-    return v && std::isfinite(*v) ? ojson(*v) : ojson();
-}
-
 // Over the records that collapse; the censored ones counted.
 ojson recordStatisticsJson(const RecordStatistics& s) {
     return {{"collapsed", s.collapsed},
             {"censored", s.censored},
-            {"critical_im_mean_g", orNull(s.meanG)},
-            {"critical_im_median_g", orNull(s.medianG)},
-            {"critical_im_std_g", orNull(s.stdG)},
-            {"ln_critical_im_mean", orNull(s.meanLn)},
-            {"ln_critical_im_std", orNull(s.stdLn)}};
+            {"critical_im_mean_g", finiteOrNull<ojson>(s.meanG)},
+            {"critical_im_median_g", finiteOrNull<ojson>(s.medianG)},
+            {"critical_im_std_g", finiteOrNull<ojson>(s.stdG)},
+            {"ln_critical_im_mean", finiteOrNull<ojson>(s.meanLn)},
+            {"ln_critical_im_std", finiteOrNull<ojson>(s.stdLn)}};
 }
 
 ojson setJson(const Fragility& f) {
@@ -45,7 +41,8 @@ ojson setJson(const Fragility& f) {
         j["median_beyond_search"] = f.medianBeyondSearch;
         j["beta_at_bound"] = f.betaAtBound;
         if (f.medianLower) {
-            j["median_bounds_g"] = {orNull(f.medianLower), orNull(f.medianUpper)};
+            j["median_bounds_g"] = {finiteOrNull<ojson>(f.medianLower),
+                                    finiteOrNull<ojson>(f.medianUpper)};
             j["median_upper_unbounded"] = !std::isfinite(*f.medianUpper);
         }
         if (f.betaLower) j["beta_bounds"] = {*f.betaLower, *f.betaUpper};
@@ -62,8 +59,8 @@ ojson setJson(const Fragility& f) {
     for (const auto& c : f.curve)
         curve.push_back({{"im_g", c.intensity},
                          {"p", c.probability},
-                         {"p_lower", orNull(c.lower)},
-                         {"p_upper", orNull(c.upper)}});
+                         {"p_lower", finiteOrNull<ojson>(c.lower)},
+                         {"p_upper", finiteOrNull<ojson>(c.upper)}});
     j["curve"] = curve;
     return j;
 }
@@ -93,8 +90,8 @@ ojson fragilityParametersJson(const StudyRow& p) {
                {"mu", p.mu},
                {"tstar", p.tstar},
                {"limit", p.limit},
-               {"floor_period_s", orNull(p.floorPeriod)},
-               {"floor_damping", orNull(p.floorDamping)}};
+               {"floor_period_s", finiteOrNull<ojson>(p.floorPeriod)},
+               {"floor_damping", finiteOrNull<ojson>(p.floorDamping)}};
     if (p.level) j["level"] = *p.level;
     if (p.motion) j["motion"] = *p.motion;
     return j;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/StudyRow.h"
 
+#include "core/base/JsonValue.h"
 #include "core/base/TextInput.h"
 #include "core/study/StudyFingerprint.h"
 
@@ -15,9 +16,6 @@ namespace kinstab {
 using ojson = nlohmann::ordered_json;
 
 namespace {
-ojson orNull(const std::optional<double>& v) {
-    return v ? ojson(*v) : ojson();
-}
 
 double number(const nlohmann::json& j, const char* key) {
     if (!j.contains(key) || !j[key].is_number())
@@ -93,8 +91,8 @@ std::string studyRowLine(const StudyRow& r) {
                {"mu", r.mu},
                {"tstar", r.tstar},
                {"limit", r.limit},
-               {"floor_period_s", orNull(r.floorPeriod)},
-               {"floor_damping", orNull(r.floorDamping)}};
+               {"floor_period_s", orNull<ojson>(r.floorPeriod)},
+               {"floor_damping", orNull<ojson>(r.floorDamping)}};
     if (r.level) j["level"] = *r.level;
     if (r.motion) j["motion"] = *r.motion;
     j["measure"] = r.measure;
@@ -103,12 +101,12 @@ std::string studyRowLine(const StudyRow& r) {
         j["scale"] = *r.scale;
         j["im_as_given_g"] = r.imAsGiven;
     }
-    j["critical_im_g"] = orNull(r.criticalIntensity);
-    j["critical_peak_g"] = orNull(r.criticalPeak);
+    j["critical_im_g"] = orNull<ojson>(r.criticalIntensity);
+    j["critical_peak_g"] = orNull<ojson>(r.criticalPeak);
     j["limit_im_g"] = r.limitIntensity;
     if (r.scale) {
         j["collapses_as_given"] = r.collapsesAsGiven;
-        j["margin"] = orNull(r.margin);
+        j["margin"] = orNull<ojson>(r.margin);
     }
     if (!r.noFit.empty()) j["no_fit"] = r.noFit;
     j["runs"] = r.runs;
