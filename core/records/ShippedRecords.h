@@ -9,10 +9,10 @@
 namespace kinstab {
 
 // The shipped vertical record: the 1971 San Fernando vertical (NGA RSN68 UP), the stand-in for
-// Furgerson's Pacoima Dam vertical (resources/records/README.md). Its file name, its name as a
-// source in messages (the path the GUI's resources give it), and the note every label and the
-// report show with it.
-inline constexpr const char* kRsn68UpFileName = "RSN68_SFERN_PEL-UP.AT2";
+// Furgerson's Pacoima Dam vertical (resources/records/README.md). Its name as a source in
+// messages (the path the GUI's resources give it) and the note every label and the report show
+// with it; its file name is kRsn68UpFileName, beside the project setting that names it
+// (core/slab/PlanarSettings.h).
 inline constexpr const char* kRsn68UpSource = ":/records/RSN68_SFERN_PEL-UP.AT2";
 inline constexpr const char* kRsn68UpNote =
     "Vertical motion: 1971 San Fernando, LA Hollywood Storage FF, UP (NGA RSN68) stands in for the "

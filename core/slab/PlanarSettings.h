@@ -21,6 +21,7 @@ namespace kinstab {
 enum class VerticalSource { None, Rsn68Up, File };
 std::string verticalSourceName(VerticalSource v); // "none" | "rsn68_up" | "file"
 std::optional<VerticalSource> verticalSourceFromName(const std::string& name);
+inline constexpr const char* kRsn68UpFileName = "RSN68_SFERN_PEL-UP.AT2";
 
 struct PlanarSettings {
     double fyHz = 1.0;    // frequency along the walls (the paper: 0.2, 0.5, 1, 2, 5, 10 Hz)

@@ -7,7 +7,6 @@
 #include "core/assessment/RunAssessment.h"
 #include "core/io/Project.h"
 #include "core/records/RecordReader.h"
-#include "core/records/ShippedRecords.h"
 #include "python/src/Arguments.h"
 #include "python/src/Bindings.h"
 

@@ -16,7 +16,6 @@
 //   KINSTAB_WRITE_PLANAR_GOLDEN=tests/data/planar_golden.csv build/tests/tst_planar_golden
 
 #include "core/records/RecordReader.h"
-#include "core/records/ShippedRecords.h"
 #include "core/slab/PlanarCase.h"
 #include "core/slab/PlanarSettings.h"
 #include "core/sweep/Sweep.h"

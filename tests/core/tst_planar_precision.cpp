@@ -11,7 +11,6 @@
 
 #include "core/precision/PlanarPrecision.h"
 #include "core/records/RecordReader.h"
-#include "core/records/ShippedRecords.h"
 #include "core/slab/PlanarSettings.h"
 
 #include "RecordMotions.h"
