@@ -79,23 +79,23 @@ QSurface3DSeries* makeOverlay(const QColor& color) {
     return s;
 }
 
-void SurfaceView::rebuildOverlays() {
-    Q3DSurface* g = m_3d->graph;
-    for (QSurface3DSeries* s : m_3d->overlays) {
+void drawOverlays3D(SurfaceGraph3D& g3, const GammaGrid& grid, const SurfaceOverlays& overlays) {
+    Q3DSurface* g = g3.graph;
+    for (QSurface3DSeries* s : g3.overlays) {
         g->removeSeries(s);
         delete s;
     }
-    m_3d->overlays.clear();
+    g3.overlays.clear();
     g->removeCustomItems();
-    if (m_grid.empty()) return;
+    if (grid.empty()) return;
 
     // Axes fit the grid (widened to whole 1-2-5 steps); code ratios and the building's frequency
     // are drawn only where they fall on the surface, the legend lists the others.
     // The f axis runs into the depth, foreshortened: at 10 ticks its labels ran into each other
     // (0.5 0.6 0.7 ... at a 1280 px window); 5 keep them apart, 6 for A across the front.
-    const NiceAxis ax = niceAxis(m_grid.amplitudes.front(), m_grid.amplitudes.back(), 6);
-    const NiceAxis fx = niceAxis(m_grid.frequencies.front(), m_grid.frequencies.back(), 5);
-    const float yMax = static_cast<float>(colourScaleMaximum(m_grid));
+    const NiceAxis ax = niceAxis(grid.amplitudes.front(), grid.amplitudes.back(), 6);
+    const NiceAxis fx = niceAxis(grid.frequencies.front(), grid.frequencies.back(), 5);
+    const float yMax = static_cast<float>(colourScaleMaximum(grid));
     const NiceAxis yx = niceAxis(0, yMax, 6);
     auto apply = [](QValue3DAxis* axis, const NiceAxis& n) {
         axis->setRange(static_cast<float>(n.min), static_cast<float>(n.max));
@@ -109,39 +109,38 @@ void SurfaceView::rebuildOverlays() {
     const float aMin = static_cast<float>(ax.min), aMax = static_cast<float>(ax.max);
     const float fMin = static_cast<float>(fx.min), fMax = static_cast<float>(fx.max);
     auto onGrid = [&](double a) {
-        return a >= m_grid.amplitudes.front() && a <= m_grid.amplitudes.back();
+        return a >= grid.amplitudes.front() && a <= grid.amplitudes.back();
     };
     const float lift = 0.012f * yMax; // above the surface, so the overlay does not z-fight
     const float wa = 0.004f * (aMax - aMin), wf = 0.006f * (fMax - fMin);
-    std::vector<float> zs(m_grid.frequencies.begin(), m_grid.frequencies.end());
+    std::vector<float> zs(grid.frequencies.begin(), grid.frequencies.end());
     auto heightAt = [&](std::size_t fi, double a) {
-        const double v = gammaAtAmplitude(m_grid, fi, a);
+        const double v = gammaAtAmplitude(grid, fi, a);
         return static_cast<float>(std::isfinite(v) ? v : 0.0) + lift;
     };
     auto add = [&](QSurface3DSeries* s, QSurfaceDataArray* array) {
         s->dataProxy()->resetArray(array);
         g->addSeries(s);
-        m_3d->overlays.push_back(s);
+        g3.overlays.push_back(s);
     };
-    for (const CodeRatio& c : m_overlays.codes) {
+    for (const CodeRatio& c : overlays.codes) {
         if (!onGrid(c.ratio)) continue;
         const float a = static_cast<float>(c.ratio);
         add(makeOverlay(c.color), makeArray(zs, {a - wa, a + wa}, [&](std::size_t r, std::size_t) {
                 return heightAt(r, c.ratio);
             }));
     }
-    if (m_overlays.buildingFrequency &&
-        *m_overlays.buildingFrequency >= m_grid.frequencies.front() &&
-        *m_overlays.buildingFrequency <= m_grid.frequencies.back()) {
-        const double fb = *m_overlays.buildingFrequency;
-        const std::size_t fi = nearestFrequency(m_grid, fb);
-        std::vector<float> xs(m_grid.amplitudes.begin(), m_grid.amplitudes.end());
+    if (overlays.buildingFrequency && *overlays.buildingFrequency >= grid.frequencies.front() &&
+        *overlays.buildingFrequency <= grid.frequencies.back()) {
+        const double fb = *overlays.buildingFrequency;
+        const std::size_t fi = nearestFrequency(grid, fb);
+        std::vector<float> xs(grid.amplitudes.begin(), grid.amplitudes.end());
         const float f = static_cast<float>(fb);
         add(makeOverlay(Qt::black),
             makeArray({f - wf, f + wf}, xs,
                       [&](std::size_t, std::size_t c) { return heightAt(fi, xs[c]); }));
-        for (std::size_t k = 0; k < m_overlays.codes.size(); ++k) {
-            const CodeRatio& c = m_overlays.codes[k];
+        for (std::size_t k = 0; k < overlays.codes.size(); ++k) {
+            const CodeRatio& c = overlays.codes[k];
             if (!onGrid(c.ratio)) continue;
             const float stagger = (0.10f + 0.09f * static_cast<float>(k)) * yMax; // close ratios
             auto* label = new QCustom3DLabel(
@@ -159,16 +158,16 @@ void SurfaceView::rebuildOverlays() {
     // A_crit(f) where it lies on the grid: the renderer crashes (Qt 6.4) on a strip that
     // leaves the axis range, and the axes no longer stretch to hold it.
     std::vector<std::pair<double, double>> crit;
-    for (const auto& fa : m_overlays.aCrit)
-        if (onGrid(fa.second) && fa.first >= m_grid.frequencies.front() &&
-            fa.first <= m_grid.frequencies.back())
+    for (const auto& fa : overlays.aCrit)
+        if (onGrid(fa.second) && fa.first >= grid.frequencies.front() &&
+            fa.first <= grid.frequencies.back())
             crit.push_back(fa);
     if (crit.size() >= 2) {
         // Columns of this strip are not straight (A_crit varies with f); it is two points wide.
         auto* array = new QSurfaceDataArray;
         for (const auto& [f, a] : crit) {
             // On the surface's rising wall, where gamma_c leaves 0.
-            const float y = heightAt(nearestFrequency(m_grid, f), a);
+            const float y = heightAt(nearestFrequency(grid, f), a);
             const float x = static_cast<float>(a), z = static_cast<float>(f);
             auto* row = new QSurfaceDataRow(2);
             (*row)[0].setPosition(QVector3D(std::max(aMin, x - wa), y, z));

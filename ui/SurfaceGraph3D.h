@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The 3D γc surface's parts (ui/SurfaceView.h): the graph a view holds when OpenGL is there, the
-// axes, arrays, gradient and overlay series it is built from. The overlays themselves (code
-// ratios, building frequency, points not computed) are drawn in SurfaceGraph3D.cpp.
+// axes, arrays, gradient and overlay series it is built from, and the overlays drawn on it (code
+// ratios, building frequency, axes fitted to the grid).
 
-#include "ui/SurfaceView.h"
+#include "ui/SurfaceData.h"
 
 #include <QColor>
 #include <QLinearGradient>
@@ -20,7 +20,7 @@
 
 namespace kinstab::ui {
 
-struct SurfaceView::Graph3D {
+struct SurfaceGraph3D {
     Q3DSurface* graph = nullptr; // owned by the window container
     QWidget* container = nullptr;
     QSurface3DSeries* surface = nullptr;
@@ -39,5 +39,7 @@ QSurfaceDataArray* makeArray(const std::vector<float>& zs, const std::vector<flo
 QLinearGradient surfaceGradient(bool faded);
 // A uniformly coloured surface series for an overlay.
 QSurface3DSeries* makeOverlay(const QColor& color);
+// Fits the axes to the grid and draws the overlays anew (none for an empty grid).
+void drawOverlays3D(SurfaceGraph3D& g3, const GammaGrid& grid, const SurfaceOverlays& overlays);
 
 } // namespace kinstab::ui

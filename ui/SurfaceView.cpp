@@ -306,6 +306,10 @@ QImage SurfaceView::renderImage(QSize size) {
     return m_3d->graph->renderToImage(4, size);
 }
 
+void SurfaceView::rebuildOverlays() {
+    drawOverlays3D(*m_3d, m_grid, m_overlays);
+}
+
 void SurfaceView::updateLegend() {
     auto swatch = [](const QColor& c, const QString& text) {
         return legendEntryHtml(c, text, QStringLiteral("; font-size:large")) +

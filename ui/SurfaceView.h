@@ -22,6 +22,8 @@ class HeatMapView;
 
 enum class SurfaceMode { Surface3D, Top, Map };
 
+struct SurfaceGraph3D;
+
 class SurfaceView : public QWidget {
     Q_OBJECT
 public:
@@ -69,7 +71,7 @@ signals:
     void pointSelected(int ai, int fi);
 
 private:
-    struct Graph3D; // the Data Visualization objects
+    using Graph3D = SurfaceGraph3D; // the Data Visualization objects (ui/SurfaceGraph3D.h)
     QWidget* buildToolBar();
     void build3D(); // m_3d->graph set
     void updateLegend();
