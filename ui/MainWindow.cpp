@@ -51,6 +51,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPainter>
+#include <QRegularExpression>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStackedWidget>
@@ -136,6 +137,10 @@ MainWindow::MainWindow(QWidget* parent)
     buildDocks();
     installPresentationMode(this, m_viewMenu, m_centre, m_teaching);
     installUnitsMenu(m_viewMenu, this, [this](UnitSystem s) { setUnits(s); });
+    // A switch of units is an input step (after the switch, connected later): the project file
+    // keeps its units, so undo restores them.
+    for (QAction* a : m_viewMenu->findChildren<QAction*>(QRegularExpression("^units(SI|US)$")))
+        connect(a, &QAction::triggered, m_undo, &InputHistory::recordChange);
     m_status->setTextFormat(Qt::PlainText);
     statusBar()->addWidget(m_status, 1);
     statusBar()->addPermanentWidget(m_progress);
@@ -164,8 +169,8 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_surface, &SurfaceView::pointSelected, this, &MainWindow::pickPoint);
     // "Use this mu" from the friction calibration goes to the slab's friction field.
     connect(m_friction, &FrictionPanel::useMu, m_slabPanel, &SlabPanel::useMu);
-    // 1280 × 800, or less on a smaller screen; the frame is added at the first show.
-    resize(sizeInside({1280, 800}, screen()->availableGeometry(), {}));
+    // 1280 × 800 (less on a smaller screen, more on a larger); the frame is fitted at first show.
+    resize(openingSize(screen()->availableGeometry()));
     arrangeDocks();
     restoreSettings();
     m_records->preview()->setPlanarBase(m_modelPanel->isPlanar());

@@ -176,7 +176,8 @@ private:
     QString modelTitle() const;
     void saveSettings(bool keepEdits = false);
     void restoreSettings();
-    void setUnits(UnitSystem s); // the views that draw lengths (the fields follow by themselves)
+    void setUnits(UnitSystem s);  // the views that draw lengths (the fields follow by themselves)
+    void showUnits(UnitSystem s); // the menu's mark, the fields and the views (open, undo)
     // A record as the excitation (MainWindowRecord.cpp).
     void buildRecordRun();
     void runRecord();

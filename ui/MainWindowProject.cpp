@@ -69,15 +69,18 @@ void MainWindow::setUnits(UnitSystem s) {
     m_slabPanel->updateDerived();
 }
 
+void MainWindow::showUnits(UnitSystem s) {
+    showUnitSystem(this, s);
+    applyUnitSystem(this, s);
+    setUnits(s);
+}
+
 void MainWindow::showProject(const Project& p) {
     clearResults(); // no result of the previous project may stand under this one's title
     m_project = p;
     showStudy(p.study); // none: the Study tab is cleared, as the other results are
     // The project opens in its own units (the paper's in ft and in), as its report prints them.
-    const UnitSystem units = projectUnits(p);
-    showUnitSystem(this, units);
-    applyUnitSystem(this, units);
-    setUnits(units);
+    showUnits(projectUnits(p));
     showInputs(p);
     m_records->showProject(p); // the project's record, or an empty state
     m_undo->reset();           // a fresh start: nothing to undo, nothing unsaved
