@@ -36,6 +36,7 @@
 #include "ui/SliceChart.h"
 #include "ui/StaleFrame.h"
 #include "ui/SurfaceView.h"
+#include "ui/TabDocks.h"
 #include "ui/Units.h"
 #include "ui/VerdictPanel.h"
 #include "ui/teaching/PresentationMode.h"
@@ -169,9 +170,16 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_surface, &SurfaceView::pointSelected, this, &MainWindow::pickPoint);
     // "Use this mu" from the friction calibration goes to the slab's friction field.
     connect(m_friction, &FrictionPanel::useMu, m_slabPanel, &SlabPanel::useMu);
-    // 1280 × 800 (less on a smaller screen, more on a larger); the frame is fitted at first show.
-    resize(openingSize(screen()->availableGeometry()));
+    // 1280 × 800, or less on a smaller screen (more once the docks are laid out, in
+    // restoreSettings); the frame is fitted at the first show.
+    resize(sizeInside({1280, 800}, screen()->availableGeometry(), {}));
     arrangeDocks();
+    m_tabDocks = new TabDocks(
+        m_centre, m_chartDocks,
+        [this](int i) {
+            return m_centre->widget(i) == m_surface || m_centre->widget(i)->isAncestorOf(m_records);
+        },
+        this);
     restoreSettings();
     m_records->preview()->setPlanarBase(m_modelPanel->isPlanar());
     updateRunState();

@@ -29,6 +29,7 @@ class QTabWidget;
 namespace kinstab::ui {
 
 class BuildingPanel;
+class TabDocks;
 class CodesPanel;
 class CriticalChart;
 class RecentFiles;
@@ -216,6 +217,7 @@ private:
     QDockWidget* m_verdictDock = nullptr;
     std::vector<QDockWidget*> m_chartDocks; // along the bottom
     InputHistory* m_undo = nullptr;
+    TabDocks* m_tabDocks = nullptr;
 
     Project m_project; // the open project: inputs no panel shows are kept from it
     QString m_path;
