@@ -33,7 +33,7 @@ QFont labelFont(const QFont& view) {
 
 } // namespace
 
-class TstTeachingTextScale : public QObject {
+class TestTeachingTextScale : public QObject {
     Q_OBJECT
 private slots:
     void traceMarginsHoldTheirLabels_data() {
@@ -74,5 +74,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TstTeachingTextScale)
+QTEST_MAIN(TestTeachingTextScale)
 #include "tst_teaching_text_scale.moc"
