@@ -27,13 +27,21 @@ shot() {
     XDG_CONFIG_HOME="$tmp/config-$name" DISPLAY=$display timeout 300 "$app" \
         --screenshot "$tmp/self.png" --tab "$tab" "$@" "$project" >/dev/null 2>&1 &
     local run=$!
-    # The app quits after its own screenshot: keep the last grab of the screen before that.
-    for _ in $(seq 1 120); do
-        sleep 1
+    # The app quits after its own screenshot: keep the last grab of the screen before that
+    # which shows something (a grab before the window is mapped is black).
+    rm -f "$tmp/root.png"
+    for _ in $(seq 1 600); do
+        sleep 0.25
         kill -0 "$run" 2>/dev/null || break
-        DISPLAY=$display import -window root "$tmp/root.png" 2>/dev/null || true
+        DISPLAY=$display import -window root "$tmp/grab.png" 2>/dev/null || continue
+        [ "$(convert "$tmp/grab.png" -format '%[fx:mean>0.05]' info:)" = 1 ] &&
+            mv "$tmp/grab.png" "$tmp/root.png"
     done
     kill "$wm" "$xvfb" 2>/dev/null || true
+    if [ ! -f "$tmp/root.png" ]; then
+        echo "no screenshot of $name at $size" >&2
+        return 1
+    fi
     convert "$tmp/root.png" -colors 256 "PNG8:$out/$name-$size.png"
     echo "$out/$name-$size.png"
 }
