@@ -23,6 +23,7 @@
 #include <QValueAxis>
 
 #include <algorithm>
+#include <cmath>
 
 namespace kinstab::ui {
 
@@ -31,6 +32,25 @@ using namespace friction;
 namespace {
 
 const char* kBuiltIn = ":/data/furgerson1980/table1_triplet_tests.csv";
+
+// The decay law's c has the unit 1 / (length · (force · length)^β): xi is δ weighted by the
+// work W^β (Eq. 2). b is a pure number.
+double shownDecayRate(double cPerInch, double beta, const ShownUnits& u) {
+    return cPerInch / (u.length * std::pow(u.force * u.length, beta));
+}
+
+QStringList tableHeader(const ShownUnits& u) {
+    return {QObject::tr("Configuration"),
+            QObject::tr("CP %1").arg(u.p),
+            QObject::tr("Tests"),
+            QObject::tr("V1 %1").arg(u.f),
+            QObject::tr("V∞ %1").arg(u.f),
+            QObject::tr("c 1/%1·(%2·%1)^β").arg(u.l, u.f),
+            QObject::tr("b"),
+            QObject::tr("β"),
+            QObject::tr("f_m %1²").arg(u.f),
+            QObject::tr("Outlier (Grubbs 95 %)")};
+}
 
 } // namespace
 
@@ -74,9 +94,7 @@ void FrictionPanel::buildUi() {
     curves_ = makeChartView(tr("Shear force after fracture"));
     coulomb_ = makeChartView(tr("Asymptotic friction law"));
     table_ = new QTableWidget(0, 10);
-    table_->setHorizontalHeaderLabels({tr("Configuration"), tr("CP psi"), tr("Tests"), tr("V1 kip"),
-                                       tr("V∞ kip"), tr("c"), tr("b"), tr("β"), tr("f_m kip²"),
-                                       tr("Outlier (Grubbs 95 %)")});
+    table_->setHorizontalHeaderLabels(tableHeader(shownUnits(units_)));
     table_->setObjectName("fits");
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->verticalHeader()->hide();
@@ -164,10 +182,7 @@ void FrictionPanel::setUnitSystem(UnitSystem s) {
     if (s == units_) return;
     units_ = s;
     const ShownUnits u = shownUnits(s);
-    table_->setHorizontalHeaderLabels({tr("Configuration"), tr("CP %1").arg(u.p), tr("Tests"),
-                                       tr("V1 %1").arg(u.f), tr("V∞ %1").arg(u.f), tr("c"), tr("b"),
-                                       tr("β"), tr("f_m %1²").arg(u.f),
-                                       tr("Outlier (Grubbs 95 %)")});
+    table_->setHorizontalHeaderLabels(tableHeader(u));
     {
         QSignalBlocker block(area_);
         area_->setSuffix(QStringLiteral(" ") + u.a);
@@ -333,7 +348,7 @@ void FrictionPanel::fillTable() {
                                    QString::fromStdString(g.composite.test),
                                    QString::number(g.fit.v1 * u.force, 'f', 2),
                                    QString::number(g.fit.vInf * u.force, 'f', 2),
-                                   QString::number(g.fit.c, 'f', 2),
+                                   QString::number(shownDecayRate(g.fit.c, g.fit.beta, u), 'g', 3),
                                    QString::number(g.fit.b, 'f', 3),
                                    g.fit.beta == 0.0 ? "0" : "1/3",
                                    QString::number(g.fit.fm * u.force * u.force, 'f', 3),
