@@ -140,8 +140,9 @@ void TeachingRun::runPlanar(const TeachingParams& p) {
     const PlanarCase c = p.toPlanarCase();
     tauRef_ = c.tauRef();
     // The product normalization (PlanarCase's default): each component peaks at its amplitude.
-    accel_ = std::make_unique<EnvelopedSine>(c.envelope, p.amplitude, p.frequencyHz, c.tstar);
-    accelY_ = std::make_unique<EnvelopedSine>(c.envelope, p.ayRatio * p.amplitude, p.fyHz, c.tstar);
+    const Slab1DCase& k = c.common;
+    accel_ = std::make_unique<EnvelopedSine>(k.envelope, p.amplitude, p.frequencyHz, k.tstar);
+    accelY_ = std::make_unique<EnvelopedSine>(k.envelope, p.ayRatio * p.amplitude, p.fyHz, k.tstar);
     PlanarEventLog events;
     PlanarPathLog path;
     PlanarRecorderPair both(&events, &path);
