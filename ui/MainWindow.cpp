@@ -36,6 +36,7 @@
 #include "ui/SliceChart.h"
 #include "ui/StaleFrame.h"
 #include "ui/SurfaceView.h"
+#include "ui/TabDocks.h"
 #include "ui/Units.h"
 #include "ui/VerdictPanel.h"
 #include "ui/teaching/PresentationMode.h"
@@ -51,6 +52,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPainter>
+#include <QRegularExpression>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStackedWidget>
@@ -110,13 +112,25 @@ MainWindow::MainWindow(QWidget* parent)
     buildStatusBar();
     connectInputs();
     connectRuns();
-    // 1280 × 800, or less on a smaller screen; the frame is added at the first show.
+    // 1280 × 800, or less on a smaller screen (more once the docks are laid out, in
+    // restoreSettings); the frame is fitted at the first show.
     resize(sizeInside({1280, 800}, screen()->availableGeometry(), {}));
     arrangeDocks();
+    buildTabDocks();
     restoreSettings();
     m_records->preview()->setPlanarBase(m_modelPanel->isPlanar());
     updateRunState();
     updateTitle();
+}
+
+// The result chart docks give their room to the tabs that do not show them.
+void MainWindow::buildTabDocks() {
+    m_tabDocks = new TabDocks(
+        m_centre, m_chartDocks,
+        [this](int i) {
+            return m_centre->widget(i) == m_surface || m_centre->widget(i)->isAncestorOf(m_records);
+        },
+        this);
 }
 
 // The γc surface and the other tabs share the centre.
@@ -179,6 +193,10 @@ void MainWindow::connectInputs() {
     });
     // "Use this mu" from the friction calibration goes to the slab's friction field.
     connect(m_friction, &FrictionPanel::useMu, m_slabPanel, &SlabPanel::useMu);
+    // A switch of units is an input step (after the switch, connected in installUnitsMenu): the
+    // project file keeps its units, so undo restores them.
+    for (QAction* a : m_viewMenu->findChildren<QAction*>(QRegularExpression("^units(SI|US)$")))
+        connect(a, &QAction::triggered, m_undo, &InputHistory::recordChange);
 }
 
 // The sweep's progress and result, the record's run, and picking a point of the surface.
