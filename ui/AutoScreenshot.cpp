@@ -142,10 +142,11 @@ void screenshotAfterSweep(MainWindow& window, const QString& path, QSize size, i
         window.gridPanel()->setRanges(r);
     }
     const auto grab = [&window, path, tab] {
-        if (!tab.isEmpty())
+        // "Study/Risk": the centre's Study tab, then its Risk view.
+        for (const QString& part : tab.split('/', Qt::SkipEmptyParts))
             for (QTabWidget* t : window.findChildren<QTabWidget*>())
                 for (int i = 0; i < t->count(); ++i)
-                    if (t->tabText(i).startsWith(tab)) t->setCurrentIndex(i);
+                    if (t->tabText(i).startsWith(part)) t->setCurrentIndex(i);
         QTimer::singleShot(1500, &window, [&window, path] {
             const bool ok = window.screenshot().save(path);
             std::fprintf(stderr, "%s %s\n", ok ? "wrote" : "could not write", qPrintable(path));
