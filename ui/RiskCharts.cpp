@@ -79,7 +79,7 @@ void fillHazardChart(QChart* chart, const HazardCurve& c, double targetRate) {
     reset(chart, QObject::tr("Hazard curve"));
     const double lowest = std::min(c.points.back().annualRate, targetRate);
     auto* y = logAxis(decadeBelow(lowest), decadeAbove(c.points.front().annualRate),
-                      QObject::tr("annual rate of exceedance λ(x), 1/yr"));
+                      QObject::tr("λ(x), 1/yr"));
     y->setLabelFormat("%.0e");
     y->setMinorTickCount(0); // a decade per tick: the rates span many
     QLogValueAxis* x = intensityAxis(c);
@@ -93,7 +93,7 @@ void fillHazardChart(QChart* chart, const HazardCurve& c, double targetRate) {
     curve->setPointsVisible(true);
     attach(chart, curve, x, y);
     auto* target = new QLineSeries;
-    target->setName(QObject::tr("target %1 /yr").arg(targetRate, 0, 'g', 3));
+    target->setName(QObject::tr("target %1 /yr").arg(targetRate, 0, 'e', 2));
     target->append(x->min(), targetRate);
     target->append(x->max(), targetRate);
     target->setPen(QPen(kTargetColour, 1.0, Qt::DashLine));
@@ -104,7 +104,7 @@ void fillRiskFragilityChart(QChart* chart, const HazardCurve& c, const SetRisk* 
     reset(chart, QObject::tr("Fragility of the set"));
     auto* y = new QValueAxis;
     y->setRange(0.0, 1.0);
-    y->setTitleText(QObject::tr("P(collapse | x)"));
+    y->setTitleText(QObject::tr("P(C | x)"));
     QLogValueAxis* x = intensityAxis(c);
     chart->addAxis(x, Qt::AlignBottom);
     chart->addAxis(y, Qt::AlignLeft);
@@ -131,7 +131,7 @@ void fillRiskFragilityChart(QChart* chart, const HazardCurve& c, const SetRisk* 
 void fillIntegrandChart(QChart* chart, const HazardCurve& c, const SetRisk* set) {
     reset(chart, QObject::tr("Where λ_C comes from"));
     auto* y = new QValueAxis;
-    y->setTitleText(QObject::tr("dλ_C / d ln x, 1/yr"));
+    y->setTitleText(QObject::tr("dλ_C/d ln x, 1/yr"));
     QLogValueAxis* x = intensityAxis(c);
     chart->addAxis(x, Qt::AlignBottom);
     chart->addAxis(y, Qt::AlignLeft);
@@ -147,7 +147,7 @@ void fillIntegrandChart(QChart* chart, const HazardCurve& c, const SetRisk* set)
     // ticks read 1, 2, 3 rather than 0.00001, 0.00002.
     const int exponent = top > 0.0 ? static_cast<int>(std::floor(std::log10(top))) : 0;
     const double unit = std::pow(10.0, exponent);
-    y->setTitleText(QObject::tr("dλ_C / d ln x, 1e%1 /yr").arg(exponent));
+    y->setTitleText(QObject::tr("dλ_C/d ln x, 1e%1/yr").arg(exponent));
     auto* upper = new QLineSeries;
     auto* lower = new QLineSeries;
     for (const RiskIntegrandPoint& p : set->integrand) {
@@ -157,7 +157,7 @@ void fillIntegrandChart(QChart* chart, const HazardCurve& c, const SetRisk* set)
     top /= unit;
     auto* area = new QAreaSeries(upper, lower);
     area->setName(
-        QObject::tr("within the curve: %1 /yr").arg(set->risk->integral.withinCurve, 0, 'g', 3));
+        QObject::tr("within the curve: %1 /yr").arg(set->risk->integral.withinCurve, 0, 'e', 2));
     QColor fill = kSetColour;
     fill.setAlpha(70);
     area->setBrush(fill);
@@ -168,7 +168,7 @@ void fillIntegrandChart(QChart* chart, const HazardCurve& c, const SetRisk* set)
     auto* beyond = new QLineSeries;
     beyond->setName(QObject::tr("beyond %1 g: %2 /yr")
                         .arg(c.points.back().imG, 0, 'g', 3)
-                        .arg(set->risk->integral.beyondLastPoint, 0, 'g', 3));
+                        .arg(set->risk->integral.beyondLastPoint, 0, 'e', 2));
     beyond->append(c.points.back().imG, 0.0);
     beyond->append(c.points.back().imG, top);
     beyond->setPen(QPen(kTargetColour, 2.0, Qt::DashLine));

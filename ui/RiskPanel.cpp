@@ -105,32 +105,40 @@ QLayout* RiskPanel::buildInputs() {
     row->addWidget(new QLabel(tr("Hazard curve"), this));
     row->addWidget(m_file, 1);
     row->addWidget(pick);
-    row->addWidget(new QLabel(tr("Set"), this));
-    row->addWidget(m_set);
-    row->addWidget(new QLabel(tr("P(C) at"), this));
-    row->addWidget(m_imOfInterest);
+    auto* choice = new QHBoxLayout;
+    choice->addWidget(new QLabel(tr("Set"), this));
+    choice->addWidget(m_set, 1);
+    choice->addWidget(new QLabel(tr("P(C) at"), this));
+    choice->addWidget(m_imOfInterest);
     auto* column = new QVBoxLayout;
     column->addLayout(row);
+    column->addLayout(choice);
     column->addWidget(m_imError, 0, Qt::AlignRight);
     return column;
 }
 
-// Hazard, fragility and integrand side by side over the same decades, the numbers at the right.
+// Hazard and fragility above, the integrand and the numbers below: two columns fit the centre
+// of a 1280 x 800 window (three charts and the numbers in a row need 1100 px), and the hazard
+// curve and the integrand share their intensity axis's decades in one column.
 QLayout* RiskPanel::buildCharts() {
-    auto* grid = new QHBoxLayout;
-    for (QChartView* v : {m_hazardChart, m_fragilityChart, m_integrandChart}) {
+    auto* grid = new QGridLayout;
+    const QList<QChartView*> views = {m_hazardChart, m_fragilityChart, m_integrandChart};
+    for (QChartView* v : views) {
         v->setRenderHint(QPainter::Antialiasing);
-        v->setMinimumSize(240, 260);
+        v->setMinimumSize(300, 250);
         v->chart()->setMargins(QMargins(2, 2, 2, 2));
-        grid->addWidget(v, 1);
     }
+    grid->addWidget(m_hazardChart, 0, 0);
+    grid->addWidget(m_fragilityChart, 0, 1);
+    grid->addWidget(m_integrandChart, 1, 0);
     m_numbers->setTextFormat(Qt::RichText);
     m_numbers->setWordWrap(true);
     m_numbers->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     m_numbers->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_numbers->setMinimumWidth(300);
-    m_numbers->setMaximumWidth(380);
-    grid->addWidget(m_numbers);
+    grid->addWidget(m_numbers, 1, 1);
+    grid->setColumnStretch(0, 1);
+    grid->setColumnStretch(1, 1);
     m_status->setWordWrap(true);
     return grid;
 }

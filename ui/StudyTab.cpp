@@ -169,16 +169,25 @@ QLayout* StudyTab::buildForm() {
     imRow->addWidget(m_measure);
     imRow->addWidget(new QLabel(tr("Sa period"), this));
     imRow->addWidget(m_saPeriod);
-    auto* form = new QFormLayout;
-    form->addRow(tr("Records folder"), folderRow);
-    form->addRow(tr("Include files"), m_include);
-    form->addRow(tr("Exclude files"), m_exclude);
-    form->addRow(tr("Intensity measure"), imRow);
-    form->addRow(tr("μ (LIST)"), m_mu);
-    form->addRow(tr("t* s (LIST)"), m_tstar);
-    form->addRow(tr("Floor periods s (LIST)"), m_floors);
-    form->addRow(tr("Search up to"), m_maxG);
-    form->addRow(tr("Scan step"), m_step);
+    // Two columns, the records and the parameters: five rows of fields rather than nine leave
+    // the height to the results (the tab shares the window with the docks at 1280 x 800).
+    auto* records = new QFormLayout;
+    records->addRow(tr("Records folder"), folderRow);
+    records->addRow(tr("Include files"), m_include);
+    records->addRow(tr("Exclude files"), m_exclude);
+    records->addRow(tr("Intensity measure"), imRow);
+    auto* searchRow = new QHBoxLayout;
+    searchRow->addWidget(m_maxG);
+    searchRow->addWidget(new QLabel(tr("scan step"), this));
+    searchRow->addWidget(m_step);
+    auto* parameters = new QFormLayout;
+    parameters->addRow(tr("μ (LIST)"), m_mu);
+    parameters->addRow(tr("t* s (LIST)"), m_tstar);
+    parameters->addRow(tr("Floor periods s (LIST)"), m_floors);
+    parameters->addRow(tr("Search up to"), searchRow);
+    auto* form = new QHBoxLayout;
+    form->addLayout(records, 3);
+    form->addLayout(parameters, 2);
     return form;
 }
 
