@@ -9,6 +9,8 @@
 
 #include "core/risk/SetRisk.h"
 
+#include <QString>
+
 class QChart;
 
 namespace kinstab::ui {
