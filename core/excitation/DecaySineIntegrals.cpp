@@ -77,8 +77,10 @@ const DecaySineIntegrals::Point& DecaySineIntegrals::origin(Memo& m, double t0) 
     return m.origin;
 }
 
+// The point just formed is asked for again when an event's state follows its root solve at the
+// last point the solve evaluated: the same time, the same bits.
 const DecaySineIntegrals::Point& DecaySineIntegrals::endAt(Memo& m, double t) const {
-    pointAt(t, m.end);
+    if (m.end.t != t) pointAt(t, m.end);
     return m.end;
 }
 
@@ -169,14 +171,18 @@ double DecaySineIntegrals::second(double t0, double h) const {
     return (endAt(m, t0 + h).p2 - o.p2 - o.p1 * h).imag();
 }
 
-double DecaySineIntegrals::both(double t0, double h, double& secondOut) const {
+double DecaySineIntegrals::both(double t0, double h, double& secondOut, double* valueAtEnd) const {
     Memo& m = memo();
     const Point& o = origin(m, t0);
     if (zqAbs_ * h <= kShortSpan) {
         secondOut = shortSpan(o, h, 2).imag();
-        return shortSpan(o, h, 1).imag();
+        Complex end;
+        const double v = shortSpan(o, h, 1, valueAtEnd ? &end : nullptr).imag();
+        if (valueAtEnd) *valueAtEnd = end.imag();
+        return v;
     }
     const Point& p = endAt(m, t0 + h);
+    if (valueAtEnd) *valueAtEnd = (p.near ? p.eq * p.em1 : p.ep - p.eq).imag();
     secondOut = (p.p2 - o.p2 - o.p1 * h).imag();
     return (p.p1 - o.p1).imag();
 }

@@ -22,8 +22,9 @@ public:
     double first(double t0, double h, double* valueAtEnd = nullptr) const;
     // int_{t0}^{t0+h} (t0 + h - s) g(s) ds  (the second integral of g from t0)
     double second(double t0, double h) const;
-    // first(t0, h), with second(t0, h) in secondOut, from one set of exponentials.
-    double both(double t0, double h, double& secondOut) const;
+    // first(t0, h), with second(t0, h) in secondOut, from one set of exponentials; with
+    // valueAtEnd, also g(t0 + h) as first() gives it.
+    double both(double t0, double h, double& secondOut, double* valueAtEnd = nullptr) const;
 
 private:
     using Complex = std::complex<double>;

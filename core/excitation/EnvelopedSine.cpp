@@ -98,6 +98,14 @@ double EnvelopedSine::velocityAndDisplacementChange(double t0, double t1, double
     return dv;
 }
 
+double EnvelopedSine::changesAndAccel(double t0, double t1, double& dx, double& accelAtT1) const {
+    double second = 0.0, shape = 0.0;
+    const double dv = scale_ * integrals_.both(t0, t1 - t0, second, &shape);
+    dx = scale_ * second;
+    accelAtT1 = scale_ * shape;
+    return dv;
+}
+
 long EnvelopedSine::halfPeriodIndex(double segmentStart) const {
     return static_cast<long>(std::floor(segmentStart / halfPeriod_ + 1e-9));
 }
@@ -134,30 +142,42 @@ double EnvelopedSine::halfPeriodPeak(long k) const {
 
 // With e'/e frozen at its midpoint value lambda, the peak is where
 // cot(omega (tau - lo)) = -lambda/omega: within ~1e-3 of the true one.
-double EnvelopedSine::peakGuess(long k) const {
+double EnvelopedSine::peakGuess(long k, double* logSlope) const {
     const double lo = static_cast<double>(k) * halfPeriod_;
     ++evaluationCount();
     double lambda = 0.0, r2 = 0.0;
     logSlopes(lo + 0.5 * halfPeriod_, lambda, r2);
+    if (logSlope) *logSlope = lambda;
     return lo + (0.5 * std::numbers::pi + std::atan(lambda / omega_)) / omega_;
 }
 
-// A solver asks for a hump's rising and then its falling crossing: remember the last hump per
-// thread. The key holds every input, so objects can never see each other's values.
-std::optional<EnvelopedSine::Hump> EnvelopedSine::humpAbove(long k, double target) const {
-    struct Memo {
-        std::array<double, 5> key{};
-        long k = -1;
-        std::optional<Hump> hump;
-    };
-    thread_local Memo memo;
+// A solver asks for a hump's rising and then its falling crossing, and a slab that sticks and
+// slides again on the same hump asks for one of them twice: remember the last hump per thread,
+// with its crossings once solved. The key holds every input, so objects can never see each
+// other's values.
+struct EnvelopedSine::HumpMemo {
+    std::array<double, 5> key{};
+    long k = -1;
+    std::optional<Hump> hump;
+    std::array<double, 2> root{}; // falling, rising; NaN until solved
+};
+
+EnvelopedSine::HumpMemo& EnvelopedSine::humpMemo(long k, double target) const {
+    thread_local HumpMemo memo;
     const std::array<double, 5> key{p_, q_, omega_, scale_, target};
     if (memo.k != k || memo.key != key) {
         memo.hump = findHumpAbove(k, target);
         memo.k = k;
         memo.key = key;
+        memo.root.fill(std::numeric_limits<double>::quiet_NaN());
     }
-    return memo.hump;
+    return memo;
+}
+
+double EnvelopedSine::humpRootOnce(HumpMemo& memo, double target, bool rising) const {
+    double& root = memo.root[rising ? 1 : 0];
+    if (std::isnan(root)) root = humpRoot(*memo.hump, target, rising);
+    return root;
 }
 
 std::optional<EnvelopedSine::Hump> EnvelopedSine::findHumpAbove(long k, double target) const {
@@ -165,7 +185,8 @@ std::optional<EnvelopedSine::Hump> EnvelopedSine::findHumpAbove(long k, double t
     if (boundOn(lo, lo + halfPeriod_) <= target) return std::nullopt;
     // |a| is unimodal on the half-period, so any point above the level splits its two
     // crossings: the peak guess usually is one; only near grazing is the true peak needed.
-    Hump h{k, k % 2 == 0 ? 1.0 : -1.0, peakGuess(k), 0.0, 0.0};
+    Hump h{k, k % 2 == 0 ? 1.0 : -1.0, 0.0, 0.0, 0.0, 0.0};
+    h.m = peakGuess(k, &h.logSlope);
     for (int attempt = 0; attempt < 2; ++attempt) {
         if (attempt == 1) h.m = halfPeriodPeak(k);
         ++evaluationCount();
@@ -185,8 +206,16 @@ double EnvelopedSine::humpRoot(const Hump& h, double target, bool rising) const 
     };
     const double lo = static_cast<double>(h.k) * halfPeriod_, hi = lo + halfPeriod_;
     // First guess: the envelope frozen at its value at m, |a| = level where
-    // |sin(omega (tau - lo))| = level / (scale e(m)).
-    const double offset = std::asin(std::min(1.0, target / (scale_ * h.envelope))) / omega_;
+    // |sin(omega (tau - lo))| = level / (scale e(m)); then the envelope at that guess from its
+    // log-slope (e(t) ~ e(m) exp(lambda (t - m)), no closed-form evaluation) and the same step
+    // again. The start is then within about 1e-6 of the root instead of 1e-3, and Newton needs
+    // one evaluation fewer (docs/theory.md §6.3).
+    const auto offsetAt = [&](double e) {
+        return std::asin(std::min(1.0, target / (scale_ * e))) / omega_;
+    };
+    const double first = offsetAt(h.envelope);
+    const double guess = rising ? lo + first : hi - first;
+    const double offset = offsetAt(h.envelope * std::exp(h.logSlope * (guess - h.m)));
     return rising
                ? safeguardedNewton(fdf, lo, h.m, -target, h.peakValue - target, 200, lo + offset).x
                : safeguardedNewton(fdf, h.m, hi, h.peakValue - target, -target, 200, hi - offset).x;
@@ -196,12 +225,12 @@ Crossings EnvelopedSine::crossings(double level, double segmentStart, double seg
     Crossings out;
     const long k = halfPeriodIndex(segmentStart);
     if (level == 0.0 || (level > 0.0) != (k % 2 == 0)) return out;
-    const auto hump = humpAbove(k, std::abs(level));
-    if (!hump) return out;
+    HumpMemo& memo = humpMemo(k, std::abs(level));
+    if (!memo.hump) return out;
     // Only the crossings inside the segment: a segment cut short (a duration cap) must not
     // report the half-period's crossings beyond its end.
     for (const bool rising : {true, false}) {
-        const double t = humpRoot(*hump, std::abs(level), rising);
+        const double t = humpRootOnce(memo, std::abs(level), rising);
         if (t > segmentStart && t < segmentEnd) out.add(t);
     }
     return out;
@@ -211,9 +240,10 @@ Crossings EnvelopedSine::crossings(double level, double segmentStart, double seg
 // root on the wrong side of (lo, hi) is not even computed.
 double EnvelopedSine::humpCrossing(double level, double lo, double hi, bool rising) const {
     constexpr double none = std::numeric_limits<double>::quiet_NaN();
-    const auto hump = humpAbove(halfPeriodIndex(lo), level);
+    HumpMemo& memo = humpMemo(halfPeriodIndex(lo), level);
+    const auto& hump = memo.hump;
     if (!hump || (rising && lo >= hump->m) || (!rising && hi <= hump->m)) return none;
-    const double t = humpRoot(*hump, level, rising);
+    const double t = humpRootOnce(memo, level, rising);
     return t > lo && t < hi ? t : none;
 }
 

@@ -26,6 +26,7 @@ public:
     double velocityChangeAndAccel(double t0, double t1, double& accelAtT1) const override;
     double displacementChange(double t0, double t1) const override;
     double velocityAndDisplacementChange(double t0, double t1, double& dx) const override;
+    double changesAndAccel(double t0, double t1, double& dx, double& accelAtT1) const override;
     double segmentEnd(double segmentStart) const override;
     Crossings crossings(double level, double segmentStart, double segmentEnd) const override;
     double boundAfter(double tau) const override;
@@ -50,7 +51,8 @@ public:
     // Where |a| peaks in the half-period [k pi/omega, (k+1) pi/omega].
     double halfPeriodPeak(long k) const;
     // A cheap first guess of halfPeriodPeak(k), within ~1e-3 of it.
-    double peakGuess(long k) const;
+    // With logSlope, also e'/e at the half-period's middle, the factor the guess is made of.
+    double peakGuess(long k, double* logSlope = nullptr) const;
 
 private:
     static long& evaluationCount(); // per thread, as the memos below
@@ -65,8 +67,11 @@ private:
     struct Hump {
         long k = 0;
         double sign = 1, m = 0, peakValue = 0, envelope = 0;
+        double logSlope = 0; // e'/e at the half-period's middle: e(t) ~ e(m) exp(logSlope (t - m))
     };
-    std::optional<Hump> humpAbove(long k, double target) const;
+    struct HumpMemo;
+    HumpMemo& humpMemo(long k, double target) const; // the last hump and its solved crossings
+    double humpRootOnce(HumpMemo& memo, double target, bool rising) const;
     std::optional<Hump> findHumpAbove(long k, double target) const;
     // Where |a| rises (rising) or falls through target on that hump.
     double humpRoot(const Hump& h, double target, bool rising) const;

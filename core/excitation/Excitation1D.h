@@ -46,6 +46,12 @@ public:
         dx = displacementChange(t0, t1);
         return velocityChange(t0, t1);
     }
+    // Both changes and accel(t1) at once: a slip piece's end state and the slope of its
+    // velocity there, which a stop search between two piece ends needs at both ends.
+    virtual double changesAndAccel(double t0, double t1, double& dx, double& accelAtT1) const {
+        accelAtT1 = accel(t1);
+        return velocityAndDisplacementChange(t0, t1, dx);
+    }
     // Time line cut into segments; each segment is small enough that a(tau) crosses any level
     // at most Crossings::t.size() times in it, and crossings() finds them all with a bracket.
     virtual double segmentEnd(double segmentStart) const = 0;

@@ -67,6 +67,24 @@ private:
         x = slipDisplacement(tau, dx);
         return slipVelocity(tau, dv);
     }
+    // The slip state at tau with a(tau), from one closed-form evaluation: a piece's end, whose
+    // a gives the velocity's slope there to a stop search that ends at it.
+    struct EndState {
+        double tau = 0, x = 0, v = 0, a = 0;
+    };
+    EndState stateAt(double tau) {
+        ++r_.work.accelEvaluations;
+        EndState e{tau, 0.0, 0.0, 0.0};
+        double dx = 0.0;
+        const double dv = a_.changesAndAccel(t_, tau, dx, e.a);
+        e.x = slipDisplacement(tau, dx);
+        e.v = slipVelocity(tau, dv);
+        return e;
+    }
+    // slipSlope(tau) from a(tau) when an evaluation already made gave it (NaN: not known).
+    double slipSlope(double tau, double knownAccel) {
+        return std::isnan(knownAccel) ? slipSlope(tau) : -p_.mu - s_ * knownAccel;
+    }
     struct Cut {
         double tau = 0;
         int kind = 0; // +1: a crosses mu, -1: a crosses -mu, 0: segment end
@@ -94,20 +112,24 @@ private:
     double nextOnset(double hi);
     Step cutIntoPieces(double lo, double hi);
     Step piece(double lo, double hi, int excess);
-    Step slipThrough(double hi, AtStop atStop);
-    Step slipTo(double tEnd, double xEnd, double vEnd);
+    Step slipThrough(double hi, AtStop atStop, const EndState* known = nullptr);
+    Step slipTo(const EndState& end);
     bool collapsesBy(double tEnd, double xEnd, double vEnd);
-    bool onset(double tau, int s) {
+    // accelAt: a(tau) where it is known without an evaluation (the level at a crossing).
+    bool onset(double tau, int s, double accelAt = std::numeric_limits<double>::quiet_NaN()) {
         // The slab lags the walls, sliding against the acceleration.
         t_ = tau;
+        aT_ = accelAt;
         s_ = s;
         ++r_.slipIntervals;
         return event(EventKind::SlipOnset, s_);
     }
-    void moveTo(double tau, double x, double v) {
+    void moveTo(double tau, double x, double v,
+                double accelAt = std::numeric_limits<double>::quiet_NaN()) {
         t_ = tau;
         x_ = x;
         v_ = v;
+        aT_ = accelAt;
         r_.maxAbsDelta = std::max(r_.maxAbsDelta, std::abs(x));
     }
     bool event(EventKind kind, int direction) {
@@ -152,6 +174,9 @@ private:
     const RunOptions& o_;
     SlabResult r_;
     double t_ = 0, x_ = 0, v_ = 0;
+    // a(t_) when the evaluation that moved the slip to t_ gave it, else NaN: the stop search
+    // from t_ takes the velocity's slope at t_ from it instead of evaluating a again.
+    double aT_ = std::numeric_limits<double>::quiet_NaN();
     int s_ = 0; // 0 sticking, +1/-1 slipping with that sign of relative velocity
 };
 
@@ -216,7 +241,10 @@ ExactRun::Step ExactRun::hump(double hi, int sigma) {
         if (s_ == 0) {
             const double tOnset = nextOnset(hi);
             if (!std::isfinite(tOnset)) return Step::Continue; // stuck through the hump
-            if (!onset(tOnset, -sigma)) return Step::Done;
+            const bool atCrossing = tOnset > t_;               // else at t_, a grazing restart
+            if (!onset(tOnset, -sigma,
+                       atCrossing ? sigma * p_.mu : std::numeric_limits<double>::quiet_NaN()))
+                return Step::Done;
         } else if (s_ == sigma) {
             if (slipThrough(hi, AtStop::Decide) == Step::Done) return Step::Done;
             if (s_ != -sigma) continue; // through to hi, or stuck: look for the next onset
@@ -224,7 +252,7 @@ ExactRun::Step ExactRun::hump(double hi, int sigma) {
             const double c1 = a_.humpCrossing(p_.mu, t_, hi, true);
             if (!std::isfinite(c1)) return slipThrough(hi, AtStop::Stick);
             if (slipThrough(c1, AtStop::Stick) == Step::Done) return Step::Done;
-            if (s_ == 0 && !onset(c1, -sigma)) return Step::Done;
+            if (s_ == 0 && !onset(c1, -sigma, sigma * p_.mu)) return Step::Done;
         }
         // Sliding against a at t_ inside [c1, c2] (just started, reversed, or carried in).
         if (slipAgainst(hi) == Step::Done) return Step::Done;
@@ -247,13 +275,15 @@ double ExactRun::nextOnset(double hi) {
 
 // Sliding against a from t_ in [c1, c2]: s v rises until c2, then falls, so it cannot stop
 // before hi if it is still positive there; only otherwise is c2 needed, to bracket the stop.
+// The state at hi found first stays the end of the stop search after c2, unless an event on
+// the way to c2 changed the slip.
 ExactRun::Step ExactRun::slipAgainst(double hi) {
-    double xHi = 0.0;
-    const double vHi = velocityAndDisplacementAt(hi, xHi);
-    if (s_ * vHi > 0.0) return slipTo(hi, xHi, vHi);
+    const EndState atHi = stateAt(hi);
+    if (s_ * atHi.v > 0.0) return slipTo(atHi);
     const double c2 = a_.humpCrossing(p_.mu, t_, hi, false);
+    const long events = r_.work.events;
     if (std::isfinite(c2) && slipThrough(c2, AtStop::Reverse) == Step::Done) return Step::Done;
-    return slipThrough(hi, AtStop::Stick);
+    return slipThrough(hi, AtStop::Stick, r_.work.events == events ? &atHi : nullptr);
 }
 
 // Cut [lo, hi] at every crossing of |a| = mu, then each piece has a fixed sign of
@@ -305,27 +335,30 @@ ExactRun::Step ExactRun::piece(double lo, double hi, int excess) {
 }
 
 // Slip from t_ to hi (inside one piece); handles a stop, a reversal and collapse. With
-// AtStop::Decide it returns at the first stop (t_ < hi then).
-ExactRun::Step ExactRun::slipThrough(double hi, AtStop atStop) {
+// AtStop::Decide it returns at the first stop (t_ < hi then). known: the slip's state at hi,
+// already evaluated from an earlier point of the same slip.
+ExactRun::Step ExactRun::slipThrough(double hi, AtStop atStop, const EndState* known) {
     while (true) {
-        double xHi = 0.0;
-        const double vHi = velocityAndDisplacementAt(hi, xHi);
+        const EndState atHi = known ? *known : stateAt(hi);
+        known = nullptr; // a reversal below starts another slip
+        const double vHi = atHi.v;
         const bool stops = s_ * vHi <= 0.0 && !(atStop == AtStop::Reverse && v_ == 0.0);
-        if (!stops) return slipTo(hi, xHi, vHi);
+        if (!stops) return slipTo(atHi);
         // s v <= 0 already at t_ only through rounding right after a grazing onset: stop there.
-        const double tStop = (s_ * v_ <= 0.0)
-                                 ? t_
-                                 : rootOf(
-                                       [&](double tau, double& f, double& df) {
-                                           double a = 0.0;
-                                           f = s_ * velocityAt(tau, &a);
-                                           df = s_ * (-s_ * p_.mu - a);
-                                       },
-                                       t_, hi, s_ * v_, s_ * vHi, slipSlope(t_), slipSlope(hi));
-        const double xStop = displacementAt(tStop);
-        if (collapsesBy(tStop, xStop, 0.0)) return Step::Done;
-        moveTo(tStop, xStop, 0.0);
-        if (atStop == AtStop::Reverse || (atStop == AtStop::Decide && excessAt(tStop) != 0)) {
+        const double tStop = (s_ * v_ <= 0.0) ? t_
+                                              : rootOf(
+                                                    [&](double tau, double& f, double& df) {
+                                                        double a = 0.0;
+                                                        f = s_ * velocityAt(tau, &a);
+                                                        df = s_ * (-s_ * p_.mu - a);
+                                                    },
+                                                    t_, hi, s_ * v_, s_ * vHi, slipSlope(t_, aT_),
+                                                    slipSlope(hi, atHi.a));
+        // The state at the stop, with a there (whether it sticks, and the next slip's slope).
+        const EndState stop = stateAt(tStop);
+        if (collapsesBy(tStop, stop.x, 0.0)) return Step::Done;
+        moveTo(tStop, stop.x, 0.0, stop.a);
+        if (atStop == AtStop::Reverse || (atStop == AtStop::Decide && std::abs(stop.a) > p_.mu)) {
             // |a| > mu at the stop: no sticking, it slides back at once (docs/theory.md §6.6 case
             // 5).
             s_ = -s_;
@@ -340,10 +373,10 @@ ExactRun::Step ExactRun::slipThrough(double hi, AtStop atStop) {
     }
 }
 
-// The slip reaches (tEnd, xEnd, vEnd) without stopping, unless it collapses on the way.
-ExactRun::Step ExactRun::slipTo(double tEnd, double xEnd, double vEnd) {
-    if (collapsesBy(tEnd, xEnd, vEnd)) return Step::Done;
-    moveTo(tEnd, xEnd, vEnd);
+// The slip reaches the end state without stopping, unless it collapses on the way.
+ExactRun::Step ExactRun::slipTo(const EndState& end) {
+    if (collapsesBy(end.tau, end.x, end.v)) return Step::Done;
+    moveTo(end.tau, end.x, end.v, end.a);
     return Step::Continue;
 }
 
@@ -353,8 +386,9 @@ bool ExactRun::collapsesBy(double tEnd, double xEnd, double vEnd) {
     if (!(s_ * xEnd > p_.limit)) return false;
     const double tC = rootOf(
         [&](double tau, double& f, double& df) {
-            f = s_ * displacementAt(tau) - p_.limit;
-            df = s_ * velocityAt(tau);
+            double x = 0.0;
+            df = s_ * velocityAndDisplacementAt(tau, x);
+            f = s_ * x - p_.limit;
         },
         t_, tEnd, s_ * x_ - p_.limit, s_ * xEnd - p_.limit, s_ * v_, s_ * vEnd);
     moveTo(tC, s_ * p_.limit, velocityAt(tC));
