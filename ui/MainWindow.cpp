@@ -2,6 +2,7 @@
 #include "ui/MainWindow.h"
 
 #include "ui/AtomicSave.h"
+#include "ui/BlockMapView.h"
 #include "ui/ChartMenu.h"
 #include "ui/FloorsView.h"
 #include "ui/FrictionPanel.h"
@@ -103,9 +104,9 @@ MainWindow::MainWindow(QWidget* parent)
     // The γc surface and the teaching view share the centre as tabs.
     m_centre = new QTabWidget;
     m_centre->setDocumentMode(true);
-    m_centre->addTab(m_surface, tr("γc surface"));
+    m_centre->addTab(buildBlockMap(), tr("γc surface"));
     m_teaching = new TeachingView;
-    m_centre->addTab(scrollable(m_teaching),
+    m_centre->addTab(scrollable(buildTeachingStack()),
                      tr("Teaching")); // its minimum size must not grow the window
     m_records = new RecordsTab;
     m_centre->addTab(scrollable(m_records), tr("Records"));
@@ -152,6 +153,7 @@ MainWindow::MainWindow(QWidget* parent)
         connect(p, &InputPanel::changed, m_undo, &InputHistory::recordChange);
     }
     connect(m_modelPanel, &InputPanel::changed, this, &MainWindow::updateTitle);
+    connect(m_modelPanel, &InputPanel::changed, this, &MainWindow::showModelView);
     connect(m_modelPanel, &InputPanel::changed, this,
             [this] { m_records->preview()->setPlanarBase(m_modelPanel->isPlanar()); });
     connect(m_slabPanel, &InputPanel::changed, this, [this] {
@@ -176,6 +178,7 @@ MainWindow::MainWindow(QWidget* parent)
 MainWindow::~MainWindow() {
     // The runner (a child) cancels and waits in its destructor; do it before the views go.
     m_runner->cancel();
+    m_blockMap->cancel();
 }
 
 void MainWindow::buildFileMenu() {
@@ -350,7 +353,8 @@ void MainWindow::updateRunState() {
                  "critical peak and the verdict per code (Verdict, Excitation). Set Source to "
                  "Enveloped sine for the surface.")
             : QString());
-    const bool running = m_runner->isRunning() || m_recordRunner->isRunning();
+    const bool running =
+        m_runner->isRunning() || m_recordRunner->isRunning() || m_blockMap->isRunning();
     m_run->setEnabled(!running && inputsValid());
     m_cancel->setEnabled(running);
     if (running) return;
@@ -361,12 +365,15 @@ void MainWindow::updateRunState() {
         m_status->setText(tr("Fix before running — %1").arg(problems.join(QStringLiteral("; "))));
         m_run->setToolTip(problems.join(QLatin1Char('\n')));
     } else {
-        m_run->setToolTip(tr("Compute γc over the grid (Ctrl+R / F5)"));
+        m_run->setToolTip(m_modelPanel->isBlock()
+                              ? tr("Compute the block's overturning map (Ctrl+R / F5)")
+                              : tr("Compute γc over the grid (Ctrl+R / F5)"));
         if (m_status->text().startsWith(tr("Fix before running"))) m_status->clear();
     }
 }
 
 void MainWindow::runSweep() {
+    if (m_modelPanel->isBlock()) return runBlockMap();
     if (m_excitation->usesRecord()) return runRecord();
     if (!inputsValid() || m_runner->isRunning()) return;
     SweepJob job;
@@ -401,6 +408,7 @@ void MainWindow::runSweep() {
 }
 
 void MainWindow::cancelSweep() {
+    m_blockMap->cancel();
     m_runner->cancel();
     m_recordRunner->cancel();
 }
