@@ -53,8 +53,8 @@ void paintMap(QPainter& pa, const QRectF& r, const OverturningMap& m) {
     const FigureScale scale{r.width()};
     const double strip = legendRowsHeight(scale, legend.size(), 2);
     const QRectF plotArea = r.adjusted(0, 0, 0, -strip);
-    PlotFrame f(plotArea, s.frequencyMin - dx / 2, s.frequencyMax + dx / 2,
-                s.amplitudeMin - dy / 2, s.amplitudeMax + dy / 2);
+    PlotFrame f(plotArea, s.frequencyMin - dx / 2, s.frequencyMax + dx / 2, s.amplitudeMin - dy / 2,
+                s.amplitudeMax + dy / 2);
     pa.setPen(Qt::NoPen);
     for (int i = 0; i < s.frequencyPoints; ++i)
         for (int j = 0; j < s.amplitudePoints; ++j) {

@@ -4,6 +4,8 @@
 #include "core/rocking/RockingSolver.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace kinstab {
@@ -17,6 +19,15 @@ RockingPath recordRocking(const RockingModel& model, const BaseMotion& motion,
     o.sampleInterval = sampleInterval;
     o.recorder = [&path](const RockingSample& s) { path.samples.push_back(s); };
     path.result = simulateRocking(model, motion, o);
+    // The recorder's last sample lies on its grid before the overturning time; the result says
+    // where the fall ends: |theta| = pi/2 at overturnTime (RockingSolver.h).
+    const auto& over = path.result.overturnTime;
+    if (over && !path.samples.empty() && path.samples.back().t < *over) {
+        RockingSample end = path.samples.back();
+        end.t = *over;
+        end.theta = std::copysign(std::numbers::pi / 2, end.theta);
+        path.samples.push_back(end);
+    }
     return path;
 }
 

@@ -19,7 +19,8 @@ struct RockingPath {
 };
 
 // Runs the model under the motion recording every sampleInterval seconds (> 0) and at every
-// event; throws what simulateRocking throws.
+// event; an overturning run ends with the state the result gives at its overturning time
+// (|theta| = pi/2, the last sample's theta' and u). Throws what simulateRocking throws.
 RockingPath recordRocking(const RockingModel& model, const BaseMotion& motion,
                           double sampleInterval);
 
