@@ -29,10 +29,14 @@ QColor overturnColor() {
     return QColor(45, 40, 45);
 }
 QColor leavesBaseColor() {
-    return QColor(190, 80, 200);
+    return QColor(185, 185, 185); // grey: no fate the model can tell
 }
 QColor survivesColor(double r) {
     return gammaColor(r);
+}
+// Bright on the dark overturning cells and on the colour scale alike.
+QPen otherBoundaryPen() {
+    return QPen(QColor(255, 0, 200), 2.0, Qt::DashLine, Qt::FlatCap);
 }
 
 OverturningMapPlot::OverturningMapPlot(QWidget* parent) : QWidget(parent) {
@@ -107,8 +111,7 @@ void OverturningMapPlot::paintEvent(QPaintEvent*) {
     p.setRenderHint(QPainter::Antialiasing);
     paintBoundary(p, m_main, QPen(Qt::white, 1.6));
     if (m_other) {
-        paintBoundary(p, *m_other, QPen(Qt::white, 3.2, Qt::SolidLine, Qt::FlatCap));
-        paintBoundary(p, *m_other, QPen(QColor(0, 0, 0), 1.8, Qt::DashLine, Qt::FlatCap));
+        paintBoundary(p, *m_other, otherBoundaryPen());
     }
     if (m_hoverI >= 0) {
         const double cw = r.width() / m_cells.width(), ch = r.height() / m_cells.height();
@@ -196,8 +199,6 @@ void OverturningMapPlot::paintLegend(QPainter& p) const {
     // Each line on a patch of the overturning colour, as it shows on the map's edge.
     auto line = [&](const QPen& pen, const QString& text) {
         p.fillRect(QRectF(x - 2, y - fm.ascent(), 20, fm.ascent() + 2), overturnColor());
-        p.setPen(QPen(Qt::white, pen.widthF() + 1.6));
-        p.drawLine(QPointF(x, y - fm.ascent() / 2), QPointF(x + 16, y - fm.ascent() / 2));
         p.setPen(pen);
         p.drawLine(QPointF(x, y - fm.ascent() / 2), QPointF(x + 16, y - fm.ascent() / 2));
         p.setPen(palette().color(QPalette::Text));
@@ -205,7 +206,7 @@ void OverturningMapPlot::paintLegend(QPainter& p) const {
         y += fm.height() + 4;
     };
     line(QPen(Qt::white, 1.6), tr("%1 boundary").arg(m_mainName));
-    if (m_other) line(QPen(Qt::black, 1.8, Qt::DashLine), tr("%1 boundary").arg(m_otherName));
+    if (m_other) line(otherBoundaryPen(), tr("%1 boundary").arg(m_otherName));
 }
 
 void OverturningMapPlot::mouseMoveEvent(QMouseEvent* e) {

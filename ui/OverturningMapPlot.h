@@ -8,6 +8,7 @@
 
 #include "core/rocking/OverturningMap.h"
 
+#include <QPen>
 #include <QWidget>
 
 #include <optional>
@@ -57,5 +58,6 @@ private:
 QColor overturnColor();
 QColor leavesBaseColor();
 QColor survivesColor(double maxThetaOverAlpha);
+QPen otherBoundaryPen(); // the other equations' boundary, dashed
 
 } // namespace kinstab::ui

@@ -18,9 +18,10 @@ constexpr double kLeft = 56, kRight = 10;
 constexpr int kTracePoints = 600;
 
 // One strip: a trace of f(t) over [0, end] with its zero line, ticks and title.
+// guides: values drawn as dotted lines (theta = +-alpha: the block's corner above its pivot).
 template <class F>
 void paintStrip(QPainter& p, const QRectF& r, double end, const QString& title, const QColor& c,
-                F f) {
+                F f, std::initializer_list<double> guides = {}) {
     double lo = 0, hi = 0;
     std::vector<QPointF> pts;
     for (int k = 0; k <= kTracePoints; ++k) {
@@ -30,7 +31,8 @@ void paintStrip(QPainter& p, const QRectF& r, double end, const QString& title, 
         pts.emplace_back(t, v);
     }
     if (hi - lo < 1e-9) hi = lo + 1;
-    const NiceAxis ax = niceAxis(lo, hi, 4);
+    const int ticks = r.height() < 90 ? 2 : 4; // a short strip: fewer labels, none overlapping
+    const NiceAxis ax = niceAxis(lo, hi, ticks);
     auto X = [&](double t) { return r.left() + t / end * r.width(); };
     auto Y = [&](double v) { return r.bottom() - (v - ax.min) / (ax.max - ax.min) * r.height(); };
     p.setPen(QPen(QColor(0xcc, 0xcc, 0xcc), 1.0));
@@ -44,6 +46,9 @@ void paintStrip(QPainter& p, const QRectF& r, double end, const QString& title, 
     }
     p.setPen(QPen(QColor(0x99, 0x99, 0x99), 1.0, Qt::DotLine));
     p.drawLine(QPointF(r.left(), Y(0)), QPointF(r.right(), Y(0)));
+    p.setPen(QPen(QColor(0xc0, 0x39, 0x2b), 1.0, Qt::DotLine));
+    for (double g : guides)
+        if (g > ax.min && g < ax.max) p.drawLine(QPointF(r.left(), Y(g)), QPointF(r.right(), Y(g)));
     QPolygonF line;
     for (const QPointF& q : pts)
         line << QPointF(X(q.x()), Y(q.y()));
@@ -101,8 +106,9 @@ void BlockTraces::paintEvent(QPaintEvent*) {
     const double h = (height() - bottomPad - gap - 4) / 2;
     const QRectF top(kLeft, 4, width() - kLeft - kRight, h);
     const QRectF low(kLeft, top.bottom() + gap, top.width(), h);
-    paintStrip(p, top, end, tr("θ/α (> 0: on the right corner)"), QColor(0x2e, 0x8b, 0x57),
-               [&](double t) { return run_->at(t).theta / alpha; });
+    paintStrip(p, top, end, tr("θ/α (> 0: on the right corner; ±1: centre above the corner)"),
+               QColor(0x2e, 0x8b, 0x57), [&](double t) { return run_->at(t).theta / alpha; },
+               {-1.0, 1.0});
     paintStrip(p, low, end, tr("base acceleration a/g"), QColor(0x20, 0x40, 0x90),
                [&](double t) { return run_->baseAcceleration(t); });
     // The impacts as ticks on the top strip, the overturning as a red line.

@@ -150,6 +150,7 @@ void BlockTeachingView::setCase(const BlockCase& c) {
 
 void BlockTeachingView::setUnitSystem(UnitSystem s) {
     units_ = s;
+    updateOutcome();
     showFrame(player_->tau());
 }
 
@@ -163,11 +164,12 @@ void BlockTeachingView::rerun(const BlockCase& c) {
             std::find(r.impactTimes.begin(), r.impactTimes.end(), t) != r.impactTimes.end();
         const bool over = r.overturnTime && *r.overturnTime == t;
         const RockingSample s = run_->at(t);
-        const QString what = over     ? tr("overturned")
-                             : impact ? tr("impact, rocks on about the other corner")
-                                      : tr("now %1").arg(QString::fromUtf8(
-                                            blockModeName(s.mode).data(),
-                                            static_cast<int>(blockModeName(s.mode).size())));
+        const QString what =
+            over     ? tr("overturned")
+            : impact ? tr("impact, rocks on about the other corner")
+                     : tr("starts to %1")
+                           .arg(QString::fromUtf8(blockModeName(s.mode).data(),
+                                                  static_cast<int>(blockModeName(s.mode).size())));
         auto* item = new QListWidgetItem(tr("t = %1 s: %2").arg(t, 0, 'f', 3).arg(what), events_);
         item->setData(Qt::UserRole, t);
     }
@@ -207,11 +209,14 @@ void BlockTeachingView::updateOutcome() {
     }
     const RockingResult& res = r.result();
     const std::string_view name = rockingOutcomeName(res.outcome);
-    QString text = tr("<b>%1</b>: max |θ|/α = %2, %3 impacts, sliding %4 mm")
-                       .arg(QString::fromUtf8(name.data(), static_cast<int>(name.size())))
-                       .arg(res.maxThetaOverAlpha, 0, 'f', 3)
-                       .arg(res.impactTimes.size())
-                       .arg(res.slidingDisplacement * 1e3, 0, 'f', 1);
+    const double perUnit = metresPerDisplayUnit(units_, LengthScale::Detail);
+    QString text =
+        tr("<b>%1</b>: max |θ|/α = %2, impacts: %3, sliding %4 %5")
+            .arg(QString::fromUtf8(name.data(), static_cast<int>(name.size())))
+            .arg(res.maxThetaOverAlpha, 0, 'f', 3)
+            .arg(res.impactTimes.size())
+            .arg(res.slidingDisplacement / perUnit, 0, 'f', units_ == UnitSystem::US ? 2 : 1)
+            .arg(lengthSymbol(units_, LengthScale::Detail));
     if (res.overturnTime) text += tr("; overturned at t = %1 s").arg(*res.overturnTime, 0, 'f', 3);
     text += tr("<br>α = %1 rad, p = %2 rad/s, η = %3")
                 .arg(r.alpha(), 0, 'f', 4)
