@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QScrollArea>
+#include <QShortcut>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QStyle>
@@ -41,7 +42,23 @@ BlockTeachingView::BlockTeachingView(QWidget* parent)
     connect(player_, &TeachingPlayer::tauChanged, this, &BlockTeachingView::showFrame);
     connect(traces_, &BlockTraces::seekRequested, player_, &TeachingPlayer::seek);
     player_->setSpeed(kDefaultSpeed);
+    installKeys();
     applyPreset(blockPresets().front().id);
+}
+
+// The slab's keys (TeachingView): space plays and pauses, N and B step between events, wherever
+// the focus is inside the view.
+void BlockTeachingView::installKeys() {
+    animation_->setFocusPolicy(Qt::ClickFocus);
+    traces_->setFocusPolicy(Qt::ClickFocus);
+    auto key = [this](QKeyCombination k, auto slot) {
+        auto* s =
+            new QShortcut(QKeySequence(k), this, nullptr, nullptr, Qt::WidgetWithChildrenShortcut);
+        connect(s, &QShortcut::activated, player_, slot);
+    };
+    key(Qt::Key_Space, &TeachingPlayer::togglePlay);
+    key(Qt::Key_N, &TeachingPlayer::stepToNextEvent);
+    key(Qt::Key_B, &TeachingPlayer::stepToPreviousEvent);
 }
 
 BlockTeachingView::~BlockTeachingView() = default;
@@ -61,9 +78,11 @@ QWidget* BlockTeachingView::buildTransport() {
         return b;
     };
     tool(QStyle::SP_MediaSkipBackward, tr("Back to the start"), &TeachingPlayer::rewind);
-    tool(QStyle::SP_MediaSeekBackward, tr("Previous event"), &TeachingPlayer::stepToPreviousEvent);
-    playButton_ = tool(QStyle::SP_MediaPlay, tr("Play / pause"), &TeachingPlayer::togglePlay);
-    tool(QStyle::SP_MediaSeekForward, tr("Next event (impact, mode change, overturning)"),
+    tool(QStyle::SP_MediaSeekBackward, tr("Previous event (B)"),
+         &TeachingPlayer::stepToPreviousEvent);
+    playButton_ =
+        tool(QStyle::SP_MediaPlay, tr("Play / pause (space)"), &TeachingPlayer::togglePlay);
+    tool(QStyle::SP_MediaSeekForward, tr("Next event: impact, mode change, overturning (N)"),
          &TeachingPlayer::stepToNextEvent);
     connect(player_, &TeachingPlayer::playingChanged, this, [this](bool on) {
         playButton_->setIcon(

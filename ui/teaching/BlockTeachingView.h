@@ -52,6 +52,7 @@ signals:
 
 private:
     QWidget* buildTransport();
+    void installKeys();
     QWidget* buildSidePanel();
     void rerun(const BlockCase& c);
     void showFrame(double t);
