@@ -11,6 +11,7 @@
 #include "core/rocking/OverturningMap.h"
 #include "ui/BackgroundJob.h"
 #include "ui/BlockMapView.h"
+#include "ui/HelpMenu.h"
 #include "ui/MainWindow.h"
 #include "ui/ModelPanel.h"
 #include "ui/NumberField.h"
@@ -80,6 +81,8 @@ private slots:
         QVERIFY(w->blockMapView()->isVisibleTo(w.get()));
         auto* tabs = w->findChild<QTabWidget*>();
         QCOMPARE(tabs->tabText(0), QStringLiteral("Overturning map"));
+        // F1 on the map opens the guide where the block model is told (docs/user-guide.md).
+        QCOMPARE(helpSectionFor(w->blockMapView()), QStringLiteral("Model"));
         // The project's slab model is unchanged: the block map is no slab model.
         QVERIFY(w->project().model == ModelKind::Slab1D);
         QVERIFY(w->project().blockMap.selected);
