@@ -32,6 +32,7 @@ namespace kinstab::ui {
 class BlockMapView;
 class BlockTeachingView;
 class BuildingPanel;
+class TabDocks;
 class CodesPanel;
 class CriticalChart;
 class RecentFiles;
@@ -185,7 +186,8 @@ private:
     QString modelTitle() const;
     void saveSettings(bool keepEdits = false);
     void restoreSettings();
-    void setUnits(UnitSystem s); // the views that draw lengths (the fields follow by themselves)
+    void setUnits(UnitSystem s);  // the views that draw lengths (the fields follow by themselves)
+    void showUnits(UnitSystem s); // the menu's mark, the fields and the views (open, undo)
     // The free-standing block model (MainWindowBlock.cpp).
     QWidget* buildBlockMap(); // the first tab: the γc surface or the block's map
     void showModelView();
@@ -233,6 +235,7 @@ private:
     QDockWidget* m_verdictDock = nullptr;
     std::vector<QDockWidget*> m_chartDocks; // along the bottom
     InputHistory* m_undo = nullptr;
+    TabDocks* m_tabDocks = nullptr;
 
     Project m_project; // the open project: inputs no panel shows are kept from it
     QString m_path;
