@@ -179,7 +179,9 @@ MainWindow::MainWindow(QWidget* parent)
     m_tabDocks = new TabDocks(
         m_centre, m_chartDocks,
         [this](int i) {
-            return m_centre->widget(i) == m_surface || m_centre->widget(i)->isAncestorOf(m_records);
+            // The first tab holds the surface (or the block's map) in a stack.
+            return m_centre->widget(i)->isAncestorOf(m_surface) ||
+                   m_centre->widget(i)->isAncestorOf(m_records);
         },
         this);
     restoreSettings();
