@@ -74,6 +74,7 @@ void ModelPanel::buildPlanarRows() {
         tr("How each horizontal component's S_max is taken. Product: each peaks at its "
            "amplitude (ch. IV). Envelope: as printed in ch. VI, somewhat below it."));
     form()->addRow(tr("S_max:"), m_normalization);
+    m_vertical->setObjectName(QStringLiteral("verticalSource"));
     m_vertical->addItem(tr("None (gravity only)"));
     m_vertical->addItem(tr("RSN68 UP (for Pacoima Dam)"));
     m_vertical->addItem(tr("Record file…"));
