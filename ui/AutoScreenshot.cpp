@@ -12,6 +12,7 @@
 #include "ui/teaching/TeachingView.h"
 
 #include <QApplication>
+#include <QScrollArea>
 #include <QTabWidget>
 #include <QTimer>
 
@@ -142,10 +143,17 @@ void screenshotAfterSweep(MainWindow& window, const QString& path, QSize size, i
         window.gridPanel()->setRanges(r);
     }
     const auto grab = [&window, path, tab] {
-        if (!tab.isEmpty())
+        // "Study/Risk": the centre's Study tab, then its Risk view.
+        for (const QString& part : tab.split('/', Qt::SkipEmptyParts))
             for (QTabWidget* t : window.findChildren<QTabWidget*>())
                 for (int i = 0; i < t->count(); ++i)
-                    if (t->tabText(i).startsWith(tab)) t->setCurrentIndex(i);
+                    if (t->tabText(i).startsWith(part)) {
+                        t->setCurrentIndex(i);
+                        // A view inside a scrolled tab: scrolled into sight for the image.
+                        for (QWidget* w = t->parentWidget(); w; w = w->parentWidget())
+                            if (auto* area = qobject_cast<QScrollArea*>(w))
+                                area->ensureWidgetVisible(t, 0, 0);
+                    }
         QTimer::singleShot(1500, &window, [&window, path] {
             const bool ok = window.screenshot().save(path);
             std::fprintf(stderr, "%s %s\n", ok ? "wrote" : "could not write", qPrintable(path));

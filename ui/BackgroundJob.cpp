@@ -60,6 +60,12 @@ void BackgroundJob::cancel() {
     if (m_context) m_context->cancel();
 }
 
+void BackgroundJob::discard() {
+    cancel();
+    ++m_generation; // its watcher's delivery sees another number and drops the result
+    m_timer.stop();
+}
+
 bool BackgroundJob::isRunning() const {
     return !m_running.empty() && !m_running.back().future.isFinished();
 }

@@ -74,6 +74,9 @@ public:
     }
 
     void cancel(); // asks the current job to stop; it still delivers what it has
+    // Cancels the current job and drops its result: nothing is delivered and ended() is not
+    // emitted (what it was computing is gone, e.g. a view cleared).
+    void discard();
     bool isRunning() const;
     // Blocks until the current job's work has returned; its delivery follows from the event loop.
     void waitForFinished();

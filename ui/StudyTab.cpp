@@ -12,6 +12,7 @@
 #include "core/study/StudyRunner.h"
 #include "ui/FragilityChart.h"
 #include "ui/ProjectFolder.h"
+#include "ui/RiskPanel.h"
 #include "ui/StaleFrame.h"
 #include "ui/StudyTables.h"
 
@@ -34,9 +35,9 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <set>
@@ -87,9 +88,6 @@ QString floorPeriods(const StudySpec& s) {
     return joined(periods);
 }
 
-// The worker: read the study from its text, run every case, fit the fragility.
-std::shared_ptr<StudyTab::Outcome> runWorker(const std::string& json, SweepControl* control);
-
 } // namespace
 
 StudyTab::StudyTab(QWidget* parent)
@@ -103,67 +101,35 @@ StudyTab::StudyTab(QWidget* parent)
       m_status(new QLabel(this)),
       m_stale(
           new QLabel(tr("The results below are for the previous parameters — run again."), this)),
-      m_chart(new QChartView(new QChart, this)), m_sets(makeStudySetTable(this)),
-      m_table(makeStudyCaseTable(this)) {
-    m_measure->addItems({"pga", "sa"});
-    m_floors->setPlaceholderText(tr("none: the ground record drives the slab"));
-    m_folder->setPlaceholderText(tr("a folder of accelerograms (AT2, COSMOS, CSMIP V2, ...)"));
-    auto* browse = new QPushButton(tr("Folder…"), this);
-    auto* open = new QPushButton(tr("Open study…"), this);
-    auto* use = new QPushButton(tr("Use in project"), this);
-    auto* folderRow = new QHBoxLayout;
-    folderRow->addWidget(m_folder, 1);
-    folderRow->addWidget(browse);
-    auto* imRow = new QHBoxLayout;
-    imRow->addWidget(m_measure);
-    imRow->addWidget(new QLabel(tr("Sa period"), this));
-    imRow->addWidget(m_saPeriod);
-    auto* form = new QFormLayout;
-    form->addRow(tr("Records folder"), folderRow);
-    form->addRow(tr("Include files"), m_include);
-    form->addRow(tr("Exclude files"), m_exclude);
-    form->addRow(tr("Intensity measure"), imRow);
-    form->addRow(tr("μ (LIST)"), m_mu);
-    form->addRow(tr("t* s (LIST)"), m_tstar);
-    form->addRow(tr("Floor periods s (LIST)"), m_floors);
-    form->addRow(tr("Search up to"), m_maxG);
-    form->addRow(tr("Scan step"), m_step);
-    auto* fileRow = new QHBoxLayout;
-    fileRow->addWidget(open);
-    fileRow->addWidget(use);
-    fileRow->addStretch(1);
-    auto* bar = new QHBoxLayout;
-    bar->addWidget(m_run);
-    bar->addWidget(m_cancel);
-    bar->addWidget(m_progress, 1);
-    bar->addWidget(m_export);
-    m_cancel->setEnabled(false);
-    m_export->setEnabled(false);
-    m_status->setWordWrap(true);
-    m_stale->setObjectName(QStringLiteral("studyStale")); // tests find it by name
-    m_stale->setStyleSheet(StaleFrame::staleStyle());
-    m_stale->setContentsMargins(8, 3, 8, 3);
-    m_stale->hide();
-    m_chart->setRenderHint(QPainter::Antialiasing);
-    m_chart->setMinimumHeight(280);
-    auto* split = new QSplitter(Qt::Vertical, this);
-    split->addWidget(m_chart);
-    split->addWidget(m_sets);
-    split->addWidget(m_table);
-    split->setChildrenCollapsible(false);
+      m_chart(new QChartView(new QChart, this)), m_risk(new RiskPanel(this)),
+      m_sets(makeStudySetTable(this)), m_table(makeStudyCaseTable(this)), m_job(this) {
     auto* layout = new QVBoxLayout(this);
-    layout->addLayout(fileRow);
-    layout->addLayout(form);
-    layout->addLayout(bar);
+    layout->addLayout(buildFileRow());
+    layout->addLayout(buildForm());
+    layout->addLayout(buildRunBar());
     layout->addWidget(m_status);
     layout->addWidget(m_stale);
-    layout->addWidget(split, 1);
-
-    connect(browse, &QPushButton::clicked, this, [this] {
-        const QString d =
-            QFileDialog::getExistingDirectory(this, tr("Records folder"), m_folder->text());
-        if (!d.isEmpty()) m_folder->setText(d);
+    layout->addWidget(buildResults(), 1);
+    connectFields();
+    connect(&m_job, &BackgroundJob::progress, this, [this](qint64 done, qint64 total) {
+        if (total <= 0) return; // not known yet
+        m_progress->setRange(0, static_cast<int>(total));
+        m_progress->setValue(static_cast<int>(done));
     });
+    connect(&m_job, &BackgroundJob::failed, this,
+            [this](const QString& e) { m_status->setText(tr("Cannot run the study: %1").arg(e)); });
+    connect(&m_job, &BackgroundJob::ended, this, [this] {
+        m_run->setEnabled(true);
+        m_cancel->setEnabled(false);
+        emit finished();
+    });
+    clear();
+}
+
+// Open a study file, or make the fields the project's study.
+QLayout* StudyTab::buildFileRow() {
+    auto* open = new QPushButton(tr("Open study…"), this);
+    auto* use = new QPushButton(tr("Use in project"), this);
     connect(open, &QPushButton::clicked, this, [this] {
         const QString f = QFileDialog::getOpenFileName(
             this, tr("Open study"), m_studyFile.isEmpty() ? inOpenProjectFolder() : m_studyFile,
@@ -178,6 +144,55 @@ StudyTab::StudyTab(QWidget* parent)
                                              tr("Study files (*.json)"));
         if (!f.isEmpty() || !m_studyFile.isEmpty()) useInProject(f);
     });
+    auto* row = new QHBoxLayout;
+    row->addWidget(open);
+    row->addWidget(use);
+    row->addStretch(1);
+    return row;
+}
+
+// The study's records, measure, parameter lists and search.
+QLayout* StudyTab::buildForm() {
+    m_measure->addItems({"pga", "sa"});
+    m_floors->setPlaceholderText(tr("none: the ground record drives the slab"));
+    m_folder->setPlaceholderText(tr("a folder of accelerograms (AT2, COSMOS, CSMIP V2, ...)"));
+    auto* browse = new QPushButton(tr("Folder…"), this);
+    connect(browse, &QPushButton::clicked, this, [this] {
+        const QString d =
+            QFileDialog::getExistingDirectory(this, tr("Records folder"), m_folder->text());
+        if (!d.isEmpty()) m_folder->setText(d);
+    });
+    auto* folderRow = new QHBoxLayout;
+    folderRow->addWidget(m_folder, 1);
+    folderRow->addWidget(browse);
+    auto* imRow = new QHBoxLayout;
+    imRow->addWidget(m_measure);
+    imRow->addWidget(new QLabel(tr("Sa period"), this));
+    imRow->addWidget(m_saPeriod);
+    // Two columns, the records and the parameters: five rows of fields rather than nine leave
+    // the height to the results (the tab shares the window with the docks at 1280 x 800).
+    auto* records = new QFormLayout;
+    records->addRow(tr("Records folder"), folderRow);
+    records->addRow(tr("Include files"), m_include);
+    records->addRow(tr("Exclude files"), m_exclude);
+    records->addRow(tr("Intensity measure"), imRow);
+    auto* searchRow = new QHBoxLayout;
+    searchRow->addWidget(m_maxG);
+    searchRow->addWidget(new QLabel(tr("scan step"), this));
+    searchRow->addWidget(m_step);
+    auto* parameters = new QFormLayout;
+    parameters->addRow(tr("μ (LIST)"), m_mu);
+    parameters->addRow(tr("t* s (LIST)"), m_tstar);
+    parameters->addRow(tr("Floor periods s (LIST)"), m_floors);
+    parameters->addRow(tr("Search up to"), searchRow);
+    auto* form = new QHBoxLayout;
+    form->addLayout(records, 3);
+    form->addLayout(parameters, 2);
+    return form;
+}
+
+// Run, cancel, progress and export.
+QLayout* StudyTab::buildRunBar() {
     connect(m_run, &QPushButton::clicked, this, &StudyTab::run);
     connect(m_cancel, &QPushButton::clicked, this, &StudyTab::cancel);
     connect(m_export, &QPushButton::clicked, this, [this] {
@@ -189,26 +204,47 @@ StudyTab::StudyTab(QWidget* parent)
         frag.replace(QRegularExpression("\\.jsonl$"), "");
         exportFragility(frag + "-fragility.json");
     });
-    connect(
-        this, &StudyTab::progressed, this,
-        [this](int done, int total) {
-            m_progress->setRange(0, total);
-            m_progress->setValue(done);
-        },
-        Qt::QueuedConnection);
-    connect(&m_watcher, &QFutureWatcherBase::finished, this, &StudyTab::onFinished);
+    m_cancel->setEnabled(false);
+    m_export->setEnabled(false);
+    m_status->setWordWrap(true);
+    m_stale->setObjectName(QStringLiteral("studyStale")); // tests find it by name
+    m_stale->setStyleSheet(StaleFrame::staleStyle());
+    m_stale->setContentsMargins(8, 3, 8, 3);
+    m_stale->hide();
+    auto* bar = new QHBoxLayout;
+    bar->addWidget(m_run);
+    bar->addWidget(m_cancel);
+    bar->addWidget(m_progress, 1);
+    bar->addWidget(m_export);
+    return bar;
+}
+
+// The fragility curves and the risk on the site's hazard curve as tabs, above the set and case
+// tables.
+QWidget* StudyTab::buildResults() {
+    m_chart->setRenderHint(QPainter::Antialiasing);
+    m_chart->setMinimumHeight(280);
+    auto* views = new QTabWidget(this);
+    views->addTab(m_chart, tr("Fragility"));
+    views->addTab(m_risk, tr("Risk"));
+    auto* split = new QSplitter(Qt::Vertical, this);
+    split->addWidget(views);
+    split->addWidget(m_sets);
+    split->addWidget(m_table);
+    split->setChildrenCollapsible(false);
+    return split;
+}
+
+// Any field edited marks the results shown stale.
+void StudyTab::connectFields() {
     for (QLineEdit* e : {m_folder, m_include, m_exclude, m_mu, m_tstar, m_floors})
         connect(e, &QLineEdit::textChanged, this, &StudyTab::updateStaleness);
     for (QDoubleSpinBox* b : {m_saPeriod, m_maxG, m_step})
         connect(b, &QDoubleSpinBox::valueChanged, this, &StudyTab::updateStaleness);
     connect(m_measure, &QComboBox::currentTextChanged, this, &StudyTab::updateStaleness);
-    clear();
 }
 
-StudyTab::~StudyTab() {
-    cancel();
-    m_watcher.waitForFinished();
-}
+StudyTab::~StudyTab() = default; // m_job cancels and waits
 
 void StudyTab::setRecordsFolder(const QString& folder, const QString& include,
                                 const QString& exclude) {
@@ -311,7 +347,7 @@ bool StudyTab::openStudy(const QString& path) {
 }
 
 bool StudyTab::isRunning() const {
-    return m_watcher.isRunning();
+    return m_job.isRunning();
 }
 
 QString StudyTab::message() const {
@@ -320,28 +356,22 @@ QString StudyTab::message() const {
 
 void StudyTab::run() {
     if (isRunning()) return;
-    m_control = std::make_shared<SweepControl>();
-    auto control = m_control;
-    control->onProgress = [this](std::size_t done, std::size_t total) {
-        emit progressed(static_cast<int>(done), static_cast<int>(total)); // queued to the GUI
-    };
     const std::string json = studyJson();
     startJob(
-        [json, control] {
-            auto o = runWorker(json, control.get());
-            o->spec = json;
+        [json](JobContext& job) {
+            job.control.onProgress = [&job](std::size_t done, std::size_t total) {
+                job.done = done;
+                job.total = total;
+            };
+            StudyOutcome o = runStudyJob(json, &job.control);
+            o.spec = json;
             return o;
         },
         tr("Running the study…"));
 }
 
-void StudyTab::startJob(std::function<std::shared_ptr<Outcome>()> job, const QString& status) {
-    const unsigned generation = m_generation;
-    m_watcher.setFuture(QtConcurrent::run([job, generation] {
-        auto o = job();
-        o->generation = generation;
-        return o;
-    }));
+void StudyTab::startJob(std::function<StudyOutcome(JobContext&)> job, const QString& status) {
+    m_job.start<StudyOutcome>(std::move(job), [this](StudyOutcome o) { onDelivered(o); });
     m_status->setText(status);
     m_progress->setValue(0);
     m_run->setEnabled(false);
@@ -349,27 +379,22 @@ void StudyTab::startJob(std::function<std::shared_ptr<Outcome>()> job, const QSt
 }
 
 void StudyTab::cancel() {
-    if (m_control) m_control->cancel();
+    m_job.cancel();
 }
 
-void StudyTab::onFinished() {
-    m_run->setEnabled(true);
-    m_cancel->setEnabled(false);
-    const std::shared_ptr<Outcome> o = m_watcher.result();
-    if (o->generation != m_generation) return; // of a study cleared since
-    if (!o->error.empty()) {
-        m_status->setText(tr("Cannot run the study: %1").arg(QString::fromStdString(o->error)));
-    } else if (!o->notice.isEmpty()) {
-        m_status->setText(o->notice);
-    } else if (o->cancelled) {
+void StudyTab::onDelivered(const StudyOutcome& o) {
+    if (!o.error.empty()) {
+        m_status->setText(tr("Cannot run the study: %1").arg(QString::fromStdString(o.error)));
+    } else if (!o.notice.isEmpty()) {
+        m_status->setText(o.notice);
+    } else if (o.cancelled) {
         m_status->setText(tr("Cancelled: nothing is shown of a partial study."));
     } else {
-        showResults(*o);
+        showResults(o);
     }
-    emit finished();
 }
 
-void StudyTab::showResults(const Outcome& o) {
+void StudyTab::showResults(const StudyOutcome& o) {
     m_rows = o.rows;
     m_parsed = o.parsed;
     m_fragility = o.fragility;
@@ -378,6 +403,7 @@ void StudyTab::showResults(const Outcome& o) {
     m_resultsFile = o.file;
     fillFragilityChart(m_chart->chart(), m_fragility);
     fillTable();
+    m_risk->setRows(m_parsed);
     m_export->setEnabled(true);
     const int done = static_cast<int>(m_parsed.size());
     if (done > 0) { // read back, not run: the bar shows the study complete all the same
@@ -413,30 +439,26 @@ bool StudyTab::save(const QString& path, const std::string& text) {
     }
 }
 
-namespace {
-
-std::shared_ptr<StudyTab::Outcome> runWorker(const std::string& json, SweepControl* control) {
-    auto o = std::make_shared<StudyTab::Outcome>();
+StudyOutcome runStudyJob(const std::string& json, SweepControl* control) {
+    StudyOutcome o;
     try {
         StudySpec spec = studyFromJsonText(json, "");
         loadStudyRecords(spec); // each record read once, for every case of the study
         StudyRunOptions options;
         options.threads = allowedCpuCount();
         options.control = control;
-        runStudy(spec, options, [&o](const std::string& rows) { o->rows += rows; });
-        o->cancelled = control->isCancelled();
-        if (o->cancelled) return o;
-        std::istringstream in(o->rows);
+        runStudy(spec, options, [&o](const std::string& rows) { o.rows += rows; });
+        o.cancelled = control->isCancelled();
+        if (o.cancelled) return o;
+        std::istringstream in(o.rows);
         for (std::string line; std::getline(in, line);)
-            o->parsed.push_back(parseStudyRow(line));
-        o->fragility = studyFragility(o->parsed, {});
-        o->metrics = studyRecordMetrics(spec);
+            o.parsed.push_back(parseStudyRow(line));
+        o.fragility = studyFragility(o.parsed, {});
+        o.metrics = studyRecordMetrics(spec);
     } catch (const StudyError& e) {
-        o->error = e.what();
+        o.error = e.what();
     }
     return o;
 }
-
-} // namespace
 
 } // namespace kinstab::ui

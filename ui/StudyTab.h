@@ -15,7 +15,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include <QFutureWatcher>
+#include "ui/BackgroundJob.h"
+
 #include <QStringList>
 #include <QWidget>
 
@@ -32,14 +33,16 @@ class QLineEdit;
 class QProgressBar;
 class QPushButton;
 class QTableWidget;
+class QTabWidget;
 
 namespace kinstab::ui {
+
+class RiskPanel;
+struct StudyOutcome; // what a job hands back (ui/StudyTabOutcome.h)
 
 class StudyTab : public QWidget {
     Q_OBJECT
 public:
-    struct Outcome; // what the worker hands back
-
     explicit StudyTab(QWidget* parent = nullptr);
     ~StudyTab() override;
 
@@ -80,20 +83,25 @@ public:
     QTableWidget* table() const { return m_table; }   // one row per case
     QTableWidget* setTable() const { return m_sets; } // one row per parameter set
     QChartView* chartView() const { return m_chart; }
-    bool exportRows(const QString& path);      // false, with the reason in message()
-    bool exportFragility(const QString& path); // JSON
+    RiskPanel* riskPanel() const { return m_risk; } // the results on the site's hazard curve
+    bool exportRows(const QString& path);           // false, with the reason in message()
+    bool exportFragility(const QString& path);      // JSON
 
 signals:
     void finished();
     void studyChosen(const QString& specPath, const QString& resultsPath);
-    void progressed(int done, int total); // from the worker, delivered queued
 
 private:
-    void onFinished();
+    QLayout* buildFileRow();
+    QLayout* buildForm();
+    QLayout* buildRunBar();
+    QWidget* buildResults();
+    void connectFields();
+    void onDelivered(const StudyOutcome& o);
     void fillTable();
-    void showResults(const Outcome& o);
+    void showResults(const StudyOutcome& o);
     void updateStaleness();
-    void startJob(std::function<std::shared_ptr<Outcome>()> job, const QString& status);
+    void startJob(std::function<StudyOutcome(JobContext&)> job, const QString& status);
     QString currentResultsFile(); // "" when none is current; writes the run's rows if need be
     bool save(const QString& path, const std::string& text); // false: the reason in message()
 
@@ -114,17 +122,16 @@ private:
     QLabel* m_status;
     QLabel* m_stale; // "results are for the previous parameters — run again"
     QChartView* m_chart;
+    RiskPanel* m_risk;
     QTableWidget* m_sets;
     QTableWidget* m_table;
-    QFutureWatcher<std::shared_ptr<Outcome>> m_watcher;
-    std::shared_ptr<SweepControl> m_control;
+    BackgroundJob m_job; // the run, or the results read back: one at a time
     std::string m_rows;
     std::vector<StudyRow> m_parsed;
     std::vector<Fragility> m_fragility;
     std::vector<StudyRecordMetrics> m_metrics; // the suite's records, for the case table
     std::string m_resultsSpec; // studyJson() of the fields the shown results are for
     QString m_resultsFile;     // the file they were read from ("" after a run)
-    unsigned m_generation = 0; // bumped by clear(): a job of an older generation is dropped
     nlohmann::json m_base = nlohmann::json::object(); // the study file opened last
     QString m_studyFile;                              // its path; empty: none opened
     std::string m_openedText;                         // studyJson() right after opening

@@ -8,6 +8,7 @@
 #include "core/study/StudyResults.h"
 #include "core/study/StudyRowsMatch.h"
 #include "ui/FragilityChart.h"
+#include "ui/RiskPanel.h"
 #include "ui/StudyTab.h"
 #include "ui/StudyTabOutcome.h"
 
@@ -63,9 +64,10 @@ QString StudyTab::currentResultsFile() {
 }
 
 void StudyTab::clear() {
-    ++m_generation; // a job still running belongs to what is cleared
-    cancel();
-    m_watcher.waitForFinished(); // within one case per thread
+    m_job.discard();         // a job still running belongs to what is cleared
+    m_job.waitForFinished(); // within one case per thread
+    m_run->setEnabled(true);
+    m_cancel->setEnabled(false);
     m_base = nlohmann::json::object();
     m_studyFile.clear();
     m_openedText.clear();
@@ -84,6 +86,7 @@ void StudyTab::clear() {
     m_resultsFile.clear();
     fillFragilityChart(m_chart->chart(), m_fragility);
     fillTable();
+    m_risk->clear();
     m_export->setEnabled(false);
     m_progress->setValue(0);
     m_status->clear();
@@ -94,6 +97,7 @@ void StudyTab::showProjectStudy(const std::optional<ProjectStudy>& study,
                                 const QString& projectDir) {
     clear();
     if (!study) return;
+    m_risk->setHazard(study->hazard);
     const QString spec = QString::fromStdString(study->spec);
     if (!openStudy(spec)) return; // the message says why
     QString results = QString::fromStdString(study->results);
@@ -108,9 +112,9 @@ void StudyTab::showProjectStudy(const std::optional<ProjectStudy>& study,
     if (results.isEmpty()) return;
     const std::string fields = studyJson();
     startJob(
-        [spec, results, fields] {
-            auto o = readStudyResults(spec, results);
-            o->spec = fields;
+        [spec, results, fields](JobContext&) {
+            StudyOutcome o = readStudyResults(spec, results);
+            o.spec = fields;
             return o;
         },
         tr("Reading the study's results %1…").arg(results));
@@ -124,10 +128,9 @@ void StudyTab::updateStaleness() {
     m_stale->setVisible(resultsStale());
 }
 
-std::shared_ptr<StudyTab::Outcome> readStudyResults(const QString& specPath,
-                                                    const QString& rowsPath) {
-    auto o = std::make_shared<StudyTab::Outcome>();
-    o->file = rowsPath;
+StudyOutcome readStudyResults(const QString& specPath, const QString& rowsPath) {
+    StudyOutcome o;
+    o.file = rowsPath;
     try {
         StudySpec spec = loadStudy(specPath.toStdString());
         hashStudyRecords(spec); // the rows' fingerprint is checked against the records' bytes
@@ -135,18 +138,18 @@ std::shared_ptr<StudyTab::Outcome> readStudyResults(const QString& specPath,
         std::vector<StudyRow> rows = readStudyRows(rowsPath.toStdString(), &text);
         const std::string dir = QFileInfo(specPath).absolutePath().toStdString();
         if (const std::string m = studyRowsMismatch(spec, dir, rows); !m.empty()) {
-            o->notice = QObject::tr("The results %1 are not shown: they are not the study's "
-                                    "(%2). Run the study again.")
-                            .arg(rowsPath, QString::fromStdString(m));
+            o.notice = QObject::tr("The results %1 are not shown: they are not the study's "
+                                   "(%2). Run the study again.")
+                           .arg(rowsPath, QString::fromStdString(m));
             return o;
         }
-        o->rows = std::move(text);
-        o->fragility = studyFragility(rows, {});
-        o->parsed = std::move(rows);
-        o->metrics = studyRecordMetrics(spec); // reads the records: the rows did not need them
+        o.rows = std::move(text);
+        o.fragility = studyFragility(rows, {});
+        o.parsed = std::move(rows);
+        o.metrics = studyRecordMetrics(spec); // reads the records: the rows did not need them
     } catch (const std::exception& e) {
-        o->notice = QObject::tr("The results %1 are not shown: %2")
-                        .arg(rowsPath, QString::fromStdString(e.what()));
+        o.notice = QObject::tr("The results %1 are not shown: %2")
+                       .arg(rowsPath, QString::fromStdString(e.what()));
     }
     return o;
 }

@@ -80,7 +80,7 @@ void fillStudyCaseTable(QTableWidget* t, const std::vector<StudyRow>& rows,
     t->setRowCount(static_cast<int>(rows.size()));
     for (int i = 0; i < t->rowCount(); ++i) {
         const StudyRow& r = rows[static_cast<std::size_t>(i)];
-        QStringList cells = {QString::fromStdString(r.record),
+        QStringList cells = {QString::fromStdString(studyRecordText(r)),
                              number(r.mu),
                              number(r.tstar),
                              QString::fromStdString(studyDriverText(r)),

@@ -28,7 +28,8 @@ const QCommandLineOption kSize("size", "With --screenshot: the window's size (de
                                "WxH");
 const QCommandLineOption kTab("tab",
                               "With --screenshot: show the centre tab whose title begins with "
-                              "TITLE (Records, Teaching, Floors, ...) in the image.",
+                              "TITLE (Records, Teaching, Floors, ...) in the image; TAB/VIEW also "
+                              "shows a view inside it (Study/Risk).",
                               "TITLE");
 const QCommandLineOption kGrid("grid",
                                "With --screenshot: N amplitudes by N frequencies over the "

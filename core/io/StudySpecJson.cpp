@@ -319,6 +319,16 @@ void readSearch(const JsonReader& top, StudySpec& s) {
     }
 }
 
+// "polarity": "normal" (each record as given, the default) or "both" (as given and inverted).
+void readPolarity(const JsonReader& top, StudySpec& s) {
+    if (!top.has("polarity")) return;
+    const json& p = top.raw("polarity");
+    const std::string v = p.is_string() ? p.get<std::string>() : p.dump();
+    if (v != "normal" && v != "both")
+        badValue(top, "polarity", quotedToken(v), "must be \"normal\" or \"both\"");
+    s.bothPolarities = v == "both";
+}
+
 } // namespace
 
 StudySpec studyFromJsonText(const std::string& text, const std::string& baseDir) {
@@ -345,6 +355,7 @@ StudySpec studyFromJsonText(const std::string& text, const std::string& baseDir)
         readBuilding(top, s);
         readParameters(top, s);
         readSearch(top, s);
+        readPolarity(top, s);
         // Each list is bounded, so the product cannot overflow before this check.
         if (studyCaseCount(s) > kMaxStudyCases)
             throw StudyError("records x parameters: " + std::to_string(studyCaseCount(s)) +

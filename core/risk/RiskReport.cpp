@@ -3,6 +3,7 @@
 
 #include "core/base/TextInput.h"
 #include "core/risk/RiskJson.h"
+#include "core/risk/SetRisk.h"
 #include "core/study/FragilityText.h"
 #include "core/study/StudyResults.h"
 
@@ -49,14 +50,13 @@ ojson givenFragilityRisk(const RiskRequest& r) {
 
 // One parameter set of the results: its fitted fragility's risk and the bootstrap percentiles,
 // or "no_fit".
-ojson setRisk(const HazardCurve& c, const std::vector<StudyRow>& rows, const RiskRequest& r) {
-    BootstrapSettings fitOnly = r.bootstrap;
-    fitOnly.resamples = 0; // the resamples are drawn once, below
-    const Fragility f = fragilityOf(rows, fitOnly);
+ojson setRiskJson(const HazardCurve& c, const std::vector<StudyRow>& rows, const RiskRequest& r) {
+    const SetRisk x = setRisk(c, rows, r.settings, r.bootstrap);
+    const Fragility& f = x.fragility;
     ojson j = fragilityParametersJson(f.parameters);
     j["records"] = f.records;
     j["collapsed"] = f.collapsed;
-    if (!f.fit) {
+    if (!x.risk) {
         j["no_fit"] = f.noFit;
         return j;
     }
@@ -65,11 +65,8 @@ ojson setRisk(const HazardCurve& c, const std::vector<StudyRow>& rows, const Ris
                       {"measure", f.parameters.measure},
                       {"median_beyond_search", f.medianBeyondSearch},
                       {"beta_at_bound", f.betaAtBound}};
-    const RiskResult risk = analyzeRisk(c, {f.fit->median, f.fit->beta}, r.settings);
-    j.update(riskResultJson(c, risk, r.settings));
-    if (r.bootstrap.resamples > 0)
-        j["bootstrap"] = riskBootstrapJson(
-            riskBootstrap(c, fragilityResamples(rows, r.bootstrap), r.settings.years), r.bootstrap);
+    j.update(riskResultJson(c, *x.risk, r.settings));
+    if (x.bootstrap) j["bootstrap"] = riskBootstrapJson(*x.bootstrap, r.bootstrap);
     return j;
 }
 
@@ -100,9 +97,9 @@ ojson studyRisk(const RiskRequest& r) {
         ++sets;
         if (r.set && rows.front().set != *r.set) return;
         if (r.set)
-            picked = setRisk(*curve, rows, r);
+            picked = setRiskJson(*curve, rows, r);
         else
-            all.push_back(setRisk(*curve, rows, r));
+            all.push_back(setRiskJson(*curve, rows, r));
     });
     if (!curve) throw RiskRequestError({"results", {}, "the results file holds no rows"});
     if (r.set && picked.is_null())

@@ -91,7 +91,8 @@ void addBounds(Fragility& f, const std::vector<std::optional<LognormalFit>>& fit
 std::vector<FragilityPoint> empiricalPoints(const std::vector<const StudyRow*>& rows) {
     std::vector<FragilityPoint> points;
     for (const StudyRow* r : rows)
-        if (r->criticalIntensity) points.push_back({r->record, *r->criticalIntensity, 0.0});
+        if (r->criticalIntensity)
+            points.push_back({studyRecordText(*r), *r->criticalIntensity, 0.0});
     std::stable_sort(points.begin(), points.end(),
                      [](const auto& a, const auto& b) { return a.intensity < b.intensity; });
     const std::vector<KaplanMeierStep> steps = kaplanMeier(sampleOf(rows));

@@ -9,15 +9,22 @@ std::size_t studyParameterSets(const StudySpec& s) {
     return s.mu.size() * s.tstar.size() * (s.floors.size() + s.levels.size()) * s.motions.size();
 }
 
+std::size_t studyCasesPerSet(const StudySpec& s) {
+    return s.records.size() * (s.bothPolarities ? 2 : 1);
+}
+
 std::size_t studyCaseCount(const StudySpec& s) {
-    return studyParameterSets(s) * s.records.size();
+    return studyParameterSets(s) * studyCasesPerSet(s);
 }
 
 StudyCase studyCase(const StudySpec& s, std::size_t index) {
     StudyCase c;
     c.index = index;
-    c.record = &s.records[index % s.records.size()];
-    c.set = index / s.records.size();
+    const std::size_t polarities = s.bothPolarities ? 2 : 1;
+    const std::size_t inSet = index % studyCasesPerSet(s);
+    c.record = &s.records[inSet / polarities];
+    c.inverted = inSet % polarities == 1;
+    c.set = index / studyCasesPerSet(s);
     std::size_t rest = c.set;
     c.motion = s.motions[rest % s.motions.size()];
     rest /= s.motions.size();
@@ -59,6 +66,7 @@ StudyRow studyRowInputs(const StudySpec& s, const StudyCase& c) {
     }
     if (c.level > 0) row.level = c.level;
     if (s.motionGiven) row.motion = motionName(c.motion);
+    if (s.bothPolarities) row.polarity = c.inverted ? "inverted" : "normal";
     row.measure = intensityName(s.intensity);
     return row;
 }

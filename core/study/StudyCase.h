@@ -2,9 +2,10 @@
 #pragma once
 // The cases of a study in their fixed order (docs/studies.md): parameter sets (mu, then t*, then
 // the driver - the floor filters, then the building's levels - then the motion, the last varying
-// fastest) on the outside, records inside, so that the records of one parameter set - one
-// fragility curve - are neighbours. A case is found from its index
-// alone: no list of cases is ever built, so a study of millions of cases takes no memory for it.
+// fastest) on the outside, records inside (with polarity "both", each record as given and then
+// inverted), so that the records of one parameter set - one fragility curve - are neighbours. A
+// case is found from its index alone: no list of cases is ever built, so a study of millions of
+// cases takes no memory for it.
 
 #include "core/study/StudyRow.h"
 #include "core/study/StudySpec.h"
@@ -23,10 +24,13 @@ struct StudyCase {
     std::optional<FloorFilterChoice> floor;
     int level = 0; // > 0: this level of the study's building drives the slab (floor is none)
     StudyMotion motion = StudyMotion::Record;
+    bool inverted = false; // the record with every sample's sign flipped (polarity "both")
 };
 
 std::size_t studyCaseCount(const StudySpec& s);
 std::size_t studyParameterSets(const StudySpec& s);
+// Cases per parameter set: the records, twice with polarity "both".
+std::size_t studyCasesPerSet(const StudySpec& s);
 StudyCase studyCase(const StudySpec& s, std::size_t index); // index < studyCaseCount
 // The inputs a case's row carries (index, the study's fingerprint, set, record, mu, t*, limit,
 // floor filter or level, motion when the study names motions, measure): what a run writes and

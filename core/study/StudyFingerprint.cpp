@@ -58,6 +58,8 @@ std::string canonicalText(const StudySpec& s) {
     t += "\nsearch " + formatDouble(s.search.from) + " " + formatDouble(s.search.to) + " " +
          formatDouble(s.search.scanStep) + " " + formatDouble(s.search.tolerance) + "\n";
     t += "as_given " + std::string(s.asGiven ? "yes" : "no") + "\n";
+    // Only a study of both polarities says so: older studies keep their fingerprints.
+    if (s.bothPolarities) t += "polarity both\n";
     for (const StudyRecord& r : s.records) {
         if (r.sha256.empty()) throw std::logic_error("study fingerprint: records not read");
         t += "record " + r.sha256 + " " + formatDouble(r.scale) + "\n";

@@ -82,6 +82,11 @@ std::string studyDriverText(const StudyRow& r) {
     return s;
 }
 
+std::string studyRecordText(const StudyRow& r) {
+    return r.polarity == std::optional<std::string>("inverted") ? r.record + " (inverted)"
+                                                                : r.record;
+}
+
 // nlohmann's dump writes the shortest text that reads back as the same double, in the C
 // locale's syntax whatever the process locale: the same bytes on every machine and rerun.
 std::string studyRowLine(const StudyRow& r) {
@@ -97,6 +102,7 @@ std::string studyRowLine(const StudyRow& r) {
                {"floor_damping", orNull(r.floorDamping)}};
     if (r.level) j["level"] = *r.level;
     if (r.motion) j["motion"] = *r.motion;
+    if (r.polarity) j["polarity"] = *r.polarity;
     j["measure"] = r.measure;
     j["record_im_g"] = r.recordIntensity;
     if (r.scale) {
@@ -147,6 +153,10 @@ void parseInputs(const nlohmann::json& j, StudyRow& r) {
     if (r.motion && r.motion != "record" && r.motion != "fitted_sine")
         throw StudyRowError("\"motion\" = " + quotedToken(*r.motion) +
                             ": expected \"record\" or \"fitted_sine\"");
+    r.polarity = optionalText(j, "polarity");
+    if (r.polarity && r.polarity != "normal" && r.polarity != "inverted")
+        throw StudyRowError("\"polarity\" = " + quotedToken(*r.polarity) +
+                            ": expected \"normal\" or \"inverted\"");
 }
 
 // The case's result: intensities > 0, a critical one (with its peak) at most the search limit.

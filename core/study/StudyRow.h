@@ -24,13 +24,14 @@ struct StudyRow {
     double limitIntensity = 0;               // g, the intensity at the search limit
     long runs = 0;
     // Written only when the study uses them, so that older studies keep their bytes:
-    std::optional<int> level;          // the level of the study's building that drives the slab
-    std::optional<std::string> motion; // "record" or "fitted_sine" (its enveloped-sine surrogate)
-    std::string noFit;                 // fitted_sine: why the motion has no envelope fit
-    std::optional<double> scale;       // the record's scale in the suite; then also:
-    double imAsGiven = 0;              // g, scale x recordIntensity
-    bool collapsesAsGiven = false;     // criticalIntensity <= imAsGiven
-    std::optional<double> margin;      // criticalIntensity / imAsGiven
+    std::optional<int> level;            // the level of the study's building that drives the slab
+    std::optional<std::string> motion;   // "record" or "fitted_sine" (its enveloped-sine surrogate)
+    std::optional<std::string> polarity; // "normal" or "inverted": the study runs both
+    std::string noFit;                   // fitted_sine: why the motion has no envelope fit
+    std::optional<double> scale;         // the record's scale in the suite; then also:
+    double imAsGiven = 0;                // g, scale x recordIntensity
+    bool collapsesAsGiven = false;       // criticalIntensity <= imAsGiven
+    std::optional<double> margin;        // criticalIntensity / imAsGiven
 };
 
 struct StudyRowError : std::runtime_error {
@@ -40,7 +41,10 @@ struct StudyRowError : std::runtime_error {
 std::string studyRowLine(const StudyRow& r); // one line, no newline
 // What drives the slab in words, for tables and legends: "ground", "floor T = 1 s, ζ = 0.02" or
 // "level 8", with ", fitted sine" when the case runs the motion's enveloped-sine surrogate.
+// (A row's polarity is the record's, not the set's: recordText says it.)
 std::string studyDriverText(const StudyRow& r);
+// The record a row ran: its label, with " (inverted)" for the inverted polarity.
+std::string studyRecordText(const StudyRow& r);
 // Throws StudyRowError saying which key is missing or wrong: of the wrong type, or out of its
 // range (a critical intensity that is not > 0, or above the row's search limit).
 StudyRow parseStudyRow(const std::string& line);

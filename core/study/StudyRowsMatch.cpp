@@ -58,6 +58,9 @@ std::string caseMismatch(const StudySpec& s, const std::string& dir, const Study
     if (r.motion.value_or("record") != motionName(c.motion))
         return "motion " + r.motion.value_or("record") + ", the study file says " +
                motionName(c.motion);
+    if (r.polarity != want.polarity)
+        return "polarity " + r.polarity.value_or("none") + ", the study file says " +
+               want.polarity.value_or("none");
     if (!same(r.scale.value_or(1.0), c.record->scale))
         return "record scale " + text(r.scale.value_or(1.0)) + ", the study file says " +
                text(c.record->scale);

@@ -51,9 +51,17 @@ void addAsGiven(const StudyRecord& record, StudyRow& row) {
 
 } // namespace
 
+Accelerogram caseGround(const Accelerogram& record, bool inverted) {
+    Accelerogram g = record;
+    if (inverted)
+        for (double& a : g.samples)
+            a = -a;
+    return g;
+}
+
 StudyRow runStudyCase(const StudySpec& s, const StudyCase& c) {
     if (!c.record->ground) throw std::logic_error("runStudyCase: the records were not read");
-    const Accelerogram& ground = *c.record->ground;
+    const Accelerogram ground = caseGround(*c.record->ground, c.inverted);
     const Accelerogram motion = caseMotion(s, c, ground);
     Slab1DCase slab;
     slab.tstar = c.tstar;

@@ -17,6 +17,8 @@ namespace kinstab {
 // records must have been read (loadStudyRecords, core/study/StudyRecords.h): a case never reads
 // a file, so a record changed during the study cannot change its rows.
 StudyRow runStudyCase(const StudySpec& s, const StudyCase& c);
+// The ground motion of a case: the record as read, or with every sample's sign flipped.
+Accelerogram caseGround(const Accelerogram& record, bool inverted);
 
 struct StudyRunOptions {
     Shard shard;

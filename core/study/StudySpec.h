@@ -95,7 +95,11 @@ struct StudySpec {
     std::vector<int> levels; // 1-based levels of the building, crossed beside the floor filters
     std::vector<StudyMotion> motions = {StudyMotion::Record};
     bool motionGiven = false; // parameters.motion is in the file: rows name their motion
-    double limit = 1.0;       // slab.limit, bearing length / (d/2)
+    // "polarity": "both" runs every record as given and inverted (each sample's sign flipped) as
+    // two cases, the SLAMMER convention for a suite (Jibson & Jibson 2003); rows then name their
+    // polarity. "normal" (the default) runs each record once, as older study files did.
+    bool bothPolarities = false;
+    double limit = 1.0; // slab.limit, bearing length / (d/2)
     CriticalSearch search;
     std::string fingerprint; // once the records are read (core/study/StudyFingerprint.h)
 };
