@@ -40,11 +40,20 @@ QColor cellColour(const OverturningMap& m, std::size_t k) {
     return QColor::fromRgbF(1.0 - 0.75 * t, 1.0 - 0.55 * t, 1.0 - 0.2 * t);
 }
 
+// The legend goes in a strip under the axes, as the γc contour map's: inside the plot it
+// covered the cells of the upper right, where the safe cape of a slender block lies.
 void paintMap(QPainter& pa, const QRectF& r, const OverturningMap& m) {
     const OverturningMapSpec& s = m.spec;
     const double dx = (s.frequencyMax - s.frequencyMin) / (s.frequencyPoints - 1);
     const double dy = (s.amplitudeMax - s.amplitudeMin) / (s.amplitudePoints - 1);
-    PlotFrame f(r, s.frequencyMin - dx / 2, s.frequencyMax + dx / 2, s.amplitudeMin - dy / 2,
+    const std::vector<LegendEntry> legend{
+        {QStringLiteral("overturns"), kOverturns},
+        {QStringLiteral("leaves the base (counted as overturning)"), kLeaves},
+        {QStringLiteral("stands (shade: largest |θ|/α)"), kStands}};
+    const FigureScale scale{r.width()};
+    const double strip = legendRowsHeight(scale, legend.size(), 2);
+    const QRectF plotArea = r.adjusted(0, 0, 0, -strip);
+    PlotFrame f(plotArea, s.frequencyMin - dx / 2, s.frequencyMax + dx / 2, s.amplitudeMin - dy / 2,
                 s.amplitudeMax + dy / 2);
     pa.setPen(Qt::NoPen);
     for (int i = 0; i < s.frequencyPoints; ++i)
@@ -55,11 +64,8 @@ void paintMap(QPainter& pa, const QRectF& r, const OverturningMap& m) {
             pa.fillRect(cell.adjusted(0, 0, 0.5, 0.5), cellColour(m, m.at(i, j)));
         }
     f.drawAxes(pa, QStringLiteral("ω_p / p"), QStringLiteral("a_p / (α g)"));
-    drawLegend(pa, f.scale(), f.plot().topRight() + QPointF(-f.scale().unit(), f.scale().unit()),
-               {{QStringLiteral("overturns"), kOverturns},
-                {QStringLiteral("leaves the base (counted as overturning)"), kLeaves},
-                {QStringLiteral("stands (shade: largest |θ|/α)"), kStands}},
-               true);
+    drawLegendRows(pa, f.scale(),
+                   QRectF(f.plot().left(), plotArea.bottom(), f.plot().width(), strip), legend, 2);
 }
 
 QString intervalsText(const BlockCheckPart& b) {

@@ -32,6 +32,8 @@ QString sectionForTitle(const QString& title) {
         {QStringLiteral("History"), QStringLiteral("The charts")},
         {QStringLiteral("A_crit(f)"), QStringLiteral("The charts")},
         {QStringLiteral("γc surface"), QStringLiteral("Reading a γc surface")},
+        // The first tab while the free-standing block is the model: its map is told there.
+        {QStringLiteral("Overturning map"), QStringLiteral("Model")},
         {QStringLiteral("Teaching"), QStringLiteral("The teaching view")},
         {QStringLiteral("Records"), QStringLiteral("Records")},
         {QStringLiteral("Numerics"), QStringLiteral("Numerics")},

@@ -2,6 +2,7 @@
 #include "ui/MainWindow.h"
 
 #include "ui/AtomicSave.h"
+#include "ui/BlockMapView.h"
 #include "ui/ChartMenu.h"
 #include "ui/FloorsView.h"
 #include "ui/FrictionPanel.h"
@@ -128,7 +129,9 @@ void MainWindow::buildTabDocks() {
     m_tabDocks = new TabDocks(
         m_centre, m_chartDocks,
         [this](int i) {
-            return m_centre->widget(i) == m_surface || m_centre->widget(i)->isAncestorOf(m_records);
+            // The first tab holds the surface (or the block's map) in a stack.
+            return m_centre->widget(i)->isAncestorOf(m_surface) ||
+                   m_centre->widget(i)->isAncestorOf(m_records);
         },
         this);
 }
@@ -137,9 +140,9 @@ void MainWindow::buildTabDocks() {
 void MainWindow::buildCentre() {
     m_centre = new QTabWidget;
     m_centre->setDocumentMode(true);
-    m_centre->addTab(m_surface, tr("γc surface"));
+    m_centre->addTab(buildBlockMap(), tr("γc surface"));
     m_teaching = new TeachingView;
-    m_centre->addTab(scrollable(m_teaching),
+    m_centre->addTab(scrollable(buildTeachingStack()),
                      tr("Teaching")); // its minimum size must not grow the window
     m_records = new RecordsTab;
     m_centre->addTab(scrollable(m_records), tr("Records"));
@@ -186,6 +189,7 @@ void MainWindow::connectInputs() {
         connect(p, &InputPanel::changed, m_undo, &InputHistory::recordChange);
     }
     connect(m_modelPanel, &InputPanel::changed, this, &MainWindow::updateTitle);
+    connect(m_modelPanel, &InputPanel::changed, this, &MainWindow::showModelView);
     connect(m_modelPanel, &InputPanel::changed, this,
             [this] { m_records->preview()->setPlanarBase(m_modelPanel->isPlanar()); });
     connect(m_slabPanel, &InputPanel::changed, this, [this] {
@@ -211,6 +215,7 @@ void MainWindow::connectRuns() {
 MainWindow::~MainWindow() {
     // The runner (a child) cancels and waits in its destructor; do it before the views go.
     m_runner->cancel();
+    m_blockMap->cancel();
 }
 
 void MainWindow::buildFileMenu() {
@@ -385,7 +390,8 @@ void MainWindow::updateRunState() {
                  "critical peak and the verdict per code (Verdict, Excitation). Set Source to "
                  "Enveloped sine for the surface.")
             : QString());
-    const bool running = m_runner->isRunning() || m_recordRunner->isRunning();
+    const bool running =
+        m_runner->isRunning() || m_recordRunner->isRunning() || m_blockMap->isRunning();
     m_run->setEnabled(!running && inputsValid());
     m_cancel->setEnabled(running);
     if (running) return;
@@ -396,12 +402,15 @@ void MainWindow::updateRunState() {
         m_status->setText(tr("Fix before running — %1").arg(problems.join(QStringLiteral("; "))));
         m_run->setToolTip(problems.join(QLatin1Char('\n')));
     } else {
-        m_run->setToolTip(tr("Compute γc over the grid (Ctrl+R / F5)"));
+        m_run->setToolTip(m_modelPanel->isBlock()
+                              ? tr("Compute the block's overturning map (Ctrl+R / F5)")
+                              : tr("Compute γc over the grid (Ctrl+R / F5)"));
         if (m_status->text().startsWith(tr("Fix before running"))) m_status->clear();
     }
 }
 
 void MainWindow::runSweep() {
+    if (m_modelPanel->isBlock()) return runBlockMap();
     if (m_excitation->usesRecord()) return runRecord();
     if (!inputsValid() || m_runner->isRunning()) return;
     const Project p = project();
@@ -433,6 +442,7 @@ void MainWindow::runSweep() {
 }
 
 void MainWindow::cancelSweep() {
+    m_blockMap->cancel();
     m_runner->cancel();
     m_recordRunner->cancel();
 }

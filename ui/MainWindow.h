@@ -21,6 +21,7 @@
 
 class QAction;
 class QChartView;
+class QComboBox;
 class QDockWidget;
 class QLabel;
 class QStackedWidget;
@@ -28,6 +29,8 @@ class QTabWidget;
 
 namespace kinstab::ui {
 
+class BlockMapView;
+class BlockTeachingView;
 class BuildingPanel;
 class TabDocks;
 class CodesPanel;
@@ -78,6 +81,8 @@ public:
     QAction* cancelAction() const { return m_cancel; }
     SweepRunner* runner() const { return m_runner; }
     SurfaceView* surfaceView() const { return m_surface; }
+    // The free-standing block's overturning map (the first tab while that model is chosen).
+    BlockMapView* blockMapView() const { return m_blockMap; }
     HistoryChart* historyChart() const { return m_history; }
     SliceChart* sliceChart() const { return m_slice; }
     SlabPanel* slabPanel() const { return m_slabPanel; }
@@ -94,6 +99,9 @@ public:
     CodesPanel* codesPanel() const { return m_codesPanel; }
     VerdictPanel* verdictPanel() const { return m_verdict; }
     TeachingView* teachingView() const { return m_teaching; }
+    // The Teaching tab's free-standing block, and the choice between it and the slab.
+    BlockTeachingView* blockTeachingView() const { return m_blockTeaching; }
+    QComboBox* teachingSubject() const { return m_teachingSubject; }
     FloorsView* floorsView() const { return m_floors; }
     FrictionPanel* frictionPanel() const { return m_friction; }
     UnitSystem unitSystem() const { return m_units; } // View → Units, or the open project's
@@ -133,6 +141,7 @@ signals:
     void sweepFinished();
     void recordRunFinished();
     void assessmentFinished(); // the whole assessment of the inputs shown is in the panel
+    void blockMapFinished();   // a run of the block's overturning map ended (or was cancelled)
 
 protected:
     void closeEvent(QCloseEvent* e) override;
@@ -187,6 +196,11 @@ private:
     void restoreSettings();
     void setUnits(UnitSystem s);  // the views that draw lengths (the fields follow by themselves)
     void showUnits(UnitSystem s); // the menu's mark, the fields and the views (open, undo)
+    // The free-standing block model (MainWindowBlock.cpp).
+    QWidget* buildBlockMap(); // the first tab: the γc surface or the block's map
+    void showModelView();
+    void runBlockMap();
+    QWidget* buildTeachingStack(); // the slab's or the block's animation
     // A record as the excitation (MainWindowRecord.cpp).
     void buildRecordRun();
     void runRecord();
@@ -199,6 +213,8 @@ private:
     ExcitationPanel* m_excitation;
     GridPanel* m_gridPanel;
     SurfaceView* m_surface;
+    BlockMapView* m_blockMap = nullptr;
+    QStackedWidget* m_resultStack = nullptr; // the γc surface or the block's map
     SliceChart* m_slice;
     HistoryChart* m_history;
     PlanarHistoryChart* m_planarHistory = nullptr;
@@ -207,6 +223,8 @@ private:
     VerdictPanel* m_verdict;
     QTabWidget* m_centre = nullptr;
     TeachingView* m_teaching = nullptr;
+    BlockTeachingView* m_blockTeaching = nullptr;
+    QComboBox* m_teachingSubject = nullptr; // in the tab bar's corner while Teaching shows
     RecordsTab* m_records = nullptr;
     NumericsView* m_numerics = nullptr;
     StudyTab* m_study = nullptr;

@@ -6,6 +6,7 @@
 #include "core/codes/CodeSet.h"
 #include "report/CodeStyle.h"
 #include "ui/AtomicSave.h"
+#include "ui/BlockMapView.h"
 #include "ui/BuildingPanel.h"
 #include "ui/CodesPanel.h"
 #include "ui/ExcitationPanel.h"
@@ -25,6 +26,7 @@
 #include "ui/TabDocks.h"
 #include "ui/UnitsMenu.h"
 #include "ui/VerdictPanel.h"
+#include "ui/teaching/BlockTeachingView.h"
 #include "ui/teaching/TeachingView.h"
 
 #include <QFile>
@@ -56,6 +58,7 @@ Project MainWindow::project() const {
     p.grid = m_gridPanel->grid();
     p.model = m_modelPanel->model();
     p.planar = m_modelPanel->settings();
+    p.blockMap = m_modelPanel->blockSettings();
     p.record = m_excitation->record();
     // The unit system is the project's once it names one or differs from its building's.
     Project plain = p;
@@ -67,6 +70,8 @@ Project MainWindow::project() const {
 void MainWindow::setUnits(UnitSystem s) {
     m_units = s;
     m_teaching->setUnitSystem(s);
+    m_blockMap->setUnitSystem(s);
+    m_blockTeaching->setUnitSystem(s);
     m_floors->setUnitSystem(s);
     m_friction->setUnitSystem(s);
     m_slabPanel->updateDerived();
@@ -98,7 +103,7 @@ void MainWindow::showInputs(const Project& p) {
     m_excitation->setEnvelope(p.slab.envelope);
     m_excitation->setScale(p.slab.scale);
     m_excitation->setTstar(p.slab.tstar);
-    m_modelPanel->load(p.model, p.planar);
+    m_modelPanel->load(p.model, p.planar, p.blockMap);
     m_excitation->setRecord(p.record);
     if (!m_gridPanel->setGrid(p.grid))
         statusBar()->showMessage(

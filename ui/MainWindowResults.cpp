@@ -6,6 +6,7 @@
 
 #include "core/assessment/RunAssessment.h"
 #include "core/slab/VerticalRecord.h"
+#include "ui/BlockMapView.h"
 #include "ui/CriticalChart.h"
 #include "ui/ExcitationPanel.h"
 #include "ui/GridPanel.h"
@@ -38,6 +39,7 @@ void MainWindow::clearResults() {
     // A run still going belongs to the previous inputs: stopped, and its end is not shown.
     m_runner->cancel();
     m_recordRunner->cancel();
+    m_blockMap->clear();
     m_assessJob->cancel();
     m_assessment.reset();
     m_results.clear();

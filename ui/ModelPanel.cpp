@@ -30,13 +30,18 @@ ModelPanel::ModelPanel(QWidget* parent)
     m_model->setObjectName(QStringLiteral("model"));
     m_model->addItem(tr("1-DOF (across the walls)"));
     m_model->addItem(tr("Planar (2-DOF, with vertical)"));
+    m_model->addItem(tr("Free-standing block"));
     m_model->setToolTip(
         tr("1-DOF: the slab slides across the walls only (Furgerson 1980 ch. IV).\n"
            "Planar: it slides in both horizontal directions, friction along the relative "
-           "velocity, normal force 1 + a_z (ch. VI); slower, 2–5 ms of CPU per point."));
+           "velocity, normal force 1 + a_z (ch. VI); slower, 2–5 ms of CPU per point.\n"
+           "Free-standing block: a rigid block that rocks, slides and may overturn under a "
+           "pulse; Run maps overturning over a_p/(αg) and ω_p/p (Zhang & Makris 2001)."));
     form()->addRow(tr("&Model:"), m_model);
     buildPlanarRows();
+    buildBlockRows();
     connect(m_model, &QComboBox::currentIndexChanged, this, [this] {
+        if (!isBlock()) m_slabIndex = m_model->currentIndex();
         updateMode();
         emit changed();
     });
@@ -69,6 +74,7 @@ void ModelPanel::buildPlanarRows() {
         tr("How each horizontal component's S_max is taken. Product: each peaks at its "
            "amplitude (ch. IV). Envelope: as printed in ch. VI, somewhat below it."));
     form()->addRow(tr("S_max:"), m_normalization);
+    m_vertical->setObjectName(QStringLiteral("verticalSource"));
     m_vertical->addItem(tr("None (gravity only)"));
     m_vertical->addItem(tr("RSN68 UP (for Pacoima Dam)"));
     m_vertical->addItem(tr("Record file…"));
@@ -107,6 +113,13 @@ void ModelPanel::updateMode() {
     const auto v = static_cast<VerticalSource>(m_vertical->currentIndex());
     form()->setRowVisible(m_fileRow, planar && v == VerticalSource::File);
     form()->setRowVisible(m_note, planar && v == VerticalSource::Rsn68Up);
+    const bool block = isBlock();
+    for (NumberField* f : {m_b, m_h, m_mu, m_restitution, m_aMax, m_wMax, m_points}) {
+        f->setEnabled(block);
+        form()->setRowVisible(f, block);
+    }
+    for (QWidget* w : std::initializer_list<QWidget*>{m_equations, m_pulse, m_blockNote})
+        form()->setRowVisible(w, block);
     checkVerticalFile();
 }
 
@@ -153,8 +166,13 @@ bool ModelPanel::isPlanar() const {
     return m_model->currentIndex() == 1;
 }
 
+bool ModelPanel::isBlock() const {
+    return m_model->currentIndex() == 2;
+}
+
 ModelKind ModelPanel::model() const {
-    return isPlanar() ? ModelKind::Planar : ModelKind::Slab1D;
+    return (isBlock() ? m_slabIndex : m_model->currentIndex()) == 1 ? ModelKind::Planar
+                                                                    : ModelKind::Slab1D;
 }
 
 PlanarSettings ModelPanel::settings() const {
@@ -169,11 +187,13 @@ PlanarSettings ModelPanel::settings() const {
     return s;
 }
 
-void ModelPanel::load(ModelKind model, const PlanarSettings& s) {
+void ModelPanel::load(ModelKind model, const PlanarSettings& s, const BlockMapSettings& b) {
     m_loaded = s;
     {
         const QSignalBlocker block(this); // one changed() at the end
-        m_model->setCurrentIndex(model == ModelKind::Planar ? 1 : 0);
+        m_slabIndex = model == ModelKind::Planar ? 1 : 0;
+        m_model->setCurrentIndex(b.selected ? 2 : m_slabIndex);
+        showBlock(b);
         m_fy->setValue(s.fyHz);
         m_ratio->setValue(s.ayRatio);
         m_theta->setValue(s.theta);

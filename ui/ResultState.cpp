@@ -10,9 +10,11 @@ namespace kinstab::ui {
 InputFingerprint fingerprintOf(const Project& p) {
     nlohmann::json j = projectToJson(p);
     nlohmann::json codes = {{"building", j["building"]}, {"codes", j["codes"]}};
-    // The unit system changes only how lengths are shown: no result goes stale with it.
+    // The unit system changes only how lengths are shown: no result goes stale with it. The
+    // free-standing block's map judges its own inputs (ui/BlockMapView.h): choosing or editing
+    // the block leaves the slab's results as they are.
     for (const char* key :
-         {"format", "version", "name", "description", "building", "codes", "units"})
+         {"format", "version", "name", "description", "building", "codes", "units", "block_map"})
         j.erase(key);
     return {j.dump(), codes.dump()};
 }

@@ -6,6 +6,7 @@
 #include "core/base/TextInput.h"
 #include "core/io/AtomicFile.h"
 #include "core/io/BlockJson.h"
+#include "core/io/BlockMapJson.h"
 #include "core/io/CodesJson.h"
 #include "core/io/FloorsJson.h"
 #include "core/io/JsonReader.h"
@@ -66,6 +67,7 @@ std::string validateProject(const Project& p) {
     if (e.empty() && p.record) e = validateRecordExcitation(*p.record);
     if (e.empty() && p.floors) e = validateFloorSettings(*p.floors, p.building.stories);
     if (e.empty()) e = validateFreeBlocks(p.blocks, p.building.stories);
+    if (e.empty()) e = describe(checkBlockMapSettings(p.blockMap), "block_map.");
     return e;
 }
 
@@ -178,6 +180,7 @@ json projectToJson(const Project& p, const std::string& baseDir) {
     if (!p.info.empty()) j["info"] = projectInfoToJson(p.info);      // older files have none
     if (p.study) j["study"] = studyToJson(*p.study, baseDir);        // nor a study
     if (!p.blocks.empty()) j["blocks"] = freeBlocksToJson(p.blocks); // nor blocks
+    if (p.blockMap != BlockMapSettings{}) j["block_map"] = blockMapToJson(p.blockMap); // nor this
     return j;
 }
 
@@ -192,7 +195,7 @@ const nlohmann::ordered_json& newFileOrder() {
       "slab": {"envelope": 0, "tstar": 0, "wall_width_in": 0, "mu": 0, "limit": 0},
       "grid": {"amplitudes": 0, "frequencies": 0},
       "model": 0, "check": {"from": 0, "max_amplitude": 0}, "units": 0, "planar": 0,
-      "excitation": 0, "floors": 0, "study": 0, "blocks": 0})");
+      "excitation": 0, "floors": 0, "study": 0, "blocks": 0, "block_map": 0})");
     return order;
 }
 } // namespace
@@ -237,6 +240,7 @@ Project projectFromJson(const json& j, const std::string& baseDir) {
             if (!p.units) r.fail("units", quotedToken(*u) + " must be si or us");
         }
         if (r.has("blocks")) p.blocks = freeBlocksFromJson(r);
+        if (auto b = r.optionalObject("block_map")) p.blockMap = blockMapFromJson(*b);
         if (const std::string e = validateProject(p); !e.empty()) throw ProjectError(e);
         if (p.record) checkRecordFile(*p.record);
         if (p.study) checkStudyFile(*p.study);

@@ -14,6 +14,7 @@
 #include "core/excitation/RecordExcitation.h"
 #include "core/io/ProjectInfo.h"
 #include "core/io/StudyJson.h"
+#include "core/rocking/BlockMapSettings.h"
 #include "core/rocking/FreeBlock.h"
 #include "core/slab/PlanarSettings.h"
 #include "core/slab/Slab1DCase.h"
@@ -56,6 +57,9 @@ struct Project {
     // its key order and the grid as typed ("0.70:1.15:0.05"). Empty for a new project.
     nlohmann::ordered_json layout;
     std::vector<FreeBlock> blocks; // free-standing blocks on levels, each a check (with a record)
+    // The GUI's free-standing block model and its overturning map ("block_map"); not part of
+    // the assessment (the blocks above are).
+    BlockMapSettings blockMap;
 };
 
 // The project's unit system: as it names it, else US for a building in ft and SI for one in m.

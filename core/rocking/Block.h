@@ -14,6 +14,7 @@ namespace kinstab {
 struct Block {
     double halfWidth = 0.2;  // b, m
     double halfHeight = 0.6; // h, m
+    bool operator==(const Block&) const = default;
 };
 
 double blockAlpha(const Block& b);     // atan(b/h), rad

@@ -109,8 +109,10 @@ private slots:
 
     void brokenVerticalFileDisablesRun() {
         modelCombo()->setCurrentIndex(1);
-        w->modelPanel()->findChildren<QComboBox*>().last()->setCurrentIndex(2); // record file
-        QVERIFY(!w->runAction()->isEnabled());                                  // no file named yet
+        w->modelPanel()
+            ->findChild<QComboBox*>(QStringLiteral("verticalSource"))
+            ->setCurrentIndex(2);              // record file
+        QVERIFY(!w->runAction()->isEnabled()); // no file named yet
         QLineEdit* path = w->modelPanel()->verticalPathEdit();
         path->setText(QStringLiteral("/nonexistent/UP.AT2"));
         emit path->editingFinished();

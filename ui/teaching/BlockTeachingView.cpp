@@ -1,0 +1,247 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/teaching/BlockTeachingView.h"
+
+#include "ui/teaching/BlockAnimation.h"
+#include "ui/teaching/BlockPresets.h"
+#include "ui/teaching/TeachingPlayer.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QScrollArea>
+#include <QShortcut>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QStyle>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace kinstab::ui {
+
+namespace {
+const double kSpeeds[] = {0.1, 0.25, 0.5, 1.0, 2.0};
+// How long an impact flashes in the drawing, s of the run.
+constexpr double kImpactFlash = 0.04;
+} // namespace
+
+BlockTeachingView::BlockTeachingView(QWidget* parent)
+    : QWidget(parent), run_(std::make_unique<BlockRun>()), player_(new TeachingPlayer(this)),
+      animation_(new BlockAnimation(this)), traces_(new BlockTraces(this)) {
+    setObjectName(QStringLiteral("blockTeachingView"));
+    auto* left = new QVBoxLayout;
+    left->addWidget(animation_, 5);
+    left->addWidget(traces_, 3);
+    left->addWidget(buildTransport());
+    auto* root = new QHBoxLayout(this);
+    root->setContentsMargins(4, 4, 4, 4);
+    root->addLayout(left, 1);
+    root->addWidget(buildSidePanel());
+    connect(player_, &TeachingPlayer::tauChanged, this, &BlockTeachingView::showFrame);
+    connect(traces_, &BlockTraces::seekRequested, player_, &TeachingPlayer::seek);
+    player_->setSpeed(kDefaultSpeed);
+    installKeys();
+    applyPreset(blockPresets().front().id);
+}
+
+// The slab's keys (TeachingView): space plays and pauses, N and B step between events, wherever
+// the focus is inside the view.
+void BlockTeachingView::installKeys() {
+    animation_->setFocusPolicy(Qt::ClickFocus);
+    traces_->setFocusPolicy(Qt::ClickFocus);
+    auto key = [this](QKeyCombination k, auto slot) {
+        auto* s =
+            new QShortcut(QKeySequence(k), this, nullptr, nullptr, Qt::WidgetWithChildrenShortcut);
+        connect(s, &QShortcut::activated, player_, slot);
+    };
+    key(Qt::Key_Space, &TeachingPlayer::togglePlay);
+    key(Qt::Key_N, &TeachingPlayer::stepToNextEvent);
+    key(Qt::Key_B, &TeachingPlayer::stepToPreviousEvent);
+}
+
+BlockTeachingView::~BlockTeachingView() = default;
+
+QWidget* BlockTeachingView::buildTransport() {
+    auto* bar = new QWidget(this);
+    bar->setObjectName(QStringLiteral("blockTransport"));
+    auto* h = new QHBoxLayout(bar);
+    h->setContentsMargins(0, 0, 0, 0);
+    auto tool = [&](QStyle::StandardPixmap icon, const QString& tip, auto slot) {
+        auto* b = new QToolButton(bar);
+        b->setIcon(style()->standardIcon(icon));
+        b->setToolTip(tip);
+        b->setMinimumWidth(34);
+        connect(b, &QToolButton::clicked, player_, slot);
+        h->addWidget(b);
+        return b;
+    };
+    tool(QStyle::SP_MediaSkipBackward, tr("Back to the start"), &TeachingPlayer::rewind);
+    tool(QStyle::SP_MediaSeekBackward, tr("Previous event (B)"),
+         &TeachingPlayer::stepToPreviousEvent);
+    playButton_ =
+        tool(QStyle::SP_MediaPlay, tr("Play / pause (space)"), &TeachingPlayer::togglePlay);
+    tool(QStyle::SP_MediaSeekForward, tr("Next event: impact, mode change, overturning (N)"),
+         &TeachingPlayer::stepToNextEvent);
+    connect(player_, &TeachingPlayer::playingChanged, this, [this](bool on) {
+        playButton_->setIcon(
+            style()->standardIcon(on ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    });
+    scrub_ = new QSlider(Qt::Horizontal, bar);
+    scrub_->setObjectName(QStringLiteral("blockScrub"));
+    scrub_->setRange(0, kScrubSteps);
+    scrub_->setToolTip(tr("Scrub through the run"));
+    connect(scrub_, &QSlider::valueChanged, this,
+            [this](int v) { player_->seek(run_->end() * v / kScrubSteps); });
+    h->addWidget(scrub_, 1);
+    timeLabel_ = new QLabel(bar);
+    timeLabel_->setMinimumWidth(120);
+    h->addWidget(timeLabel_);
+    speed_ = new QComboBox(bar);
+    for (double s : kSpeeds)
+        speed_->addItem(QStringLiteral("%1×").arg(s), s);
+    speed_->setCurrentIndex(2); // kDefaultSpeed
+    speed_->setToolTip(tr("Speed: 1× is real time"));
+    connect(speed_, &QComboBox::currentIndexChanged, this,
+            [this](int i) { player_->setSpeed(speed_->itemData(i).toDouble()); });
+    h->addWidget(speed_);
+    return bar;
+}
+
+QWidget* BlockTeachingView::buildSidePanel() {
+    auto* side = new QWidget;
+    auto* v = new QVBoxLayout(side);
+    v->setContentsMargins(0, 0, 0, 0);
+    presets_ = new QComboBox(side);
+    presets_->setObjectName(QStringLiteral("blockPresets"));
+    for (const BlockPreset& p : blockPresets())
+        presets_->addItem(QStringLiteral("%1 · %2").arg(p.title, p.source), p.id);
+    presets_->setToolTip(tr("A published case of the rocking literature in one click"));
+    presets_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    presets_->setMinimumContentsLength(10);
+    connect(presets_, &QComboBox::activated, this,
+            [this](int i) { applyPreset(presets_->itemData(i).toString()); });
+    v->addWidget(presets_);
+    caption_ = new QLabel(side);
+    caption_->setWordWrap(true);
+    caption_->setStyleSheet(QStringLiteral("color: #555;"));
+    v->addWidget(caption_);
+    outcome_ = new QLabel(side);
+    outcome_->setWordWrap(true);
+    outcome_->setTextFormat(Qt::RichText);
+    v->addWidget(outcome_);
+    events_ = new QListWidget(side);
+    events_->setToolTip(tr("Click an event to go to it"));
+    connect(events_, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) {
+        player_->pause();
+        player_->seek(item->data(Qt::UserRole).toDouble());
+    });
+    v->addWidget(events_, 1);
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(side);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setFixedWidth(350);
+    return scroll;
+}
+
+bool BlockTeachingView::applyPreset(const QString& id) {
+    const BlockPreset* preset = findBlockPreset(id);
+    if (!preset) return false;
+    presetId_ = id;
+    {
+        const QSignalBlocker block(presets_);
+        presets_->setCurrentIndex(presets_->findData(id));
+    }
+    caption_->setText(QStringLiteral("%1: %2").arg(preset->source, preset->caption));
+    rerun(preset->blockCase);
+    player_->rewind();
+    return true;
+}
+
+void BlockTeachingView::setCase(const BlockCase& c) {
+    presetId_.clear();
+    caption_->clear();
+    rerun(c);
+}
+
+void BlockTeachingView::setUnitSystem(UnitSystem s) {
+    units_ = s;
+    updateOutcome();
+    showFrame(player_->tau());
+}
+
+void BlockTeachingView::rerun(const BlockCase& c) {
+    run_ = std::make_unique<BlockRun>(c);
+    traces_->setRun(run_.get());
+    events_->clear();
+    const RockingResult& r = run_->result();
+    for (double t : run_->eventTimes()) {
+        const bool impact =
+            std::find(r.impactTimes.begin(), r.impactTimes.end(), t) != r.impactTimes.end();
+        const bool over = r.overturnTime && *r.overturnTime == t;
+        const RockingSample s = run_->at(t);
+        const QString what =
+            over     ? tr("overturned")
+            : impact ? tr("impact, rocks on about the other corner")
+                     : tr("starts to %1")
+                           .arg(QString::fromUtf8(blockModeName(s.mode).data(),
+                                                  static_cast<int>(blockModeName(s.mode).size())));
+        auto* item = new QListWidgetItem(tr("t = %1 s: %2").arg(t, 0, 'f', 3).arg(what), events_);
+        item->setData(Qt::UserRole, t);
+    }
+    updateOutcome();
+    player_->setRun(run_->eventTimes(), run_->end(), 1.0); // time in seconds; shows the frame
+    emit runChanged();
+}
+
+RockingSample BlockTeachingView::displayedState() const {
+    return animation_->scene().state;
+}
+
+void BlockTeachingView::showFrame(double t) {
+    BlockScene sc;
+    sc.block = run_->blockCase().model.block;
+    sc.state = run_->at(t);
+    sc.baseAcceleration = run_->baseAcceleration(t);
+    sc.overturned = run_->overturnedBy(t);
+    sc.impact = run_->impactNear(t, kImpactFlash).has_value();
+    sc.units = units_;
+    animation_->setScene(sc);
+    traces_->setCursor(t);
+    {
+        const QSignalBlocker block(scrub_);
+        const double end = run_->end();
+        scrub_->setValue(end > 0 ? static_cast<int>(std::lround(t / end * kScrubSteps)) : 0);
+    }
+    timeLabel_->setText(tr("t %1 / %2 s").arg(t, 0, 'f', 3).arg(run_->end(), 0, 'f', 2));
+}
+
+void BlockTeachingView::updateOutcome() {
+    const BlockRun& r = *run_;
+    if (!r.error().empty()) {
+        outcome_->setText(QStringLiteral("<span style='color:#c0392b'>%1</span>")
+                              .arg(QString::fromStdString(r.error()).toHtmlEscaped()));
+        return;
+    }
+    const RockingResult& res = r.result();
+    const std::string_view name = rockingOutcomeName(res.outcome);
+    const double perUnit = metresPerDisplayUnit(units_, LengthScale::Detail);
+    QString text =
+        tr("<b>%1</b>: max |θ|/α = %2, impacts: %3, sliding %4 %5")
+            .arg(QString::fromUtf8(name.data(), static_cast<int>(name.size())))
+            .arg(res.maxThetaOverAlpha, 0, 'f', 3)
+            .arg(res.impactTimes.size())
+            .arg(res.slidingDisplacement / perUnit, 0, 'f', units_ == UnitSystem::US ? 2 : 1)
+            .arg(lengthSymbol(units_, LengthScale::Detail));
+    if (res.overturnTime) text += tr("; overturned at t = %1 s").arg(*res.overturnTime, 0, 'f', 3);
+    text += tr("<br>α = %1 rad, p = %2 rad/s, η = %3")
+                .arg(r.alpha(), 0, 'f', 4)
+                .arg(r.p(), 0, 'f', 3)
+                .arg(restitutionOf(r.blockCase().model), 0, 'f', 3);
+    outcome_->setText(text);
+}
+
+} // namespace kinstab::ui
