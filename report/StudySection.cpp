@@ -155,8 +155,12 @@ void fragilityTable(ReportDocument& doc, const std::vector<Fragility>& sets) {
             {}};
     for (const Fragility& f : sets) {
         const StudyRow& r = f.parameters;
-        t.rows.push_back({QString::number(r.set + 1), num(r.mu, 3), num(r.tstar, 3),
-                          qs(studyDriverText(r)),
+        // A block set: its block's mu (— when the base holds it) and no t*.
+        const QString mu = !r.block      ? num(r.mu, 3)
+                           : r.block->mu ? num(*r.block->mu, 3)
+                                         : QStringLiteral("—");
+        const QString tstar = r.block ? QStringLiteral("—") : num(r.tstar, 3);
+        t.rows.push_back({QString::number(r.set + 1), mu, tstar, qs(studyDriverText(r)),
                           QStringLiteral("%1 of %2").arg(f.collapsed).arg(f.records), medianCell(f),
                           bounds(f.medianLower, f.medianUpper, 3, f.searchTop),
                           f.fit ? num(f.fit->beta, 3) + (f.betaAtBound ? " (at bound)" : "")
@@ -231,14 +235,18 @@ void fragilityFigures(ReportDocument& doc, const std::vector<Fragility>& sets,
         if (!f.fit) continue;
         const CurvePlot plot = fragilityPlot(f, xhi, measure);
         const std::vector<FragilityPoint> points = f.points;
+        const QString of = f.parameters.block
+                               ? QStringLiteral("Overturning fragility of set %1 (block %2)")
+                                     .arg(f.parameters.set + 1)
+                                     .arg(qs(studyBlockText(*f.parameters.block)))
+                               : QStringLiteral("Collapse fragility of set %1 (μ = %2, t* = %3 s)")
+                                     .arg(f.parameters.set + 1)
+                                     .arg(num(f.parameters.mu, 3), num(f.parameters.tstar, 3));
         doc.addFigure(
             {[plot, points](QPainter& pa, const QRectF& a) { paintFragility(pa, a, plot, points); },
              0.42,
-             QStringLiteral("Collapse fragility of set %1 (μ = %2, t* = %3 s): the "
-                            "fitted lognormal curve, its bootstrap bounds and the "
-                            "records' critical intensities (points).")
-                 .arg(f.parameters.set + 1)
-                 .arg(num(f.parameters.mu, 3), num(f.parameters.tstar, 3))});
+             of + QStringLiteral(": the fitted lognormal curve, its bootstrap bounds and the "
+                                 "records' critical intensities (points).")});
     }
 }
 

@@ -58,6 +58,7 @@ std::string canonicalText(const StudySpec& s) {
     t += "\nsearch " + formatDouble(s.search.from) + " " + formatDouble(s.search.to) + " " +
          formatDouble(s.search.scanStep) + " " + formatDouble(s.search.tolerance) + "\n";
     t += "as_given " + std::string(s.asGiven ? "yes" : "no") + "\n";
+    if (s.block) t += "block " + studyBlockText(*s.block) + "\n";
     for (const StudyRecord& r : s.records) {
         if (r.sha256.empty()) throw std::logic_error("study fingerprint: records not read");
         t += "record " + r.sha256 + " " + formatDouble(r.scale) + "\n";
