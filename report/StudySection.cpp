@@ -259,13 +259,21 @@ void addStudySection(ReportDocument& doc, const Project& p, const ReportAnalysis
     const BootstrapSettings boot; // the defaults of `kinstab-cli fragility`
     const std::vector<Fragility> sets = studyFragility(rows, boot);
     const QString measure = measureLabel(spec.intensity);
-    doc.addSection(QStringLiteral("Study: collapse fragility over a record suite"));
+    // A block study (docs/studies.md, "A block instead of the slab") asks for overturning.
+    const QString model =
+        spec.block
+            ? QStringLiteral("the block (%1) overturns; a record that does not overturn it")
+                  .arg(qs(studyBlockText(*spec.block)))
+            : QStringLiteral("the slab slides off; a record that does not collapse the slab");
+    doc.addSection(
+        spec.block ? QStringLiteral("Study: overturning fragility of a block over a record suite")
+                   : QStringLiteral("Study: collapse fragility over a record suite"));
     doc.addParagraph(
         QStringLiteral(
             "The study %1 (file %2) runs each of its %3 records for each of its %4 parameter "
-            "sets and finds the smallest intensity (%5) of the scaled record at which the slab "
-            "slides off; a record that does not collapse the slab up to the search limit counts "
-            "as censored there. %6 Per parameter set the critical intensities are fitted by a "
+            "sets and finds the smallest intensity (%5) of the scaled record at which %10 up to "
+            "the search limit counts as censored there. %6 Per parameter set the critical "
+            "intensities are fitted by a "
             "lognormal fragility (median and dispersion β by maximum likelihood), with %7 % "
             "bounds from %8 bootstrap resamples over the records (seed %9).")
             .arg(qs(spec.name), QFileInfo(qs(p.study->spec)).fileName())
@@ -277,7 +285,8 @@ void addStudySection(ReportDocument& doc, const Project& p, const ReportAnalysis
                                     .arg(QFileInfo(qs(p.study->results)).fileName()))
             .arg(num(100 * boot.level, 0))
             .arg(boot.resamples)
-            .arg(boot.seed));
+            .arg(boot.seed)
+            .arg(model));
     doc.addHeading(QStringLiteral("Records"), 2);
     recordTable(doc, rows);
     doc.addHeading(QStringLiteral("Fragility per parameter set"), 2);
