@@ -57,9 +57,15 @@ public:
                 return true;
             }
         }
-        // Charts get their 1-2-5 ticks when first shown (their axes exist by then).
+        // Charts get their 1-2-5 ticks when first shown (their axes exist by then). When ticks
+        // or labels move, QtCharts repaints only the new label items: under a window manager the
+        // old labels stayed on screen beside the new ones (ghost ticks and titles). A chart is
+        // small, so the whole viewport is repainted on every change.
         if (e->type() == QEvent::Show)
-            if (auto* view = qobject_cast<QChartView*>(watched)) useNiceTicks(view->chart());
+            if (auto* view = qobject_cast<QChartView*>(watched)) {
+                view->setViewportUpdateMode(QGraphicsView::FullViewportUpdate);
+                useNiceTicks(view->chart());
+            }
         return false;
     }
 };

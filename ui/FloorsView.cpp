@@ -137,6 +137,10 @@ QString FloorsView::message() const {
 void FloorsView::showEvent(QShowEvent* e) {
     QWidget::showEvent(e);
     applyProject(m_source());
+    // Nothing run yet: say what the empty charts will hold.
+    if (m_status->text().isEmpty())
+        m_status->setText(tr("Run computes the building's modes, the floor motion of every level "
+                             "and the critical ground PGA of the slab's level; they show here."));
 }
 
 // The project's record and floors settings fill the fields once each time they change, so a

@@ -24,6 +24,7 @@
 #include <QValueAxis>
 
 #include <algorithm>
+#include <cmath>
 
 namespace kinstab::ui {
 namespace {
@@ -42,6 +43,25 @@ ShownUnits shownUnits(UnitSystem s) {
     // psi = lbf/in²: 4.4482216152605e-3 kN over 0.0254² m² = 6.894757 kPa.
     const double kN = 4.4482216152605, kPa = kN * 1e-3 / (0.0254 * 0.0254);
     return {kN, kPa, 25.4, 6.4516, "kN", "kPa", "mm", "cm²"};
+}
+
+// The decay law's c has the unit 1 / (length · (force · length)^β): xi is δ weighted by the
+// work W^β (Eq. 2). b is a pure number.
+double shownDecayRate(double cPerInch, double beta, const ShownUnits& u) {
+    return cPerInch / (u.length * std::pow(u.force * u.length, beta));
+}
+
+QStringList tableHeader(const ShownUnits& u) {
+    return {QObject::tr("Configuration"),
+            QObject::tr("CP %1").arg(u.p),
+            QObject::tr("Tests"),
+            QObject::tr("V1 %1").arg(u.f),
+            QObject::tr("V∞ %1").arg(u.f),
+            QObject::tr("c 1/%1·(%2·%1)^β").arg(u.l, u.f),
+            QObject::tr("b"),
+            QObject::tr("β"),
+            QObject::tr("f_m %1²").arg(u.f),
+            QObject::tr("Outlier (Grubbs 95 %)")};
 }
 
 QColor cpColor(int i) {
@@ -133,9 +153,7 @@ void FrictionPanel::buildUi() {
     curves_ = makeChartView(tr("Shear force after fracture"));
     coulomb_ = makeChartView(tr("Asymptotic friction law"));
     table_ = new QTableWidget(0, 10);
-    table_->setHorizontalHeaderLabels({tr("Configuration"), tr("CP psi"), tr("Tests"), tr("V1 kip"),
-                                       tr("V∞ kip"), tr("c"), tr("b"), tr("β"), tr("f_m kip²"),
-                                       tr("Outlier (Grubbs 95 %)")});
+    table_->setHorizontalHeaderLabels(tableHeader(shownUnits(units_)));
     table_->setObjectName("fits");
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->verticalHeader()->hide();
@@ -223,10 +241,7 @@ void FrictionPanel::setUnitSystem(UnitSystem s) {
     if (s == units_) return;
     units_ = s;
     const ShownUnits u = shownUnits(s);
-    table_->setHorizontalHeaderLabels({tr("Configuration"), tr("CP %1").arg(u.p), tr("Tests"),
-                                       tr("V1 %1").arg(u.f), tr("V∞ %1").arg(u.f), tr("c"), tr("b"),
-                                       tr("β"), tr("f_m %1²").arg(u.f),
-                                       tr("Outlier (Grubbs 95 %)")});
+    table_->setHorizontalHeaderLabels(tableHeader(u));
     {
         QSignalBlocker block(area_);
         area_->setSuffix(QStringLiteral(" ") + u.a);
@@ -392,7 +407,7 @@ void FrictionPanel::fillTable() {
                                    QString::fromStdString(g.composite.test),
                                    QString::number(g.fit.v1 * u.force, 'f', 2),
                                    QString::number(g.fit.vInf * u.force, 'f', 2),
-                                   QString::number(g.fit.c, 'f', 2),
+                                   QString::number(shownDecayRate(g.fit.c, g.fit.beta, u), 'g', 3),
                                    QString::number(g.fit.b, 'f', 3),
                                    g.fit.beta == 0.0 ? "0" : "1/3",
                                    QString::number(g.fit.fm * u.force * u.force, 'f', 3),

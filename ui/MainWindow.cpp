@@ -36,6 +36,7 @@
 #include "ui/SliceChart.h"
 #include "ui/StaleFrame.h"
 #include "ui/SurfaceView.h"
+#include "ui/TabDocks.h"
 #include "ui/Units.h"
 #include "ui/VerdictPanel.h"
 #include "ui/teaching/PresentationMode.h"
@@ -51,6 +52,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPainter>
+#include <QRegularExpression>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStackedWidget>
@@ -136,6 +138,10 @@ MainWindow::MainWindow(QWidget* parent)
     buildDocks();
     installPresentationMode(this, m_viewMenu, m_centre, m_teaching);
     installUnitsMenu(m_viewMenu, this, [this](UnitSystem s) { setUnits(s); });
+    // A switch of units is an input step (after the switch, connected later): the project file
+    // keeps its units, so undo restores them.
+    for (QAction* a : m_viewMenu->findChildren<QAction*>(QRegularExpression("^units(SI|US)$")))
+        connect(a, &QAction::triggered, m_undo, &InputHistory::recordChange);
     m_status->setTextFormat(Qt::PlainText);
     statusBar()->addWidget(m_status, 1);
     statusBar()->addPermanentWidget(m_progress);
@@ -164,9 +170,16 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_surface, &SurfaceView::pointSelected, this, &MainWindow::pickPoint);
     // "Use this mu" from the friction calibration goes to the slab's friction field.
     connect(m_friction, &FrictionPanel::useMu, m_slabPanel, &SlabPanel::useMu);
-    // 1280 × 800, or less on a smaller screen; the frame is added at the first show.
+    // 1280 × 800, or less on a smaller screen (more once the docks are laid out, in
+    // restoreSettings); the frame is fitted at the first show.
     resize(sizeInside({1280, 800}, screen()->availableGeometry(), {}));
     arrangeDocks();
+    m_tabDocks = new TabDocks(
+        m_centre, m_chartDocks,
+        [this](int i) {
+            return m_centre->widget(i) == m_surface || m_centre->widget(i)->isAncestorOf(m_records);
+        },
+        this);
     restoreSettings();
     m_records->preview()->setPlanarBase(m_modelPanel->isPlanar());
     updateRunState();

@@ -29,6 +29,7 @@ class QTabWidget;
 namespace kinstab::ui {
 
 class BuildingPanel;
+class TabDocks;
 class CodesPanel;
 class CriticalChart;
 class RecentFiles;
@@ -176,7 +177,8 @@ private:
     QString modelTitle() const;
     void saveSettings(bool keepEdits = false);
     void restoreSettings();
-    void setUnits(UnitSystem s); // the views that draw lengths (the fields follow by themselves)
+    void setUnits(UnitSystem s);  // the views that draw lengths (the fields follow by themselves)
+    void showUnits(UnitSystem s); // the menu's mark, the fields and the views (open, undo)
     // A record as the excitation (MainWindowRecord.cpp).
     void buildRecordRun();
     void runRecord();
@@ -215,6 +217,7 @@ private:
     QDockWidget* m_verdictDock = nullptr;
     std::vector<QDockWidget*> m_chartDocks; // along the bottom
     InputHistory* m_undo = nullptr;
+    TabDocks* m_tabDocks = nullptr;
 
     Project m_project; // the open project: inputs no panel shows are kept from it
     QString m_path;

@@ -24,6 +24,7 @@ void MainWindow::buildEditMenu() {
             const Project p = parseProject(s);
             // Undo of "Use in project": the project's study goes; the tab keeps what it shows.
             m_project.study = p.study;
+            if (projectUnits(p) != m_units) showUnits(projectUnits(p));
             showInputs(p);
         },
         this);

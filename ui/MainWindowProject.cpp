@@ -18,9 +18,11 @@
 #include "ui/ProjectFolder.h"
 #include "ui/RecentFiles.h"
 #include "ui/RecordsTab.h"
+#include "ui/ScreenFit.h"
 #include "ui/SlabPanel.h"
 #include "ui/StudyTab.h"
 #include "ui/SurfaceView.h"
+#include "ui/TabDocks.h"
 #include "ui/VerdictPanel.h"
 #include "ui/teaching/TeachingView.h"
 
@@ -69,15 +71,18 @@ void MainWindow::setUnits(UnitSystem s) {
     m_slabPanel->updateDerived();
 }
 
+void MainWindow::showUnits(UnitSystem s) {
+    showUnitSystem(this, s);
+    applyUnitSystem(this, s);
+    setUnits(s);
+}
+
 void MainWindow::showProject(const Project& p) {
     clearResults(); // no result of the previous project may stand under this one's title
     m_project = p;
     showStudy(p.study); // none: the Study tab is cleared, as the other results are
     // The project opens in its own units (the paper's in ft and in), as its report prints them.
-    const UnitSystem units = projectUnits(p);
-    showUnitSystem(this, units);
-    applyUnitSystem(this, units);
-    setUnits(units);
+    showUnits(projectUnits(p));
     showInputs(p);
     m_records->showProject(p); // the project's record, or an empty state
     m_undo->reset();           // a fresh start: nothing to undo, nothing unsaved
@@ -235,6 +240,7 @@ bool MainWindow::saveAsDialog() {
 void MainWindow::saveSettings(bool keepEdits) {
     QSettings s;
     s.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    m_tabDocks->giveBack(); // the charts are saved shown: a start opens on the surface
     s.setValue(QStringLiteral("window/state"), saveState());
     s.setValue(savedPathKey, m_path);
     s.remove(QStringLiteral("project/lastInputs")); // older versions kept every edit silently
@@ -246,7 +252,10 @@ void MainWindow::saveSettings(bool keepEdits) {
 
 void MainWindow::restoreSettings() {
     QSettings s;
-    restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray());
+    // A first start on a large screen: the docks were laid out at 1280 × 800 and now grow with
+    // the window (laid out large and shrunk, their tabs would be cut).
+    if (!restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray()))
+        resize(openingSize(screen()->availableGeometry()));
     restoreState(s.value(QStringLiteral("window/state")).toByteArray());
     // The last saved file; on the first start (or when it is gone), the paper's example.
     const QString path = s.value(savedPathKey).toString();

@@ -16,6 +16,13 @@ QSize sizeInside(QSize wanted, const QRect& available, const QMargins& frame, QS
             std::max(std::min(wanted.height(), h), minimum.height())};
 }
 
+QSize openingSize(const QRect& available) {
+    constexpr double kShare = 0.85;
+    const QSize share(static_cast<int>(available.width() * kShare),
+                      static_cast<int>(available.height() * kShare));
+    return sizeInside(share.expandedTo({1280, 800}), available, {});
+}
+
 void fitToScreen(QWidget* window, QSize wanted) {
     if (!window || window->isMaximized() || window->isFullScreen()) return;
     const QScreen* screen = window->screen();

@@ -7,8 +7,11 @@
 
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <cmath>
 
 using namespace kinstab;
 using kinstab::ui::FrictionPanel;
@@ -19,6 +22,7 @@ private slots:
     void startsWithTable1();
     void useMuNeedsBearingArea();
     void badCsvIsShown();
+    void decayRateFollowsTheUnits();
     void screenshot();
 };
 
@@ -51,6 +55,25 @@ void TestFrictionPanel::useMuNeedsBearingArea() {
     panel.setWithIntercept(false);
     QCOMPARE_LE(std::abs(*panel.currentMu() - 1000.0 * ng->coulomb->slopeThroughOrigin / 65.7),
                 1e-12);
+}
+
+// The decay law's c is per inch · (kip · in)^β in the paper's units; in SI per mm · (kN · mm)^β
+// (1 in = 25.4 mm, 1 kip = 4.4482216152605 kN, NIST SP 811), worked here from the fit's c.
+void TestFrictionPanel::decayRateFollowsTheUnits() {
+    FrictionPanel panel;
+    auto* table = panel.findChild<QTableWidget*>("fits");
+    QVERIFY(table);
+    QVERIFY(table->horizontalHeaderItem(5)->text().contains("1/in·(kip·in)^β"));
+    panel.setUnitSystem(kinstab::ui::UnitSystem::SI);
+    QVERIFY(table->horizontalHeaderItem(5)->text().contains("1/mm·(kN·mm)^β"));
+    QCOMPARE(table->rowCount(), 14);
+    for (int row = 0; row < table->rowCount(); ++row) {
+        const DecayFit& fit = panel.calibration().groups[static_cast<std::size_t>(row)].fit;
+        const double perMm = fit.c / (25.4 * std::pow(4.4482216152605 * 25.4, fit.beta));
+        const double shown = table->item(row, 5)->text().toDouble();
+        QCOMPARE_LE(std::abs(shown - perMm), 0.005 * std::abs(perMm));         // shown to 3 digits
+        QCOMPARE(table->item(row, 6)->text(), QString::number(fit.b, 'f', 3)); // b has no unit
+    }
 }
 
 void TestFrictionPanel::badCsvIsShown() {

@@ -11,6 +11,7 @@
 #include "ui/NumberField.h"
 #include "ui/SlabPanel.h"
 
+#include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QLineEdit>
@@ -119,6 +120,33 @@ private slots:
         stack->redo();
         QCOMPARE(inputs(w), s2);
         QCOMPARE(stack->count(), 4); // undo/redo do not record steps of their own
+    }
+
+    // View → Units is kept in the project file, so a switch is a step that undo takes back: the
+    // fields, the menu's mark and the file's units all return.
+    void unitsSwitchIsAStep() {
+        MainWindow w;
+        showActive(w);
+        QUndoStack* stack = w.inputHistory()->stack();
+        QCOMPARE(stack->count(), 0);
+        auto* si = w.findChild<QAction*>(QStringLiteral("unitsSI"));
+        auto* us = w.findChild<QAction*>(QStringLiteral("unitsUS"));
+        QVERIFY(si && us);
+        if (si->isChecked()) us->trigger(); // start from US; a first step when it was SI
+        const int start = stack->count();
+        const std::string before = inputs(w);
+        QCOMPARE(projectUnits(w.project()), UnitSystem::US);
+        si->trigger();
+        QCOMPARE(stack->count(), start + 1);
+        QCOMPARE(projectUnits(w.project()), UnitSystem::SI);
+        QVERIFY(w.isWindowModified() || start > 0);
+        stack->undo();
+        QCOMPARE(inputs(w), before);
+        QVERIFY(us->isChecked());
+        QVERIFY(!si->isChecked());
+        stack->redo();
+        QCOMPARE(projectUnits(w.project()), UnitSystem::SI);
+        QVERIFY(si->isChecked());
     }
 
     void savingClearsTheMarkAndOpeningClearsTheHistory() {

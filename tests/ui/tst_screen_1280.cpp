@@ -11,6 +11,7 @@
 #include "ui/ExampleProjects.h"
 #include "ui/MainWindow.h"
 #include "ui/NumericsView.h"
+#include "ui/ScreenFit.h"
 #include "ui/StudyTab.h"
 #include "ui/teaching/PresentationMode.h"
 #include "ui/teaching/TeachingView.h"
@@ -117,6 +118,23 @@ private slots:
         for (QWidget* child : w->statusBar()->findChildren<QWidget*>(Qt::FindDirectChildrenOnly))
             if (child->isVisible())
                 QCOMPARE(shownRect(child).size(), child->size()); // progress, time left, text
+    }
+
+    // The first size on screens of other sizes (the expected values are 85 % of the available
+    // geometry, worked by hand: 0.85 × 1920 = 1632, 0.85 × 1080 = 918, 0.85 × 1040 = 884).
+    void openingSizeFollowsTheScreen_data() {
+        QTest::addColumn<QRect>("available");
+        QTest::addColumn<QSize>("expected");
+        QTest::addRow("laptop 1280x800") << QRect(0, 0, 1280, 800) << QSize(1280, 800);
+        QTest::addRow("small 1024x600") << QRect(0, 0, 1024, 600) << QSize(1024, 600);
+        QTest::addRow("1366x768") << QRect(0, 0, 1366, 768) << QSize(1280, 768);
+        QTest::addRow("1920x1080") << QRect(0, 0, 1920, 1080) << QSize(1632, 918);
+        QTest::addRow("1920x1080 less a panel") << QRect(0, 40, 1920, 1040) << QSize(1632, 884);
+    }
+    void openingSizeFollowsTheScreen() {
+        QFETCH(QRect, available);
+        QFETCH(QSize, expected);
+        QCOMPARE(openingSize(available), expected);
     }
 
     void teachingTransportAndValuesWhole() {

@@ -7,9 +7,11 @@
 
 #include <QDockWidget>
 #include <QHeaderView>
+#include <QScreen>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTabBar>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QtTest>
 
@@ -50,6 +52,18 @@ private slots:
         QSettings().clear(); // a first start
     }
 
+    // A first start on the suite's 1920 × 1080 screen opens at 85 % of it, not at 1280 × 800,
+    // and the docks laid out for 1280 × 800 grow with it: no tab title is cut.
+    void opensLargerOnALargeScreen() {
+        MainWindow w;
+        QCOMPARE(w.screen()->availableGeometry().size(), QSize(1920, 1080));
+        QCOMPARE(w.size(), QSize(1632, 918)); // 0.85 × 1920, 0.85 × 1080
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTest::qWait(50);
+        QVERIFY2(cutTabs(w).isEmpty(), qPrintable(cutTabs(w).join(", ")));
+    }
+
     void fitsAt1280x800() {
         MainWindow w;
         w.resize(1280, 800);
@@ -70,6 +84,39 @@ private slots:
         QCOMPARE_LE(table->horizontalHeader()->sectionViewportPosition(last) +
                         table->horizontalHeader()->sectionSize(last),
                     table->viewport()->width());
+    }
+
+    // The result charts belong to the surface and the Records tab (a record run's history):
+    // other tabs get their room, and the charts come back as the user left them.
+    void chartDocksGiveTheirRoomToOtherTabs() {
+        MainWindow w;
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* tabs = w.findChild<QTabWidget*>();
+        const auto show = [&](const QString& title) {
+            for (int i = 0; i < tabs->count(); ++i)
+                if (tabs->tabText(i) == title) tabs->setCurrentIndex(i);
+            QTest::qWait(20);
+        };
+        QDockWidget* slice = dock(w, "γc, τc against A");
+        QDockWidget* history = dock(w, "History");
+        QDockWidget* critical = dock(w, "A_crit(f)");
+        const QRect centreBefore = tabs->geometry();
+        for (const QString t : {"Teaching", "Numerics", "Friction", "Floors", "Study"}) {
+            show(t);
+            QVERIFY2(!slice->isVisible() && !history->isVisible() && !critical->isVisible(),
+                     qPrintable(t));
+            QCOMPARE_GT(tabs->height(), centreBefore.height()); // the tab got the room
+        }
+        show("Records");
+        QVERIFY(history->isVisible());
+        show("γc surface");
+        QVERIFY(slice->isVisible() && history->isVisible() && critical->isVisible());
+        critical->close(); // the user's choice stays
+        show("Study");
+        show("γc surface");
+        QVERIFY(slice->isVisible() && !critical->isVisible());
     }
 
     void resetLayoutBringsDocksBack() {

@@ -7,6 +7,7 @@
 #include "ui/teaching/StateStyle.h"
 #include "ui/teaching/TracePainter.h"
 
+#include <QFontMetricsF>
 #include <QMouseEvent>
 #include <QPainter>
 
@@ -101,8 +102,19 @@ void SurfaceMarker::onFinished(const MarkerMap& m) {
     emit mapReady();
 }
 
+namespace {
+
+// One line of the map's label text, from the view's font (larger in presentation mode).
+double labelLine(const QFont& viewFont) {
+    return std::ceil(scaledPixels(viewFont, 11, kLabelMaxScale) * 1.45);
+}
+
+} // namespace
+
 QRectF SurfaceMarker::plotRect() const {
-    return QRectF(rect()).adjusted(44, 22, -10, -30);
+    // Left: tick labels and the rotated axis title; top: the heading; bottom: ticks and titles.
+    const double lh = labelLine(font());
+    return QRectF(rect()).adjusted(3.6 * lh, 1.4 * lh, -10, -2 * lh - 2);
 }
 
 namespace {
@@ -111,6 +123,7 @@ namespace {
 struct Plot {
     QRectF r;
     double xLo, xHi, yLo, yHi;
+    double lh; // one line of label text
     double x(double v) const { return r.left() + r.width() * (v - xLo) / (xHi - xLo); }
     double y(double v) const { return r.bottom() - r.height() * (v - yLo) / (yHi - yLo); }
 };
@@ -130,8 +143,13 @@ void paintSurfaceCells(QPainter& p, const Plot& pl, const MarkerMap& map) {
         }
     p.restore();
     p.setPen(QColor(0x55, 0x55, 0x55));
-    p.drawText(QRectF(pl.r.left(), pl.r.bottom() + 14, pl.r.width(), 14), Qt::AlignRight,
-               QStringLiteral("pale: stable; darkest: γc = %1").arg(gMax, 0, 'f', 2));
+    // Beside the axis title on the second line under the plot; shortened rather than overlap.
+    const QString title = QStringLiteral("f [Hz]");
+    const QFontMetricsF fm(p.font());
+    const double room = pl.r.width() - fm.horizontalAdvance(title) - pl.lh;
+    p.drawText(QRectF(pl.r.left(), pl.r.bottom() + pl.lh, pl.r.width(), pl.lh), Qt::AlignRight,
+               fm.elidedText(QStringLiteral("pale: stable; darkest: γc = %1").arg(gMax, 0, 'f', 2),
+                             Qt::ElideRight, room));
 }
 
 // Fig. 34: tau_c against A; a stable amplitude is a dot along the top.
@@ -143,7 +161,7 @@ void paintSlice(QPainter& p, const Plot& pl, const MarkerMap& map) {
         const auto& pt = map.sweep.points[i];
         const double x = pl.x(map.sweep.grid.amplitudes[i]);
         if (pt.outcome != Outcome::Collapsed) {
-            p.drawText(QRectF(x - 4, pl.r.top(), 8, 12), Qt::AlignCenter, QStringLiteral("·"));
+            p.drawText(QRectF(x - 4, pl.r.top(), 8, pl.lh), Qt::AlignCenter, QStringLiteral("·"));
             have = false;
             continue;
         }
@@ -154,8 +172,8 @@ void paintSlice(QPainter& p, const Plot& pl, const MarkerMap& map) {
         have = true;
     }
     p.setPen(QColor(0x55, 0x55, 0x55));
-    p.drawText(QRectF(pl.r.left() + 4, pl.r.top() + 12, pl.r.width(), 14), Qt::AlignLeft,
-               QStringLiteral("τc (stable: dots on top)"));
+    p.drawText(QRectF(pl.r.left() + 4, pl.r.top() + pl.lh * 0.8, pl.r.width(), pl.lh),
+               Qt::AlignLeft, QStringLiteral("τc (stable: dots on top)"));
 }
 
 void paintAxes(QPainter& p, const Plot& pl, bool surface) {
@@ -164,17 +182,17 @@ void paintAxes(QPainter& p, const Plot& pl, bool surface) {
     p.drawRect(pl.r);
     const double xs = niceTickStep(pl.xHi - pl.xLo, 4), ys = niceTickStep(pl.yHi - pl.yLo, 4);
     for (double v = std::ceil(pl.xLo / xs) * xs; v <= pl.xHi + 1e-9; v += xs)
-        p.drawText(QRectF(pl.x(v) - 20, pl.r.bottom() + 1, 40, 14), Qt::AlignCenter,
-                   QString::number(v, 'g', 3));
+        p.drawText(QRectF(pl.x(v) - 1.5 * pl.lh, pl.r.bottom() + 1, 3 * pl.lh, pl.lh),
+                   Qt::AlignCenter, QString::number(v, 'g', 3));
     for (double v = std::ceil(pl.yLo / ys) * ys; v <= pl.yHi + 1e-9; v += ys)
-        p.drawText(QRectF(0, pl.y(v) - 7, pl.r.left() - 4, 14), Qt::AlignRight | Qt::AlignVCenter,
-                   QString::number(v, 'g', 3));
-    p.drawText(QRectF(pl.r.left(), pl.r.bottom() + 14, pl.r.width(), 14), Qt::AlignLeft,
+        p.drawText(QRectF(0, pl.y(v) - pl.lh / 2, pl.r.left() - 4, pl.lh),
+                   Qt::AlignRight | Qt::AlignVCenter, QString::number(v, 'g', 3));
+    p.drawText(QRectF(pl.r.left(), pl.r.bottom() + pl.lh, pl.r.width(), pl.lh), Qt::AlignLeft,
                surface ? QStringLiteral("f [Hz]") : QStringLiteral("A [g]"));
     p.save();
-    p.translate(10, pl.r.center().y());
+    p.translate(pl.lh * 0.6, pl.r.center().y());
     p.rotate(-90);
-    p.drawText(QRectF(-40, -8, 80, 14), Qt::AlignCenter,
+    p.drawText(QRectF(-pl.r.height() / 2, -pl.lh / 2, pl.r.height(), pl.lh), Qt::AlignCenter,
                surface ? QStringLiteral("A [g]") : QStringLiteral("τc"));
     p.restore();
 }
@@ -209,7 +227,8 @@ void SurfaceMarker::paintEvent(QPaintEvent*) {
     const QString ref = current_.params.scale == TauScale::TauRise ? QStringLiteral("τ_rise")
                                                                    : QStringLiteral("τ_max");
     p.setPen(QColor(0x22, 0x22, 0x22));
-    p.drawText(QRectF(4, 2, width() - 8, 18), Qt::AlignLeft | Qt::AlignVCenter,
+    const double lh = labelLine(this->font());
+    p.drawText(QRectF(4, 2, width() - 8, lh), Qt::AlignLeft | Qt::AlignVCenter,
                surface ? QStringLiteral("Where am I?  γc = %1/τc over A and f").arg(ref)
                        : QStringLiteral("τc against A at f = %1 Hz")
                              .arg(current_.params.frequencyHz, 0, 'g', 4));
@@ -219,8 +238,8 @@ void SurfaceMarker::paintEvent(QPaintEvent*) {
     if (ready && !surface)
         for (const auto& pt : map_.sweep.points)
             if (pt.outcome == Outcome::Collapsed) tMax = std::max(tMax, 1.1 * pt.tauC);
-    const Plot pl = surface ? Plot{plotRect(), R.fMin, R.fMax, R.aMin, R.aMax}
-                            : Plot{plotRect(), R.aMin, R.aMax, 0.0, tMax};
+    const Plot pl = surface ? Plot{plotRect(), R.fMin, R.fMax, R.aMin, R.aMax, lh}
+                            : Plot{plotRect(), R.aMin, R.aMax, 0.0, tMax, lh};
     if (ready && surface)
         paintSurfaceCells(p, pl, map_);
     else if (ready)

@@ -46,6 +46,8 @@ public:
     bool hasMap() const { return hasMap_; }
     QSize sizeHint() const override { return {320, 250}; }
     QSize minimumSizeHint() const override { return {220, 180}; }
+    // The map's cells inside the widget; the margins around it follow the font's size.
+    QRectF plotRect() const;
 
 signals:
     void pointPicked(double amplitude, double frequencyHz);
@@ -58,7 +60,6 @@ protected:
 private:
     void start();
     void onFinished(const MarkerMap& m);
-    QRectF plotRect() const;
 
     SweepKey current_; // what is shown and marked
     SweepKey running_; // what the worker computes

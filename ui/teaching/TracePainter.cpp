@@ -23,10 +23,24 @@ const QColor kAxis(0x44, 0x44, 0x44);
 struct Axis {
     QRectF r;
     double t1, yLo, yHi;
+    double lh; // one line of label text, from the label font (larger in presentation mode)
     double x(double t) const { return r.left() + r.width() * t / t1; }
     double y(double v) const { return r.bottom() - r.height() * (v - yLo) / (yHi - yLo); }
     QPointF at(double t, double v) const { return {x(t), y(v)}; }
 };
+
+// Room for a tick label such as "-0.75" beside the axis.
+double tickLabelWidth(double lh) {
+    return 3.0 * lh;
+}
+
+// A line of text inside the plot, just above the level v (right-aligned) or at its top (left).
+QRectF insideAbove(const Axis& a, double v) {
+    return {a.r.left() + 6, a.y(v) - a.lh - 1, a.r.width() - 12, a.lh};
+}
+QRectF insideTop(const Axis& a) {
+    return {a.r.left() + 6, a.r.top() + 2, a.r.width() - 12, a.lh};
+}
 
 void paintFrame(QPainter& p, const Axis& a, const QString& label, double yStep, bool timeLabels) {
     p.setPen(QPen(QColor(0xe4, 0xe4, 0xe4), 1));
@@ -37,7 +51,9 @@ void paintFrame(QPainter& p, const Axis& a, const QString& label, double yStep, 
         p.setPen(QPen(QColor(0xe4, 0xe4, 0xe4), 1));
         p.drawLine(a.at(0, v), a.at(a.t1, v));
         p.setPen(kAxis);
-        p.drawText(QRectF(a.r.left() - 48, a.y(v) - 8, 44, 16), Qt::AlignRight | Qt::AlignVCenter,
+        const double w = tickLabelWidth(a.lh);
+        p.drawText(QRectF(a.r.left() - w - 4, a.y(v) - a.lh / 2, w, a.lh),
+                   Qt::AlignRight | Qt::AlignVCenter,
                    QString::number(std::abs(v) < 1e-12 ? 0.0 : v, 'g', 3));
     }
     p.setPen(QPen(kAxis, 1));
@@ -45,12 +61,12 @@ void paintFrame(QPainter& p, const Axis& a, const QString& label, double yStep, 
     p.drawLine(a.at(0, 0), a.at(a.t1, 0));
     if (timeLabels)
         for (double t = 0; t <= a.t1 * (1 + 1e-9); t += tStep)
-            p.drawText(QRectF(a.x(t) - 30, a.r.bottom() + 2, 60, 16), Qt::AlignCenter,
+            p.drawText(QRectF(a.x(t) - 2 * a.lh, a.r.bottom() + 2, 4 * a.lh, a.lh), Qt::AlignCenter,
                        QString::number(t, 'g', 4));
     p.save();
-    p.translate(a.r.left() - 52, a.r.center().y());
+    p.translate(a.r.left() - tickLabelWidth(a.lh) - 6, a.r.center().y());
     p.rotate(-90);
-    p.drawText(QRectF(-a.r.height() / 2, -14, a.r.height(), 16), Qt::AlignCenter, label);
+    p.drawText(QRectF(-a.r.height() / 2, -a.lh, a.r.height(), a.lh), Qt::AlignCenter, label);
     p.restore();
 }
 
@@ -89,7 +105,7 @@ void paintAccel(QPainter& p, const Axis& a, const TeachingRun& run, double curso
     p.setPen(QPen(QColor(0x4a, 0x6f, 0xa5), 1, Qt::DashLine));
     p.drawLine(a.at(0, mu), a.at(a.t1, mu));
     p.drawLine(a.at(0, -mu), a.at(a.t1, -mu));
-    p.drawText(QRectF(a.r.right() - 160, a.y(mu) - 17, 154, 16), Qt::AlignRight | Qt::AlignVCenter,
+    p.drawText(insideAbove(a, mu), Qt::AlignRight | Qt::AlignVCenter,
                QStringLiteral("±μ = ±%1: sticks inside").arg(mu, 0, 'f', 2));
     const auto& s = run.trace();
     QPainterPath env, envLow;
@@ -108,7 +124,7 @@ void paintAccel(QPainter& p, const Axis& a, const TeachingRun& run, double curso
             i == 0 ? h.moveTo(a.at(s[i].tau, s[i].accelH)) : h.lineTo(a.at(s[i].tau, s[i].accelH));
         p.setPen(QPen(QColor(0x2e, 0x8b, 0x57), 1, Qt::DotLine));
         p.drawPath(h);
-        p.drawText(QRectF(a.r.left() + 6, a.r.top() + 2, 300, 16), Qt::AlignLeft | Qt::AlignVCenter,
+        p.drawText(insideTop(a), Qt::AlignLeft | Qt::AlignVCenter,
                    QStringLiteral("a_x solid; |a_h| dotted: slips when above μ"));
     }
     paintSeries(
@@ -121,7 +137,7 @@ void paintDelta(QPainter& p, const Axis& a, const TeachingRun& run, double curso
     p.setPen(QPen(stateColor(DisplayState::Collapse), 1.2, Qt::DashLine));
     p.drawLine(a.at(0, L), a.at(a.t1, L));
     p.drawLine(a.at(0, -L), a.at(a.t1, -L));
-    p.drawText(QRectF(a.r.right() - 200, a.y(L) - 17, 194, 16), Qt::AlignRight | Qt::AlignVCenter,
+    p.drawText(insideAbove(a, L), Qt::AlignRight | Qt::AlignVCenter,
                QStringLiteral("bearing limit |δ| = %1: falls beyond").arg(L, 0, 'g', 3));
     if (run.planar()) { // along the walls, scaled so that its limit theta is at the same line
         const double k = L / run.params().theta;
@@ -132,7 +148,7 @@ void paintDelta(QPainter& p, const Axis& a, const TeachingRun& run, double curso
             i == 0 ? y.moveTo(a.at(s[i].tau, k * s[i].deltaY))
                    : y.lineTo(a.at(s[i].tau, k * s[i].deltaY));
         p.drawPath(y);
-        p.drawText(QRectF(a.r.left() + 6, a.r.top() + 2, 360, 16), Qt::AlignLeft | Qt::AlignVCenter,
+        p.drawText(insideTop(a), Qt::AlignLeft | Qt::AlignVCenter,
                    QStringLiteral("δx solid; δy·%1/Θ dashed (Θ = %2)")
                        .arg(L, 0, 'g', 3)
                        .arg(run.params().theta, 0, 'g', 3));
@@ -151,21 +167,32 @@ void paintEventTicks(QPainter& p, const Axis& a, const TeachingRun& run) {
     }
 }
 
+double lineHeight(double labelPixels) {
+    return std::ceil(labelPixels * 1.45);
+}
+
 } // namespace
 
 double TraceLayout::tauAt(double x) const {
     return std::clamp((x - accelPlot.left()) / accelPlot.width() * tauEnd, 0.0, tauEnd);
 }
 
-TraceLayout traceLayout(const QRectF& area, const TeachingRun& run) {
-    const double left = area.left() + 62, right = area.right() - 12;
-    const double top = area.top() + 8, bottom = area.bottom() - 34;
-    const double gap = 22, h = (bottom - top - gap);
+TraceLayout traceLayout(const QRectF& area, const TeachingRun& run, double labelPixels) {
+    // Margins follow the label font, so that presentation mode's larger text keeps its room.
+    const double lh = lineHeight(labelPixels);
+    const double left = area.left() + tickLabelWidth(lh) + lh + 10, right = area.right() - 12;
+    const double top = area.top() + 8, bottom = area.bottom() - 2 * lh - 4;
+    const double gap = lh + 6, h = (bottom - top - gap);
     TraceLayout l;
     l.accelPlot = QRectF(left, top, right - left, h * 0.5);
     l.deltaPlot = QRectF(left, top + h * 0.5 + gap, right - left, h * 0.5);
     l.tauEnd = run.displayEnd();
+    l.lineHeight = lh;
     return l;
+}
+
+int traceLabelPixels(const QFont& viewFont) {
+    return scaledPixels(viewFont, 11, kLabelMaxScale);
 }
 
 void paintTraces(QPainter& p, const QRectF& area, const TeachingRun& run, double cursorTau) {
@@ -173,17 +200,17 @@ void paintTraces(QPainter& p, const QRectF& area, const TeachingRun& run, double
     p.setRenderHint(QPainter::Antialiasing);
     p.fillRect(area, Qt::white);
     QFont font = p.font();
-    font.setPixelSize(scaledPixels(p, 11, kLabelMaxScale)); // larger in presentation mode
+    font.setPixelSize(traceLabelPixels(p.font())); // larger in presentation mode
     p.setFont(font);
-    const TraceLayout l = traceLayout(area, run);
+    const TraceLayout l = traceLayout(area, run, font.pixelSize());
     const double peak =
         run.params().amplitude * (run.planar() ? std::hypot(1.0, run.params().ayRatio) : 1.0);
     const double aMax = std::max(peak, run.params().mu) * 1.15;
     double dMax = run.params().limit * 1.25;
     for (const auto& s : run.trace())
         dMax = std::max(dMax, std::abs(s.delta) * 1.1);
-    const Axis acc{l.accelPlot, l.tauEnd, -aMax, aMax};
-    const Axis del{l.deltaPlot, l.tauEnd, -dMax, dMax};
+    const Axis acc{l.accelPlot, l.tauEnd, -aMax, aMax, l.lineHeight};
+    const Axis del{l.deltaPlot, l.tauEnd, -dMax, dMax, l.lineHeight};
     paintFrame(p, acc, QStringLiteral("a(τ)  [g]"), niceTickStep(2 * aMax, 4), false);
     paintFrame(p, del, QStringLiteral("δ(τ)  [d/2]"), niceTickStep(2 * dMax, 4), true);
     p.setClipRect(l.accelPlot.united(l.deltaPlot).adjusted(-1, -1, 1, 1));
@@ -195,7 +222,8 @@ void paintTraces(QPainter& p, const QRectF& area, const TeachingRun& run, double
     const double cx = acc.x(std::clamp(cursorTau, 0.0, l.tauEnd));
     p.drawLine(QPointF(cx, l.accelPlot.top()), QPointF(cx, l.deltaPlot.bottom()));
     p.setPen(kAxis);
-    p.drawText(QRectF(l.deltaPlot.left(), l.deltaPlot.bottom() + 16, l.deltaPlot.width(), 16),
+    p.drawText(QRectF(l.deltaPlot.left(), l.deltaPlot.bottom() + l.lineHeight + 2,
+                      l.deltaPlot.width(), l.lineHeight),
                Qt::AlignCenter,
                QStringLiteral("τ = t / t*   (t* = %1 s)").arg(run.tstar(), 0, 'f', 4));
     p.restore();

@@ -8,6 +8,7 @@
 
 #include <QRectF>
 
+class QFont;
 class QPainter;
 
 namespace kinstab::ui {
@@ -16,10 +17,13 @@ struct TraceLayout {
     QRectF accelPlot; // plotting areas (inside the axes)
     QRectF deltaPlot;
     double tauEnd = 1;
+    double lineHeight = 16;       // of the label text, in pixels
     double tauAt(double x) const; // screen x -> tau
 };
 
-TraceLayout traceLayout(const QRectF& area, const TeachingRun& run);
+// labelPixels: the label font's pixel size, traceLabelPixels of the view's font.
+TraceLayout traceLayout(const QRectF& area, const TeachingRun& run, double labelPixels);
+int traceLabelPixels(const QFont& viewFont);
 void paintTraces(QPainter& p, const QRectF& area, const TeachingRun& run, double cursorTau);
 
 } // namespace kinstab::ui
