@@ -3,10 +3,10 @@
 #include "core/base/Stopwatch.h"
 #include "report/CodeStyle.h"
 
+#include "core/assessment/ProjectRequest.h"
 #include "core/assessment/RunAssessment.h"
 #include "core/codes/CodeSet.h"
 #include "core/sweep/ModelPoint.h"
-#include "report/PlanarVertical.h"
 
 #include <algorithm>
 #include <chrono>
@@ -150,22 +150,16 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
     const Slab1DCase& c = project.slab;
     const bool planar = project.model == ModelKind::Planar;
     // Every sweep, A_crit search and the check below run the project's model (docs/user-guide.md).
-    const std::optional<PlanarCase> planarCase =
-        planar ? std::optional(projectPlanarCase(c, project.planar)) : std::nullopt;
-    const ModelPoint model = modelPoint(c, planarCase);
-    if (planarCase) a.planarSolver = planarCase->solver;
+    AnalysisParts parts;
+    parts.surface = true;
+    parts.designCheck = true;
+    const AnalysisRequest request = analysisRequest(project, parts);
+    const ModelPoint model = modelPoint(c, request.planar);
+    if (request.planar) a.planarSolver = request.planar->solver;
     a.scanFrom = model.scanFrom;
     // Before the sweeps: a bad results or hazard file is an InputError naming it, at once.
     a.risk = projectRiskParts(project);
-    a.codes = runCodes(project.building, project.codes);
-    AnalysisRequest request;
-    request.slab = c;
-    request.planar = planarCase;
-    request.grid = project.grid;
-    request.codes = a.codes;
-    request.checkSearch = project.critical;
-    request.parts.surface = true;
-    request.parts.designCheck = true;
+    a.codes = request.codes;
     const AnalysisResult sine = runAnalysis(request, ctl);
     if (sine.checkError) std::rethrow_exception(sine.checkError);
     a.check = sine.check.value_or(DesignCheckResult{});

@@ -102,7 +102,39 @@ MainWindow::MainWindow(QWidget* parent)
     setWindowTitle(tr("kinstab — kinetic stability of friction-held slabs"));
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks |
                    QMainWindow::AllowNestedDocks);
-    // The γc surface and the teaching view share the centre as tabs.
+    buildCentre();
+    buildActions();
+    installHelpMenu(this);
+    installChartMenus(); // right-click Save image… / Copy image on every chart
+    buildDocks();
+    installPresentationMode(this, m_viewMenu, m_centre, m_teaching);
+    installUnitsMenu(m_viewMenu, this, [this](UnitSystem s) { setUnits(s); });
+    buildStatusBar();
+    connectInputs();
+    connectRuns();
+    // 1280 × 800, or less on a smaller screen (more once the docks are laid out, in
+    // restoreSettings); the frame is fitted at the first show.
+    resize(sizeInside({1280, 800}, screen()->availableGeometry(), {}));
+    arrangeDocks();
+    buildTabDocks();
+    restoreSettings();
+    m_records->preview()->setPlanarBase(m_modelPanel->isPlanar());
+    updateRunState();
+    updateTitle();
+}
+
+// The result chart docks give their room to the tabs that do not show them.
+void MainWindow::buildTabDocks() {
+    m_tabDocks = new TabDocks(
+        m_centre, m_chartDocks,
+        [this](int i) {
+            return m_centre->widget(i) == m_surface || m_centre->widget(i)->isAncestorOf(m_records);
+        },
+        this);
+}
+
+// The γc surface and the other tabs share the centre.
+void MainWindow::buildCentre() {
     m_centre = new QTabWidget;
     m_centre->setDocumentMode(true);
     m_centre->addTab(m_surface, tr("γc surface"));
@@ -132,28 +164,24 @@ MainWindow::MainWindow(QWidget* parent)
                                          5000);
             });
     setCentralWidget(m_centre);
-    buildActions();
-    installHelpMenu(this);
-    installChartMenus(); // right-click Save image… / Copy image on every chart
-    buildDocks();
-    installPresentationMode(this, m_viewMenu, m_centre, m_teaching);
-    installUnitsMenu(m_viewMenu, this, [this](UnitSystem s) { setUnits(s); });
-    // A switch of units is an input step (after the switch, connected later): the project file
-    // keeps its units, so undo restores them.
-    for (QAction* a : m_viewMenu->findChildren<QAction*>(QRegularExpression("^units(SI|US)$")))
-        connect(a, &QAction::triggered, m_undo, &InputHistory::recordChange);
+}
+
+void MainWindow::buildStatusBar() {
     m_status->setTextFormat(Qt::PlainText);
     statusBar()->addWidget(m_status, 1);
     statusBar()->addPermanentWidget(m_progress);
+}
 
-    for (InputPanel* p : std::initializer_list<InputPanel*>{
-             m_building, m_codesPanel, m_slabPanel, m_modelPanel, m_excitation, m_gridPanel})
+// Every input panel's change re-gates Run, re-judges the results and is an undo step.
+void MainWindow::connectInputs() {
+    const std::initializer_list<InputPanel*> all{m_building,   m_codesPanel, m_slabPanel,
+                                                 m_modelPanel, m_excitation, m_gridPanel};
+    for (InputPanel* p : all)
         connect(p, &InputPanel::changed, this, &MainWindow::updateRunState);
     for (InputPanel* p : std::initializer_list<InputPanel*>{m_building, m_codesPanel})
         connect(p, &InputPanel::changed, this, &MainWindow::updateCodes);
     // After updateCodes: results are judged against the code ratios of the new inputs.
-    for (InputPanel* p : std::initializer_list<InputPanel*>{
-             m_building, m_codesPanel, m_slabPanel, m_modelPanel, m_excitation, m_gridPanel}) {
+    for (InputPanel* p : all) {
         connect(p, &InputPanel::changed, this, &MainWindow::inputsChanged);
         connect(p, &InputPanel::changed, m_undo, &InputHistory::recordChange);
     }
@@ -163,27 +191,21 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_slabPanel, &InputPanel::changed, this, [this] {
         if (m_slabPanel->isValid()) m_excitation->setTstar(currentCase().tstar);
     });
+    // "Use this mu" from the friction calibration goes to the slab's friction field.
+    connect(m_friction, &FrictionPanel::useMu, m_slabPanel, &SlabPanel::useMu);
+    // A switch of units is an input step (after the switch, connected in installUnitsMenu): the
+    // project file keeps its units, so undo restores them.
+    for (QAction* a : m_viewMenu->findChildren<QAction*>(QRegularExpression("^units(SI|US)$")))
+        connect(a, &QAction::triggered, m_undo, &InputHistory::recordChange);
+}
+
+// The sweep's progress and result, the record's run, and picking a point of the surface.
+void MainWindow::connectRuns() {
     connect(m_runner, &SweepRunner::progress, this, &MainWindow::showProgress);
     connect(m_runner, &SweepRunner::partialResult, this, &MainWindow::showPartial);
     connect(m_runner, &SweepRunner::finished, this, &MainWindow::showFinished);
     buildRecordRun();
     connect(m_surface, &SurfaceView::pointSelected, this, &MainWindow::pickPoint);
-    // "Use this mu" from the friction calibration goes to the slab's friction field.
-    connect(m_friction, &FrictionPanel::useMu, m_slabPanel, &SlabPanel::useMu);
-    // 1280 × 800, or less on a smaller screen (more once the docks are laid out, in
-    // restoreSettings); the frame is fitted at the first show.
-    resize(sizeInside({1280, 800}, screen()->availableGeometry(), {}));
-    arrangeDocks();
-    m_tabDocks = new TabDocks(
-        m_centre, m_chartDocks,
-        [this](int i) {
-            return m_centre->widget(i) == m_surface || m_centre->widget(i)->isAncestorOf(m_records);
-        },
-        this);
-    restoreSettings();
-    m_records->preview()->setPlanarBase(m_modelPanel->isPlanar());
-    updateRunState();
-    updateTitle();
 }
 
 MainWindow::~MainWindow() {
@@ -382,34 +404,31 @@ void MainWindow::updateRunState() {
 void MainWindow::runSweep() {
     if (m_excitation->usesRecord()) return runRecord();
     if (!inputsValid() || m_runner->isRunning()) return;
-    SweepJob job;
-    job.slabCase = currentCase();
-    job.grid = m_gridPanel->grid();
-    job.codes = m_codeResults;
-    job.search = m_project.critical;
-    const std::string e = validateCase(job.slabCase) + validateGrid(job.grid);
+    const Project p = project();
+    const std::string e = validateCase(p.slab) + validateGrid(p.grid);
     if (!e.empty()) {
         m_status->setText(QString::fromStdString(e));
         return;
     }
-    if (!preparePlanar(job)) return;
+    const std::optional<AnalysisRequest> job = runRequest(p);
+    if (!job) return;
     // The old surface, curve, history and verdicts go: the new run replaces them.
     statusBar()->clearMessage(); // "Opened …" must not cover the run's status
-    m_results.startSweep(job.slabCase, job.planar);
+    m_results.startSweep(job->slab, job->planarCase());
     m_overlays.aCrit.clear();
     m_history->clearRun();
     m_planarHistory->clearRun();
     showVerdict();
     showStaleness();
-    m_runner->start(job);
-    const std::size_t steps = SweepRunner::stepCount(job); // the bar's total too
+    m_runner->start(*job);
+    const std::size_t steps = analysisSteps(*job); // the bar's total too
     m_progress->start(static_cast<qint64>(steps), tr("steps"));
     m_status->setText(tr("Running %1 steps: %2 points%3, A_crit at %4 frequencies%5…")
                           .arg(steps)
-                          .arg(job.grid.size())
-                          .arg(job.planar ? tr(" of the planar model (2–5 ms of CPU each)") : "")
-                          .arg(job.grid.frequencies.size())
-                          .arg(job.codes.empty() ? QString() : tr(", the design check")));
+                          .arg(job->grid.size())
+                          .arg(job->planar ? tr(" of the planar model (2–5 ms of CPU each)") : "")
+                          .arg(job->criticalFrequencies.size())
+                          .arg(job->codes.empty() ? QString() : tr(", the design check")));
     updateRunState();
 }
 
@@ -432,18 +451,20 @@ void MainWindow::showPartial(const SweepResult& r) {
     updateSlice();
 }
 
-void MainWindow::showFinished(const SweepOutput& out) {
+void MainWindow::showFinished(const AnalysisResult& out) {
     if (!m_results.awaits(ResultState::Run::Sweep)) { // a run of the project closed by Open/New
         m_progress->finish();
         updateRunState();
         emit sweepFinished();
         return;
     }
-    showPartial(out.sweep);
+    const SweepResult& sweep = *out.surface;
+    showPartial(sweep);
     m_overlays.aCrit.clear();
-    for (std::size_t j = 0; j < out.aCrit.size(); ++j)
-        if (out.aCrit[j])
-            m_overlays.aCrit.emplace_back(out.sweep.grid.frequencies[j], *out.aCrit[j]);
+    if (out.critical)
+        for (std::size_t j = 0; j < out.critical->amplitude.size(); ++j)
+            if (const std::optional<double> a = out.critical->amplitude[j])
+                m_overlays.aCrit.emplace_back(out.critical->frequencies[j], *a);
     m_results.setACrit(m_overlays.aCrit);
     refreshOverlays();
     if (out.check)
@@ -451,16 +472,16 @@ void MainWindow::showFinished(const SweepOutput& out) {
     m_results.runEnded();
     inputsChanged(); // code inputs changed while it ran: re-judge now
     if (!out.cancelled) startAssessment();
-    if (!out.check && !out.checkError.empty())
-        m_verdict->setError(QString::fromStdString(out.checkError));
+    if (!out.check && out.checkError)
+        m_verdict->setError(QString::fromStdString(checkErrorMessage(out)));
     m_progress->finish();
     m_status->setText(out.cancelled ? tr("Cancelled: %1 of %2 points computed and shown (%3 s)")
-                                          .arg(out.sweep.completed)
-                                          .arg(out.sweep.grid.size())
-                                          .arg(out.sweep.wallTimeSeconds, 0, 'f', 2)
+                                          .arg(sweep.completed)
+                                          .arg(sweep.grid.size())
+                                          .arg(sweep.wallTimeSeconds, 0, 'f', 2)
                                     : tr("Done: %1 points in %2 s")
-                                          .arg(out.sweep.grid.size())
-                                          .arg(out.sweep.wallTimeSeconds, 0, 'f', 2));
+                                          .arg(sweep.grid.size())
+                                          .arg(sweep.wallTimeSeconds, 0, 'f', 2));
     updateRunState();
     emit sweepFinished();
 }

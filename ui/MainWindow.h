@@ -140,6 +140,12 @@ protected:
     void showEvent(QShowEvent* e) override;
 
 private:
+    // The constructor's parts.
+    void buildCentre();
+    void buildStatusBar();
+    void connectInputs();
+    void connectRuns();
+    void buildTabDocks();
     void buildActions();
     void buildFileMenu();
     // Undo/redo and the unsaved-changes guard (MainWindowEdits.cpp).
@@ -155,7 +161,7 @@ private:
     void buildDocks();
     void updateRunState();
     void showPartial(const SweepResult& r);
-    void showFinished(const SweepOutput& out);
+    void showFinished(const AnalysisResult& out);
     void showProgress(qint64 done, qint64 total);
     void pickPoint(int ai, int fi);
     void updateSlice();
@@ -172,7 +178,9 @@ private:
     void exportSurface();
     void exportChart(QChartView* view, const QString& name);
     // The planar model (MainWindowPlanar.cpp).
-    bool preparePlanar(SweepJob& job);
+    // The Run's request of the project (ui/SweepRunner.h), the surface tab named for its model;
+    // nullopt, with the reason in the status line, when the planar vertical cannot be read.
+    std::optional<AnalysisRequest> runRequest(const Project& p);
     void pickPlanar(double amplitude, double frequency);
     QString modelTitle() const;
     void saveSettings(bool keepEdits = false);

@@ -15,18 +15,15 @@
 
 namespace kinstab::ui {
 
-bool MainWindow::preparePlanar(SweepJob& job) {
-    job.planar.reset();
-    const bool planar = m_modelPanel->isPlanar();
+std::optional<AnalysisRequest> MainWindow::runRequest(const Project& p) {
+    const bool planar = p.model == ModelKind::Planar;
     m_centre->setTabText(0, planar ? tr("γc surface — planar") : tr("γc surface"));
-    if (!planar) return true;
     try {
-        job.planar = projectPlanarCase(job.slabCase, m_modelPanel->settings());
+        return surfaceRunRequest(p); // reads the planar model's vertical record
     } catch (const std::exception& e) {
         m_status->setText(QString::fromStdString(e.what()));
-        return false;
+        return std::nullopt;
     }
-    return true;
 }
 
 QString MainWindow::modelTitle() const {

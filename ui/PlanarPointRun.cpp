@@ -8,8 +8,8 @@ PlanarPointRun runPlanarPoint(const PlanarCase& c, double amplitude, double freq
     PlanarPointRun p;
     p.amplitude = amplitude;
     p.frequency = frequencyHz;
-    p.limit = c.slab.limit;
-    p.theta = c.slab.theta;
+    p.limit = c.common.slab.limit;
+    p.theta = c.theta;
     p.tauRef = c.tauRef();
     p.result = runPlanar(c, amplitude, frequencyHz, &log);
     p.path = std::move(log.path);

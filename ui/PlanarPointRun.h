@@ -8,8 +8,8 @@
 
 namespace kinstab::ui {
 
-struct PlanarPointRun {
-    double amplitude = 0, frequency = 0, limit = 1, theta = 20, tauRef = 1;
+struct PlanarPointRun : RunPoint {
+    double limit = 1, theta = 20;
     PlanarResult result;
     std::vector<PlanarSample> path; // every accepted step and event
 };

@@ -4,6 +4,7 @@
 // history sampled (a sweep keeps only tau_c and the outcome, docs/theory.md §6.6).
 
 #include "core/slab/History.h"
+#include "core/slab/PointResult.h"
 #include "core/slab/Slab1DCase.h"
 
 #include <string>
@@ -16,8 +17,8 @@ struct EnvelopeSample {
     double bound = 0; // A e(t* tau) / S_max, g: the envelope the acceleration stays inside
 };
 
-struct PointRun {
-    double amplitude = 0, frequency = 0, mu = 0, limit = 1, tauRef = 1;
+struct PointRun : RunPoint {
+    double mu = 0, limit = 1;
     std::string drive; // what drove the run when not the sine at (A, f): "record X at 0.9 g"
     SlabResult result;
     History history;

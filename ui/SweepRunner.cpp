@@ -2,9 +2,10 @@
 #include "ui/SweepRunner.h"
 
 #include "core/analysis/RunAnalysis.h"
+#include "core/assessment/ProjectRequest.h"
 
 #include <algorithm>
-#include <exception>
+#include <cmath>
 #include <mutex>
 #include <thread>
 
@@ -23,14 +24,7 @@ struct SweepRunner::Live : AnalysisJobContext {
     SweepResult partial; // guarded by mutex
 };
 
-namespace {
-
-// The A_crit(f) curve drawn over a surface: scanned from each model's no-slip amplitude (from = 0
-// defers to it) up to the grid's top amplitude in the default scan step, bisected to 1e-5 g: the
-// curve spans amplitudes of order 0.1 to 10 g, where that is far below a pixel (the default
-// search's 1e-6 g is for the design check's printed digits, not a drawn curve).
-constexpr double kSurfaceCurveTolerance = 1e-5;
-CriticalSearch surfaceCriticalSearch(double topAmplitude) {
+CriticalSearch surfaceCurveSearch(double topAmplitude) {
     CriticalSearch s;
     s.from = 0.0;
     s.to = topAmplitude;
@@ -39,38 +33,22 @@ CriticalSearch surfaceCriticalSearch(double topAmplitude) {
     return s;
 }
 
-// The job as core's analysis request: the surface, A_crit at every grid frequency (searched up
-// to the grid's top amplitude), and the design check when there are codes.
-AnalysisRequest analysisRequest(const SweepJob& job) {
-    AnalysisRequest q;
-    q.slab = job.slabCase;
-    q.planar = job.planar;
-    q.grid = job.grid;
-    q.criticalFrequencies = job.grid.frequencies;
-    const auto& amplitudes = job.grid.amplitudes;
+AnalysisRequest surfaceRunRequest(const Project& p) {
+    AnalysisParts parts;
+    parts.surface = true;
+    parts.criticalCurve = true;
+    AnalysisRequest q = analysisRequest(p, parts);
+    q.parts.designCheck = !q.codes.empty();
+    const auto& amplitudes = q.grid.amplitudes;
     const double top =
         amplitudes.empty() ? 0.0 : *std::max_element(amplitudes.begin(), amplitudes.end());
-    q.criticalSearch = surfaceCriticalSearch(top);
-    q.codes = job.codes;
-    q.checkSearch = job.search;
-    q.parts.surface = true;
-    q.parts.criticalCurve = job.criticalCurve;
-    q.parts.designCheck = !job.codes.empty();
-    q.threads = job.threads;
+    q.criticalSearch = surfaceCurveSearch(top);
     return q;
 }
 
-std::string errorText(const std::exception_ptr& e) {
-    try {
-        std::rethrow_exception(e);
-    } catch (const std::exception& x) {
-        return x.what();
-    } catch (...) {
-        return "unknown error";
-    }
-}
+namespace {
 
-SweepOutput runJob(const SweepJob& job, SweepRunner::Live& live) {
+AnalysisResult runJob(const AnalysisRequest& request, SweepRunner::Live& live) {
     // Each finished point goes into the snapshot the GUI polls, at its grid index.
     live.analysis.onPoint = [&live](std::size_t k, const PointResult& r) {
         std::lock_guard lock(live.mutex);
@@ -78,29 +56,21 @@ SweepOutput runJob(const SweepJob& job, SweepRunner::Live& live) {
         live.partial.done[k] = 1;
         ++live.partial.completed;
     };
-    const AnalysisResult r = runAnalysis(analysisRequest(job), live.analysis);
-    SweepOutput out;
-    out.tauRef = r.tauRef;
-    out.sweep = *r.surface;
-    if (r.critical) out.aCrit = r.critical->amplitude;
-    out.check = r.check;
-    if (r.checkError) out.checkError = errorText(r.checkError);
-    out.cancelled = r.cancelled;
-    return out;
+    return runAnalysis(request, live.analysis);
 }
 
 // Runs the job on its own thread a few nice levels below the GUI, so that on a busy machine
 // the event loop still gets the CPU within a frame or two. Threads inherit the nice value on
 // Linux, so runSweep's workers run niced too; the thread ends with the job, so no pool thread
 // is left niced (an unprivileged process cannot lower its nice value again).
-SweepOutput runNiced(const SweepJob& job, SweepRunner::Live& live) {
-    SweepOutput out;
+AnalysisResult runNiced(const AnalysisRequest& request, SweepRunner::Live& live) {
+    AnalysisResult out;
     std::thread worker([&] {
 #ifdef __linux__
         const auto tid = static_cast<id_t>(syscall(SYS_gettid));
         setpriority(PRIO_PROCESS, tid, getpriority(PRIO_PROCESS, tid) + 5);
 #endif
-        out = runJob(job, live);
+        out = runJob(request, live);
     });
     worker.join();
     return out;
@@ -114,20 +84,16 @@ SweepRunner::SweepRunner(QObject* parent) : QObject(parent), m_job(this, updateI
 
 SweepRunner::~SweepRunner() = default; // m_job cancels and waits
 
-std::size_t SweepRunner::stepCount(const SweepJob& job) {
-    return analysisSteps(analysisRequest(job));
-}
-
-void SweepRunner::start(const SweepJob& job) {
+void SweepRunner::start(const AnalysisRequest& request) {
     if (isRunning()) return;
     auto live = std::make_shared<Live>();
-    live->partial.grid = job.grid;
-    live->partial.points.assign(job.grid.size(), PointResult{Outcome::Failed, std::nan("")});
-    live->partial.done.assign(job.grid.size(), 0);
+    live->partial.grid = request.grid;
+    live->partial.points.assign(request.grid.size(), PointResult{Outcome::Failed, std::nan("")});
+    live->partial.done.assign(request.grid.size(), 0);
     m_live = live;
     // Inputs and the shared state are captured by value: the work never touches `this`.
-    m_job.start<SweepOutput>([job, live](JobContext&) { return runNiced(job, *live); },
-                             [this](SweepOutput out) { emit finished(out); }, live);
+    m_job.start<AnalysisResult>([request, live](JobContext&) { return runNiced(request, *live); },
+                                [this](AnalysisResult out) { emit finished(out); }, live);
 }
 
 void SweepRunner::cancel() {

@@ -5,37 +5,30 @@
 // are polled a few times a second with its progress (never per point), and a cancel keeps
 // everything already computed.
 
-#include "core/check/DesignCheck.h"
-#include "core/slab/PlanarCase.h"
-#include "core/slab/Slab1DCase.h"
+#include "core/analysis/AnalysisRequest.h"
+#include "core/analysis/AnalysisResult.h"
+#include "core/io/Project.h"
 #include "core/sweep/Sweep.h"
 #include "ui/BackgroundJob.h"
 
 #include <QObject>
 
 #include <memory>
-#include <optional>
 
 namespace kinstab::ui {
 
-struct SweepJob {
-    Slab1DCase slabCase;
-    std::optional<PlanarCase> planar; // set: the planar model runs (slabCase gives the check's mu)
-    SweepGrid grid;
-    std::vector<CodeResult> codes; // the design check runs on these (none: no check)
-    CriticalSearch search;         // of the design check
-    bool criticalCurve = true;     // A_crit at every grid frequency
-    int threads = 0;               // 0: all cores
-};
+// The GUI's Run of a project (core/assessment/ProjectRequest.h): the surface, A_crit at every
+// grid frequency searched up to the grid's top amplitude (surfaceCurveSearch), and the design
+// check when there are codes. Throws InputError as analysisRequest does.
+AnalysisRequest surfaceRunRequest(const Project& p);
 
-struct SweepOutput {
-    SweepResult sweep;
-    double tauRef = 1;
-    std::vector<std::optional<double>> aCrit; // per grid frequency; empty when not computed
-    std::optional<DesignCheckResult> check;   // absent when cancelled, no codes, or failed
-    std::string checkError;
-    bool cancelled = false;
-};
+// The A_crit(f) curve drawn over a surface: scanned from each model's no-slip amplitude (from = 0
+// defers to it) up to the grid's top amplitude in the default scan step, bisected to
+// kSurfaceCurveTolerance.
+CriticalSearch surfaceCurveSearch(double topAmplitude);
+// g: the curve spans amplitudes of order 0.1 to 10 g, where that is far below a pixel (the
+// default search's 1e-6 g is for the design check's printed digits, not a drawn curve).
+inline constexpr double kSurfaceCurveTolerance = 1e-5;
 
 class SweepRunner : public QObject {
     Q_OBJECT
@@ -43,15 +36,13 @@ public:
     explicit SweepRunner(QObject* parent = nullptr);
     ~SweepRunner() override; // cancels and waits: the task must not outlive its owner
 
-    void start(const SweepJob& job);
+    void start(const AnalysisRequest& request);
     void cancel();
     bool isRunning() const;
     void waitForFinished() { m_job.waitForFinished(); }
     // Everything computed so far (unfinished points have done = 0).
     SweepResult snapshot() const;
 
-    // The units progress counts: grid points, A_crit at each frequency, the design check.
-    static std::size_t stepCount(const SweepJob& job);
     static constexpr int updateIntervalMs = BackgroundJob::defaultPollMs; // surface refresh
 
     struct Live; // state shared with the worker threads
@@ -60,7 +51,8 @@ signals:
     // Units done of the total (grid points, A_crit frequencies, the design check).
     void progress(qint64 done, qint64 total);
     void partialResult(const kinstab::SweepResult& r);
-    void finished(const kinstab::ui::SweepOutput& out);
+    // The result of core's analysis: the surface always, the curve and check as asked.
+    void finished(const kinstab::AnalysisResult& out);
 
 private:
     void poll(qint64 done, qint64 total);

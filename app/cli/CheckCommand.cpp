@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/cli/AnalysisRuns.h"
 #include "app/cli/Args.h"
 #include "app/cli/BuildingFlags.h"
 #include "app/cli/Commands.h"
@@ -76,11 +77,9 @@ int runCheck(const ArgList& argv) {
                          modelKindName(ModelKind::Slab1D) + " model");
     const auto start = std::chrono::steady_clock::now();
     nlohmann::json j;
-    std::optional<PlanarCase> planar;
     AssessmentRun run;
     try {
-        planar = planarModel(p);
-        run = assess(p, planar);
+        run = assess(p, planarModel(p));
     } catch (const InputError& e) {
         throw inputUsageError(e);
     }
@@ -91,15 +90,9 @@ int runCheck(const ArgList& argv) {
     j = detailJson(p, run);
     j["assessment"] = assessmentJson(run.assessment);
     j["project"] = p.name;
-    if (planar) {
-        j.update(planarCaseJson(*planar)); // model, solver, envelope, mu, t*, the planar inputs
-    } else {
-        j["model"] = modelKindName(ModelKind::Slab1D);
-        j["solver"] = solverName(p.slab.solver);
-        if (!p.record) j["envelope"] = envelopeJson(p.slab);
-        j["mu"] = p.slab.slab.mu;
-        j["tstar"] = p.slab.tstar;
-    }
+    // model, solver, envelope, mu, t* (and the planar inputs); a record replaces the envelope.
+    j.update(modelKeysJson(run.request));
+    if (p.record) j.erase("envelope");
     j["search"] = {{"max_amplitude", p.critical.to},
                    {"scan_step", p.critical.scanStep},
                    {"tolerance", p.critical.tolerance}};

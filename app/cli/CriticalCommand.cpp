@@ -3,7 +3,6 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/ModelFlags.h"
-#include "app/cli/PlanarFlags.h"
 #include "app/cli/SearchFlags.h"
 #include "core/excitation/FrequencyRange.h"
 #include "core/io/JsonText.h"
@@ -25,26 +24,21 @@ int runCritical(const ArgList& argv) {
     if (!e.empty()) throw UsageError("--" + e);
     const CriticalSearch search = criticalSearchFromFlags(args);
 
-    if (isPlanar(args)) return runCriticalPlanar(args, freqs, search);
-    const Slab1DCase c = slab1DCaseFromFlags(args);
-    AnalysisRequest request;
-    request.slab = c;
+    // One path for both models. The planar scan starts where anything can slip at all:
+    // A_x sqrt(1 + ratio^2) = mu min n, below mu itself (both components push).
+    AnalysisRequest request = modelRequestFromFlags(args);
     request.criticalFrequencies = freqs;
     request.criticalSearch = search;
-    // Each run is checked before its verdict counts: a collapse with no finite time is an
+    // Each 1-DOF run is checked before its verdict counts: a collapse with no finite time is an
     // internal error (exit 3), never an A_crit.
     request.requireSoundRuns = true;
     const nlohmann::json crit = criticalCurveJson(request);
-    nlohmann::json j = {{"frequencies", freqs},
-                        {"a_crit", crit},
-                        {"model", modelKindName(ModelKind::Slab1D)},
-                        {"solver", solverName(c.solver)},
-                        {"envelope", envelopeJson(c)},
-                        {"mu", c.slab.mu},
-                        {"tstar", c.tstar},
-                        {"max_amplitude", search.to},
-                        {"scan_step", search.scanStep},
-                        {"tolerance", search.tolerance}};
+    nlohmann::json j = modelKeysJson(request);
+    j.update({{"frequencies", freqs},
+              {"a_crit", crit},
+              {"max_amplitude", search.to},
+              {"scan_step", search.scanStep},
+              {"tolerance", search.tolerance}});
     std::cout << jsonText(j, 2) << "\n";
     return 0;
 }

@@ -1,14 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// simulate and surface with --model planar (docs/user-guide.md "The command line"): the JSON of the
+// simulate with --model planar (docs/user-guide.md "The command line"): the JSON of the
 // 1-DOF model with keys added, never renamed: exit_side ("across" | "along", null unless
 // collapsed), tau_lift_off, max_abs_delta_y, residual_delta_y, and the planar case.
 
-#include "app/cli/AnalysisRuns.h"
 #include "app/cli/Commands.h"
 #include "app/cli/PlanarFlags.h"
 #include "core/io/JsonText.h"
 #include "core/io/ResultJson.h"
-#include "core/io/SurfaceJson.h"
 #include "core/sweep/SearchWork.h"
 
 #include <chrono>
@@ -77,40 +75,6 @@ int runSimulatePlanar(const Args& args, double amplitude, double frequency, doub
     j["wall_time_s"] = wall;
     if (args.has("events")) j["events"] = planarEventsJson(log.events.events);
     if (args.has("history")) writeOutput(args, "history", planarHistoryCsv(model, log.path.path));
-    std::cout << jsonText(j, 2) << "\n";
-    return 0;
-}
-
-int runSurfacePlanar(const Args& args, const SweepGrid& grid, int threads,
-                     const std::string& format) {
-    const PlanarCase c = planarCaseFromFlags(args);
-    AnalysisRequest request;
-    request.planar = c;
-    const SweepResult r = surfaceOf(request, grid, threads);
-    if (format == "csv") {
-        writeOutput(args, "o", sweepCsv(r, c.tauRef()));
-        return 0;
-    }
-    writeOutput(args, "o", jsonText(surfaceJson(r, c)) + "\n");
-    return 0;
-}
-
-// A_crit(f_x) of the planar model. The scan starts where anything can slip at all:
-// A_x sqrt(1 + ratio^2) = mu min n, below mu itself (both components push).
-int runCriticalPlanar(const Args& args, const std::vector<double>& frequencies,
-                      const CriticalSearch& search) {
-    const PlanarCase c = planarCaseFromFlags(args);
-    AnalysisRequest request;
-    request.planar = c;
-    request.criticalFrequencies = frequencies;
-    request.criticalSearch = search;
-    const nlohmann::json crit = criticalCurveJson(request);
-    nlohmann::json j = planarCaseJson(c);
-    j.update({{"frequencies", frequencies},
-              {"a_crit", crit},
-              {"max_amplitude", search.to},
-              {"scan_step", search.scanStep},
-              {"tolerance", search.tolerance}});
     std::cout << jsonText(j, 2) << "\n";
     return 0;
 }

@@ -37,16 +37,17 @@ PlanarCase planarCaseFromFlags(const Args& args, bool recordDriven) {
     for (const char* f : {"record", "floor-period", "damping"})
         if (args.has(f) && !recordDriven)
             throw UsageError(std::string("--") + f + ": not available with --model planar");
-    PlanarCase c = planarCaseSharing(commonCaseFromFlags(args));
+    PlanarCase c;
+    c.common = commonCaseFromFlags(args);
     c.ayRatio = args.input(kAyRatioInput);
     if (!args.has("fy") && !recordDriven)
         throw UsageError("--fy is required with --model planar (frequency along the walls, Hz; "
                          "the paper uses 0.2, 0.5, 1, 2, 5, 10)");
     c.fyHz = args.has("fy") ? args.input(kFyInput) : c.fyHz;
-    c.slab.theta = args.input(kThetaInput);
+    c.theta = args.input(kThetaInput);
     c.normalization =
         *normalizationFromName(args.choice("normalization", {"product", "envelope"}, "product"));
-    if (args.has("vertical")) c.vertical = verticalFromFile(args.text("vertical"), c.tstar);
+    if (args.has("vertical")) c.vertical = verticalFromFile(args.text("vertical"), c.common.tstar);
     args.refuse(checkPlanarCase(c));
     return c;
 }

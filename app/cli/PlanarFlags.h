@@ -19,19 +19,8 @@ bool isPlanar(const Args& args); // --model planar
 // required and --record/--floor-period/--damping are the caller's.
 PlanarCase planarCaseFromFlags(const Args& args, bool recordDriven = false);
 
-} // namespace kinstab::cli
-
-namespace kinstab {
-struct SweepGrid;
-struct CriticalSearch;
-} // namespace kinstab
-
-namespace kinstab::cli {
-
-// The planar branches of simulate and surface, after the shared flags are read.
+// The planar branch of simulate, after the shared flags are read.
 int runSimulatePlanar(const Args& args, double amplitude, double frequency, double historyStep);
-int runSurfacePlanar(const Args& args, const SweepGrid& grid, int threads,
-                     const std::string& format);
 // Shared by the sine- and record-driven planar simulate: the event list, the path CSV and the
 // planar keys of the result (exit_side, tau_lift_off, max_abs_delta_y, residual_delta_y).
 nlohmann::json planarEventsJson(const std::vector<PlanarEvent>& events);
@@ -47,7 +36,5 @@ void addPlanarResultKeys(nlohmann::json& j, const PlanarResult& r);
 
 // simulate --model planar --record FILE [--record-y FILE] (PlanarRecord.cpp).
 int runSimulatePlanarRecord(const Args& args);
-int runCriticalPlanar(const Args& args, const std::vector<double>& frequencies,
-                      const CriticalSearch& search);
 
 } // namespace kinstab::cli

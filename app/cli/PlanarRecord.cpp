@@ -42,7 +42,7 @@ int runSimulatePlanarRecord(const Args& args) {
     m.x = drivingMotion(e, groundX);
     if (groundY) m.y = drivingMotion(e, *groundY);
     m.peakX = scaledPeak(e, m.x);
-    if (const std::string err = validatePlanarRecordMotions(m, c.tstar); !err.empty())
+    if (const std::string err = validatePlanarRecordMotions(m, c.common.tstar); !err.empty())
         throw UsageError(std::string(err.rfind("y", 0) == 0 ? "--record-y " : "--record ") +
                          args.text(err.rfind("y", 0) == 0 ? "record-y" : "record") + ": " + err);
     const SlabModel2D model = planarRecordModel(c, m);
@@ -52,10 +52,7 @@ int runSimulatePlanarRecord(const Args& args) {
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-    Slab1DCase common;
-    common.tstar = c.tstar;
-    common.scale = c.scale;
-    const std::optional<double> tauRef = recordTauRef(fitOrNone(m.x), common);
+    const std::optional<double> tauRef = recordTauRef(fitOrNone(m.x), c.common);
     nlohmann::json j = slabResultJson(r.slab, tauRef.value_or(std::nan("")));
     if (!tauRef) j["gamma_c"] = nullptr;
     j.update(planarCaseJson(c));

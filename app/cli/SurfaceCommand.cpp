@@ -3,7 +3,6 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "app/cli/ModelFlags.h"
-#include "app/cli/PlanarFlags.h"
 #include "core/io/JsonText.h"
 #include "core/io/ResultJson.h"
 #include "core/io/ResultTable.h"
@@ -24,21 +23,21 @@ int runSurface(const ArgList& argv) {
     const std::string format = args.choice("format", {"json", "csv", "table"}, "json");
     if (args.has("o")) checkOutputPath("o", args.text("o")); // before a long sweep, not after
 
-    if (isPlanar(args)) return runSurfacePlanar(args, grid, threads, format);
-    const Slab1DCase c = slab1DCaseFromFlags(args);
-
-    AnalysisRequest request;
-    request.slab = c;
+    // One path for both models: the planar case shares the 1-DOF case's τ_ref.
+    const AnalysisRequest request = modelRequestFromFlags(args);
     const SweepResult r = surfaceOf(request, grid, threads);
+    const double tauRef = request.slab.tauRef();
+    const std::optional<PlanarCase> planar = request.planarCase();
     if (format == "table") {
-        writeOutput(args, "o", sweepTable(r, c.tauRef()));
+        writeOutput(args, "o", sweepTable(r, tauRef));
         return 0;
     }
     if (format == "csv") {
-        writeOutput(args, "o", sweepCsv(r, c.tauRef()));
+        writeOutput(args, "o", sweepCsv(r, tauRef));
         return 0;
     }
-    writeOutput(args, "o", jsonText(surfaceJson(r, c)) + "\n");
+    const nlohmann::json j = planar ? surfaceJson(r, *planar) : surfaceJson(r, request.slab);
+    writeOutput(args, "o", jsonText(j) + "\n");
     return 0;
 }
 

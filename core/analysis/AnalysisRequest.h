@@ -24,8 +24,10 @@ struct AnalysisParts {
 };
 
 struct AnalysisRequest {
-    Slab1DCase slab;                        // the 1-DOF case (and the planar model's μ, envelope)
-    std::optional<PlanarCase> planar;       // set: the planar model runs the sine parts
+    // The model: the 1-DOF case, and with `planar` set the planar model of that case (its μ,
+    // envelope, t*, scale, limit and duration are `slab`'s: they live here once).
+    Slab1DCase slab;
+    std::optional<PlanarInputs> planar;     // set: the planar model runs the sine parts
     std::optional<RecordExcitation> record; // the record of recordCheck (1-DOF slab)
     SweepGrid grid;                         // of the surface
     std::vector<double> criticalFrequencies;
@@ -37,6 +39,12 @@ struct AnalysisRequest {
     // InternalError instead of counting as an outcome (kinstab-cli's exit 3).
     bool requireSoundRuns = false;
     int threads = 0; // 0: all hardware threads
+
+    // The planar case the sine parts run when `planar` is set.
+    std::optional<PlanarCase> planarCase() const {
+        if (!planar) return std::nullopt;
+        return PlanarCase(slab, *planar);
+    }
 };
 
 } // namespace kinstab

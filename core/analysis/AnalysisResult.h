@@ -10,6 +10,7 @@
 
 #include <exception>
 #include <optional>
+#include <string>
 
 namespace kinstab {
 
@@ -26,5 +27,17 @@ struct AnalysisResult {
     bool cancelled = false; // then the curve and the checks are dropped: they may be partial
     double surfaceSeconds = 0, criticalSeconds = 0, checkSeconds = 0, recordSeconds = 0;
 };
+
+// checkError's message, for a view that shows it beside the verdicts; empty when none.
+inline std::string checkErrorMessage(const AnalysisResult& r) {
+    if (!r.checkError) return {};
+    try {
+        std::rethrow_exception(r.checkError);
+    } catch (const std::exception& e) {
+        return e.what();
+    } catch (...) {
+        return "unknown error";
+    }
+}
 
 } // namespace kinstab

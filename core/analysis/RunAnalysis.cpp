@@ -32,7 +32,7 @@ ModelPoint requestModel(const AnalysisRequest& q) {
 
 // What a run of the request's sine model costs at f (core/sweep/SearchWork.h).
 SineWorkModel sineWork(const AnalysisRequest& q, double frequencyHz) {
-    if (q.planar) return planarWork(*q.planar, frequencyHz);
+    if (q.planar) return planarWork(*q.planarCase(), frequencyHz);
     return {frequencyHz, 1.0, solverCostFactor(q.slab)};
 }
 
@@ -107,6 +107,9 @@ void runDesignCheck(const AnalysisRequest& q, const ModelPoint& m, AnalysisContr
             frequencies.push_back(1.0 / r.periodSeconds);
         }
         requireSearchWork(q, frequencies, m.scanFrom, q.checkSearch);
+        // designCheck validates the 1-DOF case; the planar model's own inputs run too.
+        if (const std::optional<PlanarCase> c = q.planarCase())
+            if (const std::string e = validatePlanarCase(*c); !e.empty()) throw InputError(e);
         out.check = designCheck(q.codes, q.slab, q.checkSearch,
                                 stoppable(m.point, control.sweepControl()), m.scanFrom);
     } catch (...) {

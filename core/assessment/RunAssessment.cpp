@@ -2,6 +2,7 @@
 #include "core/assessment/RunAssessment.h"
 
 #include "core/analysis/RunAnalysis.h"
+#include "core/assessment/ProjectRequest.h"
 #include "core/base/InputError.h"
 #include "core/codes/CodeSet.h"
 #include "core/io/Project.h"
@@ -12,14 +13,6 @@
 namespace kinstab {
 
 namespace {
-
-AnalysisRequest checkRequest(const Project& p, const std::vector<CodeResult>& codes) {
-    AnalysisRequest r;
-    r.slab = p.slab;
-    r.codes = codes;
-    r.checkSearch = p.critical;
-    return r;
-}
 
 // The floor analysis without the per-level searches, then the search of the slab's level alone.
 std::optional<FloorCheckParts> slabLevelFloors(const Project& p, const Accelerogram& ground,
@@ -67,21 +60,20 @@ std::optional<FloorCheckParts> floorCheckParts(const FloorAnalysis& a, int stori
 
 AssessmentRun runAssessment(const Project& p, const std::optional<PlanarCase>& planar,
                             AnalysisControl& control) {
-    if (p.model == ModelKind::Planar && !planar)
-        throw std::logic_error("runAssessment: a planar project needs its planar case");
     AssessmentRun run;
     // First: a bad results or hazard file is an InputError before minutes of searches.
     run.parts.risk = projectRiskParts(p);
-    run.codes = runCodes(p.building, p.codes);
-    AnalysisRequest sine = checkRequest(p, run.codes);
-    sine.planar = p.model == ModelKind::Planar ? planar : std::nullopt;
-    sine.parts.designCheck = true;
+    AnalysisParts sineParts;
+    sineParts.designCheck = true;
+    run.request = analysisRequest(p, sineParts, planar);
+    const AnalysisRequest& sine = run.request;
     const AnalysisResult s = runAnalysis(sine, control);
     if (s.checkError) std::rethrow_exception(s.checkError);
     run.parts.sine = s.check;
     if (p.record) {
-        AnalysisRequest rec = checkRequest(p, run.codes);
-        rec.record = p.record;
+        AnalysisRequest rec = sine; // the record check runs the 1-DOF slab
+        rec.planar.reset();
+        rec.parts = AnalysisParts{};
         rec.parts.recordCheck = true;
         run.record = runAnalysis(rec, control).record;
         if (run.record) {

@@ -9,6 +9,7 @@
 // assessment from the fuller analyses they run (composeAssessment).
 
 #include "core/analysis/AnalysisControl.h"
+#include "core/analysis/AnalysisRequest.h"
 #include "core/assessment/Assessment.h"
 #include "core/building/FloorAnalysis.h"
 #include "core/check/RecordAnalysis.h"
@@ -21,7 +22,7 @@
 namespace kinstab {
 
 struct AssessmentRun {
-    std::vector<CodeResult> codes;
+    AnalysisRequest request; // of the sine's check (core/assessment/ProjectRequest.h): its codes
     AssessmentParts parts;
     std::optional<RecordAnalysis> record; // the record's run, motion and critical peak
     Assessment assessment;

@@ -33,10 +33,6 @@ nlohmann::json slab1DCaseJson(const Slab1DCase& c) {
 }
 
 nlohmann::json planarCaseJson(const PlanarCase& c) {
-    Slab1DCase common;
-    common.envelope = c.envelope;
-    common.tstar = c.tstar;
-    common.scale = c.scale;
     nlohmann::json vertical; // null: gravity only
     if (const auto* r = dynamic_cast<const RecordedMotion*>(c.vertical.get()))
         vertical = {
@@ -45,11 +41,11 @@ nlohmann::json planarCaseJson(const PlanarCase& c) {
             {"solver", "dop853"},
             {"rel_tol", c.solver.relTol},
             {"abs_tol", c.solver.absTol},
-            {"envelope", envelopeJson(common)},
-            {"mu", c.slab.mu},
-            {"tstar", c.tstar},
-            {"limit", c.slab.limit},
-            {"theta", c.slab.theta},
+            {"envelope", envelopeJson(c.common)},
+            {"mu", c.common.slab.mu},
+            {"tstar", c.common.tstar},
+            {"limit", c.common.slab.limit},
+            {"theta", c.theta},
             {"ay_ratio", c.ayRatio},
             {"fy", c.fyHz},
             {"normalization", normalizationName(c.normalization)},

@@ -54,9 +54,9 @@ void score(WorkPrecisionRow& row, const std::vector<PlanarResult>& runs,
             row.tauCError = std::isnan(row.tauCError) ? e : std::max(row.tauCError, e);
             row.error = std::max(row.error, e / q.slab.tauC);
         } else {
-            const double e =
-                std::max(std::abs(r.slab.residualDelta - q.slab.residualDelta) / c.slab.limit,
-                         std::abs(r.residualDeltaY - q.residualDeltaY) / c.slab.theta);
+            const double e = std::max(std::abs(r.slab.residualDelta - q.slab.residualDelta) /
+                                          c.common.slab.limit,
+                                      std::abs(r.residualDeltaY - q.residualDeltaY) / c.theta);
             row.residualError = std::isnan(row.residualError) ? e : std::max(row.residualError, e);
             row.error = std::max(row.error, e);
         }

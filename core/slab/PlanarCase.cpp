@@ -21,9 +21,10 @@ std::optional<PlanarNormalization> normalizationFromName(const std::string& name
 }
 
 InputProblem checkPlanarCase(const PlanarCase& c) {
-    if (InputProblem e = checkEnvelope(c.envelope.alpha, c.envelope.beta); !e.empty()) return e;
-    if (InputProblem e = checkPlanarParams(c.slab); !e.empty()) return e;
-    if (InputProblem e = checkInput(kTstarInput, c.tstar); !e.empty()) return e;
+    const Slab1DCase& k = c.common;
+    if (InputProblem e = checkEnvelope(k.envelope.alpha, k.envelope.beta); !e.empty()) return e;
+    if (InputProblem e = checkPlanarParams(c.params()); !e.empty()) return e;
+    if (InputProblem e = checkInput(kTstarInput, k.tstar); !e.empty()) return e;
     if (InputProblem e = checkInput(kAyRatioInput, c.ayRatio); !e.empty()) return e;
     if (InputProblem e = checkInput(kFyInput, c.fyHz); !e.empty()) return e;
     if (!(c.solver.relTol >= 1e-14 && c.solver.relTol <= 1e-2))
@@ -42,13 +43,14 @@ namespace {
 // One horizontal component. For the envelope-only normalization the amplitude handed to the
 // enveloped sine (which divides by max(e sin)) is rescaled so that the factor is A / max(e).
 std::shared_ptr<const Excitation1D> component(const PlanarCase& c, double amplitude, double f) {
+    const Envelope& e = c.common.envelope;
+    const double tstar = c.common.tstar;
     if (c.normalization == PlanarNormalization::Product)
-        return std::make_shared<EnvelopedSine>(c.envelope, amplitude, f, c.tstar);
-    const EnvelopedSine unit(c.envelope, 1.0, f, c.tstar);
+        return std::make_shared<EnvelopedSine>(e, amplitude, f, tstar);
+    const EnvelopedSine unit(e, 1.0, f, tstar);
     const double peak = unit.envelopePeakTau();
     const double envelopeMax = std::isfinite(peak) ? unit.envelopeAt(peak) : 1.0;
-    return std::make_shared<EnvelopedSine>(c.envelope, amplitude * unit.sMax() / envelopeMax, f,
-                                           c.tstar);
+    return std::make_shared<EnvelopedSine>(e, amplitude * unit.sMax() / envelopeMax, f, tstar);
 }
 } // namespace
 
@@ -56,7 +58,7 @@ SlabModel2D planarModel(const PlanarCase& c, double ax, double fxHz) {
     auto x = component(c, ax, fxHz);
     std::shared_ptr<const Excitation1D> y;
     if (c.ayRatio > 0.0 && ax > 0.0) y = component(c, c.ayRatio * ax, c.fyHz);
-    return SlabModel2D(std::move(x), std::move(y), c.vertical, c.slab);
+    return SlabModel2D(std::move(x), std::move(y), c.vertical, c.params());
 }
 
 PlanarResult runPlanar(const PlanarCase& c, double ax, double fxHz, PlanarRecorder* recorder) {
@@ -72,16 +74,7 @@ PointFunction planarPoint(const PlanarCase& c) {
 
 double planarNoSlipAmplitude(const PlanarCase& c) {
     const double nMin = c.vertical ? 1.0 - c.vertical->peak() : 1.0;
-    return std::max(0.0, c.slab.mu * nMin / std::hypot(1.0, c.ayRatio));
-}
-
-PlanarCase planarCaseSharing(const Slab1DCase& common) {
-    PlanarCase c;
-    c.envelope = common.envelope;
-    c.tstar = common.tstar;
-    c.scale = common.scale;
-    static_cast<SlabParams&>(c.slab) = common.slab;
-    return c;
+    return std::max(0.0, c.common.slab.mu * nMin / std::hypot(1.0, c.ayRatio));
 }
 
 } // namespace kinstab

@@ -24,26 +24,33 @@ enum class PlanarNormalization { Product, Envelope };
 std::string normalizationName(PlanarNormalization n);
 std::optional<PlanarNormalization> normalizationFromName(const std::string& name);
 
-struct PlanarCase {
-    Envelope envelope = Envelope::fromPreset(EnvelopePreset::Moderate);
-    double tstar = 0.099; // s
-    PlanarParams slab;    // mu, limit, theta, duration
+// What the planar model adds to the 1-DOF case: the along-wall limit, the motion along the walls,
+// the vertical motion and its own solver's tolerances.
+struct PlanarInputs {
+    double theta = 20.0; // along the walls: collapse when |dy| > theta = 2 wall length / wall width
     double ayRatio = 0.9; // A_y / A_x (the paper: Pacoima Dam's ratio of horizontal peaks)
     double fyHz = 1.0;    // frequency along the walls
     PlanarNormalization normalization = PlanarNormalization::Product;
-    TauScale scale = TauScale::TauMax;
     std::shared_ptr<const Excitation1D> vertical; // upward base acceleration a_z in g; null: none
     PlanarOptions solver;
+};
 
-    double tauRef() const { return envelope.tauRef(scale, tstar); }
+// The 1-DOF case (envelope, t*, scale, mu, limit, duration: held once, in `common`) and the
+// planar model's own inputs. common's solver fields are the 1-DOF solvers' and unused here.
+struct PlanarCase : PlanarInputs {
+    Slab1DCase common;
+
+    PlanarCase() = default;
+    PlanarCase(const Slab1DCase& shared, const PlanarInputs& own)
+        : PlanarInputs(own), common(shared) {}
+
+    double tauRef() const { return common.tauRef(); }
+    PlanarParams params() const { return {common.slab, theta}; } // of the model
+    const PlanarInputs& own() const { return *this; }
 };
 
 InputProblem checkPlanarCase(const PlanarCase& c);   // the first input out of range, or nothing
 std::string validatePlanarCase(const PlanarCase& c); // empty when fine
-
-// The planar case with what it shares with the 1-DOF one (envelope, t*, scale, mu, limit,
-// duration) taken from it; the planar inputs keep their defaults.
-PlanarCase planarCaseSharing(const Slab1DCase& common);
 
 // The model of one grid point, sharing the case's vertical motion.
 SlabModel2D planarModel(const PlanarCase& c, double ax, double fxHz);

@@ -17,13 +17,14 @@ std::string validatePlanarRecordMotions(const PlanarRecordMotions& m, double tst
 }
 
 SlabModel2D planarRecordModel(const PlanarCase& c, const PlanarRecordMotions& m) {
-    if (const std::string e = validatePlanarRecordMotions(m, c.tstar); !e.empty())
+    if (const std::string e = validatePlanarRecordMotions(m, c.common.tstar); !e.empty())
         throw std::invalid_argument(e);
-    auto x = std::make_shared<RecordedMotion>(m.x, c.tstar, m.peakX);
+    auto x = std::make_shared<RecordedMotion>(m.x, c.common.tstar, m.peakX);
     std::shared_ptr<const Excitation1D> y;
     const double yPeak = m.y ? std::abs(m.y->peak().value) : 0.0;
-    if (m.y && yPeak > 0.0) y = std::make_shared<RecordedMotion>(*m.y, c.tstar, x->scale() * yPeak);
-    return SlabModel2D(std::move(x), std::move(y), c.vertical, c.slab);
+    if (m.y && yPeak > 0.0)
+        y = std::make_shared<RecordedMotion>(*m.y, c.common.tstar, x->scale() * yPeak);
+    return SlabModel2D(std::move(x), std::move(y), c.vertical, c.params());
 }
 
 PlanarResult runPlanarRecord(const PlanarCase& c, const PlanarRecordMotions& m) {

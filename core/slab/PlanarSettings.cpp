@@ -53,8 +53,9 @@ std::shared_ptr<const Excitation1D> verticalMotion(const Accelerogram& record, d
 PlanarCase planarCaseFrom(const Slab1DCase& common, const PlanarSettings& s,
                           std::shared_ptr<const Excitation1D> vertical) {
     if (const std::string e = validatePlanarSettings(s); !e.empty()) throw InputError(e);
-    PlanarCase c = planarCaseSharing(common);
-    c.slab.theta = s.theta;
+    PlanarCase c;
+    c.common = common;
+    c.theta = s.theta;
     c.ayRatio = s.ayRatio;
     c.fyHz = s.fyHz;
     c.normalization = s.normalization;

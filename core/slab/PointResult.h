@@ -16,6 +16,15 @@ struct PointResult {
     ExitSide exitSide = ExitSide::None; // planar collapses: across or along the walls
 };
 
+// The point of the enveloped sine one run was taken at, and the τ_ref its γc is of: what each
+// view of a single run (the GUI's picked points, Python's results) keeps beside the solver's
+// result, for either model.
+struct RunPoint {
+    double amplitude = 0; // g
+    double frequency = 0; // Hz
+    double tauRef = 1;
+};
+
 using PointFunction = std::function<PointResult(double amplitude, double frequencyHz)>;
 
 } // namespace kinstab

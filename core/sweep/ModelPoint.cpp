@@ -3,9 +3,10 @@
 
 namespace kinstab {
 
-ModelPoint modelPoint(const Slab1DCase& slab, const std::optional<PlanarCase>& planar) {
+ModelPoint modelPoint(const Slab1DCase& slab, const std::optional<PlanarInputs>& planar) {
     if (!planar) return {slab1DPoint(slab), slab.slab.mu, slab.tauRef()};
-    return {planarPoint(*planar), planarNoSlipAmplitude(*planar), planar->tauRef()};
+    const PlanarCase c(slab, *planar);
+    return {planarPoint(c), planarNoSlipAmplitude(c), c.tauRef()};
 }
 
 } // namespace kinstab

@@ -2,7 +2,8 @@
 #pragma once
 // The point function of the model a sweep runs (docs/user-guide.md "model (1-DOF / planar)"), with
 // where its A_crit scans start: the 1-DOF slab (nothing slips below mu) or, when a planar case is
-// given, the planar slab of ch. VI (nothing slips below planarNoSlipAmplitude).
+// given, the planar slab of ch. VI on the same 1-DOF case (nothing slips below
+// planarNoSlipAmplitude).
 
 #include "core/slab/PlanarCase.h"
 #include "core/slab/Slab1DCase.h"
@@ -18,6 +19,6 @@ struct ModelPoint {
     double tauRef = 1;   // γc = tauRef / tau_c
 };
 
-ModelPoint modelPoint(const Slab1DCase& slab, const std::optional<PlanarCase>& planar);
+ModelPoint modelPoint(const Slab1DCase& slab, const std::optional<PlanarInputs>& planar);
 
 } // namespace kinstab

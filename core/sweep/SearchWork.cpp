@@ -68,11 +68,8 @@ SineWorkModel planarWork(const PlanarCase& c, double fxHz) {
 }
 
 InputProblem checkPlanarRunWork(const PlanarCase& c, double ax, double fxHz) {
-    Slab1DCase run; // what the bound reads: the envelope, t*, mu and tau_out
-    run.envelope = c.envelope;
-    run.tstar = c.tstar;
-    run.slab = c.slab;
-    return checkRunWork(run, ax, planarWork(c, fxHz));
+    // The bound reads the envelope, t*, mu and tau_out; planarWork gives the planar solver's cost.
+    return checkRunWork(c.common, ax, planarWork(c, fxHz));
 }
 
 InputProblem checkSurfaceWork(const Slab1DCase& c, std::size_t points, double maxAmplitude,

@@ -112,10 +112,10 @@ void bindPlanarCase(py::module_& m) {
              py::arg("normalization") = "product", py::arg("vertical") = py::none())
         .def_readonly("fy", &PlanarCase::fyHz, "Hz")
         .def_readonly("ay_ratio", &PlanarCase::ayRatio)
-        .def_property_readonly("theta", [](const PlanarCase& c) { return c.slab.theta; })
-        .def_property_readonly("mu", [](const PlanarCase& c) { return c.slab.mu; })
-        .def_property_readonly("limit", [](const PlanarCase& c) { return c.slab.limit; })
-        .def_readonly("tstar", &PlanarCase::tstar)
+        .def_property_readonly("theta", [](const PlanarCase& c) { return c.theta; })
+        .def_property_readonly("mu", [](const PlanarCase& c) { return c.common.slab.mu; })
+        .def_property_readonly("limit", [](const PlanarCase& c) { return c.common.slab.limit; })
+        .def_property_readonly("tstar", [](const PlanarCase& c) { return c.common.tstar; })
         .def_property_readonly(
             "normalization", [](const PlanarCase& c) { return normalizationName(c.normalization); })
         .def_property_readonly("has_vertical",

@@ -20,9 +20,11 @@ AnalysisRequest requestFor(const py::handle& model) {
     AnalysisRequest q;
     if (py::isinstance<Slab1DCase>(model))
         q.slab = model.cast<Slab1DCase>();
-    else if (isPlanar(model))
-        q.planar = model.cast<PlanarCase>();
-    else
+    else if (isPlanar(model)) { // the 1-DOF case it holds and its own inputs
+        const PlanarCase c = model.cast<PlanarCase>();
+        q.slab = c.common;
+        q.planar = c.own();
+    } else
         badArgument("case: expected a SlabCase or a PlanarCase, got " +
                     py::repr(model).cast<std::string>());
     return q;

@@ -29,13 +29,14 @@ std::shared_ptr<const Excitation1D> verticalFromFile(const std::string& path, do
 PlanarCase planarCaseFrom(const Slab1DCase& common, const PlanarArguments& a) {
     if (common.solver == SolverKind::Paper)
         badArgument("solver='paper': the paper's RK4 solver is for the 1-DOF model only");
-    PlanarCase c = planarCaseSharing(common);
+    PlanarCase c;
+    c.common = common;
     c.ayRatio = keyword(kAyRatioInput, a.ayRatio);
     c.fyHz = keyword(kFyInput, a.fy);
-    c.slab.theta = keyword(kThetaInput, a.theta);
+    c.theta = keyword(kThetaInput, a.theta);
     c.normalization =
         *normalizationFromName(choice("normalization", a.normalization, "envelope|product"));
-    if (a.vertical) c.vertical = verticalFromFile(*a.vertical, c.tstar);
+    if (a.vertical) c.vertical = verticalFromFile(*a.vertical, c.common.tstar);
     refuse(checkPlanarCase(c));
     return c;
 }

@@ -4,6 +4,7 @@
 
 #include "core/slab/History.h"
 #include "core/slab/PlanarSolver.h"
+#include "core/slab/PointResult.h"
 #include "core/slab/SlabTypes.h"
 
 #include <pybind11/pybind11.h>
@@ -12,22 +13,17 @@
 
 namespace kinstab::python {
 
-struct SlabRun {
+// Each keeps where it ran (amplitude, frequency, tau_ref) as RunPoint.
+struct SlabRun : RunPoint {
     SlabResult result;
-    double tauRef = 1;
-    double amplitude = 0;
-    double frequency = 0;
     bool keepEvents = false;
     std::optional<History> history;
 };
 
-struct PlanarRun {
+struct PlanarRun : RunPoint {
     PlanarResult result;
     PlanarEventLog events; // when asked for
     PlanarPathLog path;    // when asked for
-    double tauRef = 1;
-    double amplitude = 0;
-    double frequency = 0;
 };
 
 // tau_c where the slab collapsed, NaN otherwise; gamma_c = tau_ref / tau_c, 0 otherwise (the

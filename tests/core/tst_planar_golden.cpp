@@ -59,7 +59,7 @@ PlanarCase caseFor(int vertical, double fy, bool tight) {
     c.fyHz = fy;
     if (vertical) {
         const Accelerogram up = readRecord(testing::kRecords + std::string(kRsn68UpFileName));
-        c.vertical = verticalMotion(up, c.tstar);
+        c.vertical = verticalMotion(up, c.common.tstar);
     }
     if (tight) {
         c.solver.relTol = 1e-13;

@@ -18,7 +18,7 @@ private slots:
     void stableRunsStayInside() {
         PlanarCase c;
         c.fyHz = 1.0;
-        const PlanarParams& p = c.slab;
+        const PlanarParams p = c.params();
         int stable = 0, collapsed = 0;
         for (int i = 0; i <= 12; ++i) {
             const double a = 0.8390 + 0.00005 * i;

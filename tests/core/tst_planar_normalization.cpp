@@ -56,7 +56,7 @@ void TestPlanarNormalization::componentPeaks() {
     QFETCH(double, f);
     PlanarCase c;
     double product = 0, envelope = 0;
-    sampledMaxima(c.envelope, f, c.tstar, product, envelope);
+    sampledMaxima(c.common.envelope, f, c.common.tstar, product, envelope);
     const double a = 0.8;
     QVERIFY(std::abs(peakOfAx(planarModel(c, a, f)) - a) < 1e-6);
     c.normalization = PlanarNormalization::Envelope;
@@ -78,13 +78,13 @@ void TestPlanarNormalization::alongWallExit() {
     c.normalization = static_cast<PlanarNormalization>(normalization);
     const PlanarResult below = runPlanar(c, 0.80, 2.0);
     QCOMPARE(below.slab.outcome, Outcome::Stable);
-    QVERIFY(below.maxAbsDeltaY < c.slab.theta);
+    QVERIFY(below.maxAbsDeltaY < c.theta);
     for (double ax : {0.85, 1.0, 1.15}) {
         const PlanarResult r = runPlanar(c, ax, 2.0);
         QCOMPARE(r.slab.outcome, Outcome::Collapsed);
         QCOMPARE(r.exitSide, ExitSide::Along);
-        QVERIFY(std::abs(std::abs(r.residualDeltaY) - c.slab.theta) < 1e-9);
-        QVERIFY(std::abs(r.slab.residualDelta) <= c.slab.limit);
+        QVERIFY(std::abs(std::abs(r.residualDeltaY) - c.theta) < 1e-9);
+        QVERIFY(std::abs(r.slab.residualDelta) <= c.common.slab.limit);
     }
 }
 

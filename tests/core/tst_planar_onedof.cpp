@@ -32,7 +32,7 @@ void TestPlanarOneDof::agreesWithExactSolver() {
     Slab1DCase one;
     one.envelope = Envelope::fromPreset(static_cast<EnvelopePreset>(preset));
     PlanarCase planar;
-    planar.envelope = one.envelope;
+    planar.common.envelope = one.envelope;
     planar.ayRatio = 0.0;
     int collapsed = 0, compared = 0;
     double worst = 0.0;

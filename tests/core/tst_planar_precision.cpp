@@ -31,7 +31,7 @@ void TestPlanarPrecision::toleranceBuysAccuracy() {
     PlanarPrecisionOptions o;
     o.repeats = 1;
     o.verticalUp = verticalMotion(readRecord(testing::kRecords + std::string(kRsn68UpFileName)),
-                                  PlanarCase{}.tstar);
+                                  PlanarCase{}.common.tstar);
     const PlanarPrecisionStudy s = runPlanarPrecisionStudy(o);
     QCOMPARE(s.cases.size(), std::size_t(3));
     QCOMPARE(s.rows.size(), 3 * planarPrecisionTolerances().size());

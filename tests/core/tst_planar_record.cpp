@@ -64,7 +64,7 @@ private slots:
         // At y's own peak sample a_y is y's peak times x's factor.
         const double factor = peak / std::abs(x.peak().value);
         const SignedPeak py = y.peak();
-        const double tauY = py.time / c.tstar;
+        const double tauY = py.time / c.common.tstar;
         QCOMPARE_LE(std::abs(model.accel(tauY).y - factor * py.value), 1e-12);
         const PlanarResult r = solvePlanar(model, c.solver);
         QCOMPARE_GT(r.maxAbsDeltaY, 0.0);

@@ -82,7 +82,7 @@ private slots:
         const Accelerogram rec = readRecord(kRecords + "RSN68_SFERN_PEL-UP.AT2");
         const PlanarCase c = [&] {
             PlanarCase x = slippingCase();
-            x.vertical = verticalMotion(rec, x.tstar);
+            x.vertical = verticalMotion(rec, x.common.tstar);
             return x;
         }();
         const SlabModel2D plain = planarModel(c, 0.9, 1.5);

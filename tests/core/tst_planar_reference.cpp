@@ -46,7 +46,8 @@ void TestPlanarReference::agreesWithMoreau() {
     QFETCH(int, side);
     PlanarCase c;
     c.fyHz = fy;
-    if (az > 0.0) c.vertical = std::make_shared<EnvelopedSine>(c.envelope, az, 3.0, c.tstar);
+    if (az > 0.0)
+        c.vertical = std::make_shared<EnvelopedSine>(c.common.envelope, az, 3.0, c.common.tstar);
     const PlanarResult p = runPlanar(c, ax, fx);
     PlanarCase tight = c;
     tight.solver.relTol = 1e-13;
@@ -74,7 +75,7 @@ void TestPlanarReference::agreesWithMoreau() {
 void TestPlanarReference::liftOffIsReported() {
     PlanarCase c;
     c.fyHz = 0.5;
-    auto vertical = std::make_shared<EnvelopedSine>(c.envelope, 1.2, 3.0, c.tstar);
+    auto vertical = std::make_shared<EnvelopedSine>(c.common.envelope, 1.2, 3.0, c.common.tstar);
     c.vertical = vertical;
     // First tau where a_z falls through -1: from the sine's own per-half-period brackets.
     double expected = NAN;

@@ -143,9 +143,9 @@ private slots:
         const PlanarCase c = planarCaseFrom(p.slab, p.planar, nullptr);
         QCOMPARE(c.fyHz, 5.0);
         QCOMPARE(c.ayRatio, 0.3);
-        QCOMPARE(c.slab.theta, 8.0);
-        QCOMPARE(c.slab.mu, p.slab.slab.mu);
-        QCOMPARE(c.tstar, p.slab.tstar);
+        QCOMPARE(c.theta, 8.0);
+        QCOMPARE(c.common.slab.mu, p.slab.slab.mu);
+        QCOMPARE(c.common.tstar, p.slab.tstar);
         QCOMPARE(c.tauRef(), p.slab.tauRef());
         QVERIFY(!c.vertical);
         p.planar.fyHz = -1;

@@ -119,7 +119,7 @@ private slots:
         }
         QVERIFY2(st.err <= 1.0, qPrintable(QString("error norm %1").arg(st.err)));
         // Beyond DOP853's stability bound (h mu n / |u| about 6): the reason for the method.
-        const double stiffness = h * c.slab.mu * m.normal(t0) / rho0;
+        const double stiffness = h * c.common.slab.mu * m.normal(t0) / rho0;
         QVERIFY2(stiffness > 6.0, qPrintable(QString("h mu n / |u| = %1").arg(stiffness)));
         const Vec4 y = reference(t0, y0, h, 20000);
         // The tolerance the estimate is held to (RADAU5's rtol' = 0.1 rtol^(2/3) and

@@ -22,17 +22,13 @@ Slab1DCase TeachingParams::toCase() const {
     return c;
 }
 
+// The 1-DOF case and the planar inputs Teaching sets (no vertical motion).
 PlanarCase TeachingParams::toPlanarCase() const {
-    PlanarCase c;
-    c.envelope = Envelope::fromPreset(envelope);
-    c.tstar = tstar();
-    c.slab.mu = mu;
-    c.slab.limit = limit;
-    c.slab.theta = theta;
-    c.ayRatio = ayRatio;
-    c.fyHz = fyHz;
-    c.scale = scale;
-    return c;
+    PlanarInputs own;
+    own.theta = theta;
+    own.ayRatio = ayRatio;
+    own.fyHz = fyHz;
+    return PlanarCase(toCase(), own);
 }
 
 TeachingParams teachingParamsOf(const Slab1DCase& c, const std::optional<PlanarCase>& planar,
@@ -54,7 +50,7 @@ TeachingParams teachingParamsOf(const Slab1DCase& c, const std::optional<PlanarC
     if (planar) {
         base.fyHz = planar->fyHz;
         base.ayRatio = planar->ayRatio;
-        base.theta = planar->slab.theta;
+        base.theta = planar->theta;
         if (planar->vertical)
             missing += std::string(missing.empty() ? "" : "; ") +
                        "the vertical motion: Teaching's planar slab has gravity only";
@@ -144,8 +140,9 @@ void TeachingRun::runPlanar(const TeachingParams& p) {
     const PlanarCase c = p.toPlanarCase();
     tauRef_ = c.tauRef();
     // The product normalization (PlanarCase's default): each component peaks at its amplitude.
-    accel_ = std::make_unique<EnvelopedSine>(c.envelope, p.amplitude, p.frequencyHz, c.tstar);
-    accelY_ = std::make_unique<EnvelopedSine>(c.envelope, p.ayRatio * p.amplitude, p.fyHz, c.tstar);
+    const Slab1DCase& k = c.common;
+    accel_ = std::make_unique<EnvelopedSine>(k.envelope, p.amplitude, p.frequencyHz, k.tstar);
+    accelY_ = std::make_unique<EnvelopedSine>(k.envelope, p.ayRatio * p.amplitude, p.fyHz, k.tstar);
     PlanarEventLog events;
     PlanarPathLog path;
     PlanarRecorderPair both(&events, &path);
