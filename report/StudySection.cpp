@@ -155,8 +155,12 @@ void fragilityTable(ReportDocument& doc, const std::vector<Fragility>& sets) {
             {}};
     for (const Fragility& f : sets) {
         const StudyRow& r = f.parameters;
-        t.rows.push_back({QString::number(r.set + 1), num(r.mu, 3), num(r.tstar, 3),
-                          qs(studyDriverText(r)),
+        // A block set: its block's mu (— when the base holds it) and no t*.
+        const QString mu = !r.block      ? num(r.mu, 3)
+                           : r.block->mu ? num(*r.block->mu, 3)
+                                         : QStringLiteral("—");
+        const QString tstar = r.block ? QStringLiteral("—") : num(r.tstar, 3);
+        t.rows.push_back({QString::number(r.set + 1), mu, tstar, qs(studyDriverText(r)),
                           QStringLiteral("%1 of %2").arg(f.collapsed).arg(f.records), medianCell(f),
                           bounds(f.medianLower, f.medianUpper, 3, f.searchTop),
                           f.fit ? num(f.fit->beta, 3) + (f.betaAtBound ? " (at bound)" : "")
@@ -231,14 +235,18 @@ void fragilityFigures(ReportDocument& doc, const std::vector<Fragility>& sets,
         if (!f.fit) continue;
         const CurvePlot plot = fragilityPlot(f, xhi, measure);
         const std::vector<FragilityPoint> points = f.points;
+        const QString of = f.parameters.block
+                               ? QStringLiteral("Overturning fragility of set %1 (block %2)")
+                                     .arg(f.parameters.set + 1)
+                                     .arg(qs(studyBlockText(*f.parameters.block)))
+                               : QStringLiteral("Collapse fragility of set %1 (μ = %2, t* = %3 s)")
+                                     .arg(f.parameters.set + 1)
+                                     .arg(num(f.parameters.mu, 3), num(f.parameters.tstar, 3));
         doc.addFigure(
             {[plot, points](QPainter& pa, const QRectF& a) { paintFragility(pa, a, plot, points); },
              0.42,
-             QStringLiteral("Collapse fragility of set %1 (μ = %2, t* = %3 s): the "
-                            "fitted lognormal curve, its bootstrap bounds and the "
-                            "records' critical intensities (points).")
-                 .arg(f.parameters.set + 1)
-                 .arg(num(f.parameters.mu, 3), num(f.parameters.tstar, 3))});
+             of + QStringLiteral(": the fitted lognormal curve, its bootstrap bounds and the "
+                                 "records' critical intensities (points).")});
     }
 }
 
@@ -251,13 +259,21 @@ void addStudySection(ReportDocument& doc, const Project& p, const ReportAnalysis
     const BootstrapSettings boot; // the defaults of `kinstab-cli fragility`
     const std::vector<Fragility> sets = studyFragility(rows, boot);
     const QString measure = measureLabel(spec.intensity);
-    doc.addSection(QStringLiteral("Study: collapse fragility over a record suite"));
+    // A block study (docs/studies.md, "A block instead of the slab") asks for overturning.
+    const QString model =
+        spec.block
+            ? QStringLiteral("the block (%1) overturns; a record that does not overturn it")
+                  .arg(qs(studyBlockText(*spec.block)))
+            : QStringLiteral("the slab slides off; a record that does not collapse the slab");
+    doc.addSection(
+        spec.block ? QStringLiteral("Study: overturning fragility of a block over a record suite")
+                   : QStringLiteral("Study: collapse fragility over a record suite"));
     doc.addParagraph(
         QStringLiteral(
             "The study %1 (file %2) runs each of its %3 records for each of its %4 parameter "
-            "sets and finds the smallest intensity (%5) of the scaled record at which the slab "
-            "slides off; a record that does not collapse the slab up to the search limit counts "
-            "as censored there. %6 Per parameter set the critical intensities are fitted by a "
+            "sets and finds the smallest intensity (%5) of the scaled record at which %10 up to "
+            "the search limit counts as censored there. %6 Per parameter set the critical "
+            "intensities are fitted by a "
             "lognormal fragility (median and dispersion β by maximum likelihood), with %7 % "
             "bounds from %8 bootstrap resamples over the records (seed %9).")
             .arg(qs(spec.name), QFileInfo(qs(p.study->spec)).fileName())
@@ -269,7 +285,8 @@ void addStudySection(ReportDocument& doc, const Project& p, const ReportAnalysis
                                     .arg(QFileInfo(qs(p.study->results)).fileName()))
             .arg(num(100 * boot.level, 0))
             .arg(boot.resamples)
-            .arg(boot.seed));
+            .arg(boot.seed)
+            .arg(model));
     doc.addHeading(QStringLiteral("Records"), 2);
     recordTable(doc, rows);
     doc.addHeading(QStringLiteral("Fragility per parameter set"), 2);

@@ -242,6 +242,10 @@ const char* kRocking =
     "  --max-amplitude G            largest amplitude (record: peak) searched, g [5]\n"
     "  --scan-points N              amplitudes scanned before bisection [200]\n"
     "  --tolerance T                relative tolerance of each interval end [1e-4]\n"
+    "  --refine-depth D             halve a gap between standing amplitudes where one rocked\n"
+    "                               past 0.5 alpha, down to a scan step / 2^D [6]\n"
+    "  --max-runs N                 runs of the whole search at most [5000]; reaching it is\n"
+    "                               said on stderr and critical_run_limit_reached: true\n"
     "  --history FILE.csv           write t, theta, theta/alpha, omega, sliding, mode, a_h\n"
     "  --history-step S             its sample step, s [0.01]\n" KINSTAB_RECORD_FLAGS;
 

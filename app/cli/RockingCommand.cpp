@@ -171,10 +171,9 @@ std::string historyCsv(const std::vector<RockingSample>& h, const BaseMotion& mo
     return s.str();
 }
 
-nlohmann::json criticalJson(const RockingModel& m, const RockingExcitation& e, const Args& args) {
-    if (!e.family)
-        throw UsageError("--critical: needs an excitation to scale (--pulse, "
-                         "--frequency or --record)");
+// The search's settings from the flags: the scan, the refinement near overturning and the run
+// budget (core/rocking/OverturningAmplitude.h).
+OverturningSearch searchFromFlags(const Args& args) {
     OverturningSearch s;
     s.maxAmplitude = args.number("max-amplitude", 5.0);
     if (!(s.maxAmplitude > 0.0 && s.maxAmplitude <= limits::kMaxAmplitudeG))
@@ -186,7 +185,26 @@ nlohmann::json criticalJson(const RockingModel& m, const RockingExcitation& e, c
     s.tolerance = args.number("tolerance", 1e-4);
     if (!(s.tolerance >= 1e-12 && s.tolerance <= 0.1))
         throw UsageError("--tolerance " + args.text("tolerance") + ": must be 1e-12 to 0.1");
+    s.refineDepth = args.integer("refine-depth", kOverturningRefineDepth);
+    if (s.refineDepth < 0 || s.refineDepth > 20)
+        throw UsageError("--refine-depth " + args.text("refine-depth") + ": must be 0 to 20");
+    s.maxRuns = args.integer("max-runs", static_cast<int>(kOverturningMaxRuns));
+    if (s.maxRuns < 10 || s.maxRuns > 10000000)
+        throw UsageError("--max-runs " + args.text("max-runs") + ": must be 10 to 10000000");
+    return s;
+}
+
+nlohmann::json criticalJson(const RockingModel& m, const RockingExcitation& e, const Args& args) {
+    if (!e.family)
+        throw UsageError("--critical: needs an excitation to scale (--pulse, "
+                         "--frequency or --record)");
+    const OverturningSearch s = searchFromFlags(args);
     const OverturningIntervals iv = overturningIntervals(m, e.family, s);
+    if (iv.runLimitReached)
+        std::fprintf(stderr,
+                     "kinstab-cli rocking: --critical stopped at its limit of %ld runs "
+                     "(--max-runs): gaps near overturning were not all refined or bisected\n",
+                     s.maxRuns);
     nlohmann::json intervals = nlohmann::json::array();
     for (const auto& [from, to] : iv.intervals)
         intervals.push_back({from, to});
@@ -196,7 +214,10 @@ nlohmann::json criticalJson(const RockingModel& m, const RockingExcitation& e, c
             {"max_amplitude_g", s.maxAmplitude},
             {"scan_points", s.scanPoints},
             {"tolerance", s.tolerance},
-            {"critical_runs", iv.runs}};
+            {"refine_depth", s.refineDepth},
+            {"max_runs", s.maxRuns},
+            {"critical_runs", iv.runs},
+            {"critical_run_limit_reached", iv.runLimitReached}};
 }
 
 } // namespace
@@ -204,15 +225,15 @@ nlohmann::json criticalJson(const RockingModel& m, const RockingExcitation& e, c
 int runRocking(const ArgList& argv) {
     std::set<std::string> flags = rockingModelFlagNames();
     flags.merge(recordReadFlagNames());
-    flags.insert({"pulse",       "pulse-frequency", "pulse-duration", "amplitude",
-                  "frequency",   "envelope",        "alpha",          "beta",
-                  "record",      "scale-factor",    "floor-period",   "damping",
-                  "vertical",    "project",         "level",          "max-amplitude",
-                  "scan-points", "tolerance",       "history",        "history-step"});
+    flags.insert({"pulse",         "pulse-frequency", "pulse-duration", "amplitude", "frequency",
+                  "envelope",      "alpha",           "beta",           "record",    "scale-factor",
+                  "floor-period",  "damping",         "vertical",       "project",   "level",
+                  "max-amplitude", "scan-points",     "tolerance",      "history",   "history-step",
+                  "refine-depth",  "max-runs"});
     const Args args(argv, flags, {"linear", "critical"});
     const RockingModel m = rockingModelFromFlags(args);
     if (args.has("history")) checkOutputPath("history", args.text("history"));
-    for (const char* f : {"max-amplitude", "scan-points", "tolerance"})
+    for (const char* f : {"max-amplitude", "scan-points", "tolerance", "refine-depth", "max-runs"})
         if (args.has(f) && !args.has("critical"))
             throw UsageError(std::string("--") + f + " " + args.text(f) + ": needs --critical");
     const auto start = std::chrono::steady_clock::now();

@@ -10,6 +10,7 @@
 #include "core/io/CodesJson.h"
 #include "core/io/FloorsJson.h"
 #include "core/io/JsonReader.h"
+#include "core/io/StudyBlockJson.h"
 #include "core/slab/Slab1DCase.h"
 #include "core/slab/SlabInputs.h"
 #include "core/study/StudyCase.h"
@@ -353,6 +354,8 @@ StudySpec studyFromJsonText(const std::string& text, const std::string& baseDir)
         readRecords(top, baseDir, s);
         s.intensity = readIntensity(top);
         readBuilding(top, s);
+        s.block = studyBlockFromJson(top);
+        if (s.block) refuseSlabParameters(top);
         readParameters(top, s);
         readSearch(top, s);
         readPolarity(top, s);

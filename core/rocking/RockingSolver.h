@@ -51,6 +51,10 @@ struct RockingRunOptions {
     // duration, free rocking that cannot overturn (the map and the critical searches need no
     // more).
     bool stopAtOverturnDecision = false;
+    // With stopAtOverturnDecision: a block whose overturning free rocking decides is still
+    // followed to |theta| = pi/2 (its impacts on the way counted: the overturning searches tell
+    // the branches of overturning apart by them).
+    bool followOverturn = false;
 };
 
 // One run. Throws std::invalid_argument for a model checkRockingModel refuses, and

@@ -86,12 +86,16 @@ std::string cell(const std::optional<double>& v) {
 } // namespace
 
 ojson fragilityParametersJson(const StudyRow& p) {
-    ojson j = {{"set", p.set},
-               {"mu", p.mu},
-               {"tstar", p.tstar},
-               {"limit", p.limit},
-               {"floor_period_s", finiteOrNull<ojson>(p.floorPeriod)},
-               {"floor_damping", finiteOrNull<ojson>(p.floorDamping)}};
+    ojson j = {{"set", p.set}};
+    if (p.block) {
+        j["block"] = studyBlockJson(*p.block);
+    } else {
+        j["mu"] = p.mu;
+        j["tstar"] = p.tstar;
+        j["limit"] = p.limit;
+    }
+    j["floor_period_s"] = finiteOrNull<ojson>(p.floorPeriod);
+    j["floor_damping"] = finiteOrNull<ojson>(p.floorDamping);
     if (p.level) j["level"] = *p.level;
     if (p.motion) j["motion"] = *p.motion;
     return j;
@@ -111,13 +115,14 @@ namespace {
 // The columns a study adds when it uses levels, motions or record scales (older studies keep
 // their bytes): which of them the sets carry.
 struct ExtraColumns {
-    bool level = false, motion = false, asGiven = false, flags = false;
+    bool level = false, motion = false, asGiven = false, flags = false, block = false;
 };
 
 ExtraColumns extraColumns(const std::vector<Fragility>& sets) {
     ExtraColumns x;
     for (const Fragility& f : sets) {
         x.level = x.level || f.parameters.level.has_value();
+        x.block = x.block || f.parameters.block.has_value();
         x.motion = x.motion || f.parameters.motion.has_value();
         x.asGiven = x.asGiven || f.collapsedAsGiven.has_value();
         x.flags = x.flags || f.medianBeyondSearch || f.betaAtBound;
@@ -128,7 +133,7 @@ ExtraColumns extraColumns(const std::vector<Fragility>& sets) {
 std::string extraHeader(const ExtraColumns& x) {
     return std::string(x.level ? ",level" : "") + (x.motion ? ",motion" : "") +
            (x.asGiven ? ",collapsed_as_given_fraction" : "") +
-           (x.flags ? ",median_beyond_search,beta_at_bound" : "");
+           (x.flags ? ",median_beyond_search,beta_at_bound" : "") + (x.block ? ",block" : "");
 }
 
 std::string extraCells(const ExtraColumns& x, const Fragility& f) {
@@ -140,6 +145,7 @@ std::string extraCells(const ExtraColumns& x, const Fragility& f) {
     if (x.flags)
         out += std::string(f.medianBeyondSearch ? ",true" : ",false") +
                (f.betaAtBound ? ",true" : ",false");
+    if (x.block) out += "," + textCell(p.block ? studyBlockText(*p.block) : std::string());
     return out;
 }
 
@@ -153,10 +159,12 @@ std::string fragilityCsv(const std::vector<Fragility>& sets) {
     for (const Fragility& f : sets) {
         const StudyRow& p = f.parameters;
         auto opt = [](bool has, double v) { return has ? std::optional(v) : std::nullopt; };
-        out += std::to_string(p.set) + "," + formatDouble(p.mu) + "," + formatDouble(p.tstar) +
-               "," + formatDouble(p.limit) + "," + cell(p.floorPeriod) + "," +
-               cell(p.floorDamping) + "," + textCell(p.measure) + "," + std::to_string(f.records) +
-               "," + std::to_string(f.collapsed) + "," +
+        // A block set has no slab: its mu, tstar and limit cells are empty (its block column).
+        auto slab = [&p](double v) { return p.block ? std::string() : formatDouble(v); };
+        out += std::to_string(p.set) + "," + slab(p.mu) + "," + slab(p.tstar) + "," +
+               slab(p.limit) + "," + cell(p.floorPeriod) + "," + cell(p.floorDamping) + "," +
+               textCell(p.measure) + "," + std::to_string(f.records) + "," +
+               std::to_string(f.collapsed) + "," +
                cell(opt(f.fit.has_value(), f.fit ? f.fit->median : 0)) + "," +
                cell(opt(f.fit.has_value(), f.fit ? f.fit->beta : 0)) + "," + cell(f.medianLower) +
                "," + cell(f.medianUpper) + "," + cell(f.betaLower) + "," + cell(f.betaUpper) +

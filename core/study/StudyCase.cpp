@@ -57,9 +57,13 @@ StudyRow studyRowInputs(const StudySpec& s, const StudyCase& c) {
     row.study = s.fingerprint;
     row.set = c.set;
     row.record = c.record->label;
-    row.mu = c.mu;
-    row.tstar = c.tstar;
-    row.limit = s.limit;
+    if (s.block) {
+        row.block = s.block;
+    } else {
+        row.mu = c.mu;
+        row.tstar = c.tstar;
+        row.limit = s.limit;
+    }
     if (c.floor) {
         row.floorPeriod = c.floor->period;
         row.floorDamping = c.floor->damping;

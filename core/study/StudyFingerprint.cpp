@@ -60,6 +60,7 @@ std::string canonicalText(const StudySpec& s) {
     t += "as_given " + std::string(s.asGiven ? "yes" : "no") + "\n";
     // Only a study of both polarities says so: older studies keep their fingerprints.
     if (s.bothPolarities) t += "polarity both\n";
+    if (s.block) t += "block " + studyBlockText(*s.block) + "\n";
     for (const StudyRecord& r : s.records) {
         if (r.sha256.empty()) throw std::logic_error("study fingerprint: records not read");
         t += "record " + r.sha256 + " " + formatDouble(r.scale) + "\n";

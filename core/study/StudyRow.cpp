@@ -92,12 +92,16 @@ std::string studyRowLine(const StudyRow& r) {
                {"cases", r.cases},
                {"study", r.study},
                {"set", r.set},
-               {"record", r.record},
-               {"mu", r.mu},
-               {"tstar", r.tstar},
-               {"limit", r.limit},
-               {"floor_period_s", orNull<ojson>(r.floorPeriod)},
-               {"floor_damping", orNull<ojson>(r.floorDamping)}};
+               {"record", r.record}};
+    if (r.block) {
+        j["block"] = studyBlockJson(*r.block);
+    } else {
+        j["mu"] = r.mu;
+        j["tstar"] = r.tstar;
+        j["limit"] = r.limit;
+    }
+    j["floor_period_s"] = orNull<ojson>(r.floorPeriod);
+    j["floor_damping"] = orNull<ojson>(r.floorDamping);
     if (r.level) j["level"] = *r.level;
     if (r.motion) j["motion"] = *r.motion;
     if (r.polarity) j["polarity"] = *r.polarity;
@@ -116,6 +120,7 @@ std::string studyRowLine(const StudyRow& r) {
     }
     if (!r.noFit.empty()) j["no_fit"] = r.noFit;
     j["runs"] = r.runs;
+    if (r.runLimitReached) j["run_limit_reached"] = true;
     return j.dump();
 }
 
@@ -135,9 +140,17 @@ void parseInputs(const nlohmann::json& j, StudyRow& r) {
     if (r.set > r.index) throw StudyRowError("\"set\": above \"case\"");
     r.record = text(j, "record");
     if (r.record.empty()) throw StudyRowError("\"record\": empty");
-    r.mu = positive(j, "mu");
-    r.tstar = positive(j, "tstar");
-    r.limit = positive(j, "limit");
+    if (j.contains("block")) {
+        try {
+            r.block = studyBlockFromRowJson(j["block"]);
+        } catch (const std::invalid_argument& e) {
+            throw StudyRowError(e.what());
+        }
+    } else {
+        r.mu = positive(j, "mu");
+        r.tstar = positive(j, "tstar");
+        r.limit = positive(j, "limit");
+    }
     std::tie(r.floorPeriod, r.floorDamping) =
         optionalPositivePair(j, "floor_period_s", "floor_damping");
     r.measure = text(j, "measure");
@@ -167,6 +180,11 @@ void parseResult(const nlohmann::json& j, StudyRow& r) {
         throw StudyRowError("\"critical_im_g\" = " + formatDouble(*r.criticalIntensity) +
                             ": above \"limit_im_g\" = " + formatDouble(r.limitIntensity));
     r.runs = static_cast<long>(count(j, "runs"));
+    if (j.contains("run_limit_reached")) {
+        if (!j["run_limit_reached"].is_boolean())
+            throw StudyRowError("\"run_limit_reached\": expected true or false");
+        r.runLimitReached = j["run_limit_reached"].get<bool>();
+    }
     r.noFit = optionalText(j, "no_fit").value_or("");
     r.scale = optionalPositive(j, "scale");
     if (!r.scale) return;

@@ -4,6 +4,8 @@
 // which the scaled record first collapses the slab, or none up to the search limit (then the
 // record is censored at the limit's intensity). No timing: a rerun writes the same bytes.
 
+#include "core/study/StudyBlock.h"
+
 #include <cstddef>
 #include <optional>
 #include <stdexcept>
@@ -32,6 +34,10 @@ struct StudyRow {
     double imAsGiven = 0;                // g, scale x recordIntensity
     bool collapsesAsGiven = false;       // criticalIntensity <= imAsGiven
     std::optional<double> margin;        // criticalIntensity / imAsGiven
+    // A block study's rows: the block instead of mu, tstar and limit (0 then), and whether its
+    // search stopped at its run limit (written only when it did).
+    std::optional<StudyBlock> block;
+    bool runLimitReached = false;
 };
 
 struct StudyRowError : std::runtime_error {

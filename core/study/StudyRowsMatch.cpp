@@ -44,6 +44,10 @@ std::string caseMismatch(const StudySpec& s, const std::string& dir, const Study
     const StudyRow want = studyRowInputs(s, c); // what a run of the case writes
     if (rowFile(r.record, dir) != fs::path(c.record->file).lexically_normal())
         return "record " + r.record + ", the study file says " + want.record;
+    if (r.block != want.block)
+        return "block " + (r.block ? studyBlockText(*r.block) : std::string("none")) +
+               ", the study file says " +
+               (want.block ? studyBlockText(*want.block) : std::string("none"));
     if (!same(r.mu, want.mu))
         return "mu = " + text(r.mu) + ", the study file says " + text(want.mu);
     if (!same(r.tstar, want.tstar))

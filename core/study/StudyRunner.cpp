@@ -49,6 +49,22 @@ void addAsGiven(const StudyRecord& record, StudyRow& row) {
     row.margin = *row.criticalIntensity / row.imAsGiven;
 }
 
+// The case's critical peak of the driving motion: the block's overturning, or the slab's
+// collapse.
+CaseCritical criticalOf(const StudySpec& s, const StudyCase& c, const Accelerogram& motion,
+                        bool& runLimitReached) {
+    if (s.block) {
+        const BlockCaseCritical b = blockCaseCritical(*s.block, motion, s.search);
+        runLimitReached = b.runLimitReached;
+        return {b.peak, b.unitPeak, b.runs, {}};
+    }
+    Slab1DCase slab;
+    slab.tstar = c.tstar;
+    slab.slab.mu = c.mu;
+    slab.slab.limit = s.limit;
+    return caseCritical(slab, motion, c.motion, s.search);
+}
+
 } // namespace
 
 Accelerogram caseGround(const Accelerogram& record, bool inverted) {
@@ -63,11 +79,8 @@ StudyRow runStudyCase(const StudySpec& s, const StudyCase& c) {
     if (!c.record->ground) throw std::logic_error("runStudyCase: the records were not read");
     const Accelerogram ground = caseGround(*c.record->ground, c.inverted);
     const Accelerogram motion = caseMotion(s, c, ground);
-    Slab1DCase slab;
-    slab.tstar = c.tstar;
-    slab.slab.mu = c.mu;
-    slab.slab.limit = s.limit;
-    const CaseCritical crit = caseCritical(slab, motion, c.motion, s.search);
+    bool runLimitReached = false;
+    const CaseCritical crit = criticalOf(s, c, motion, runLimitReached);
     // The record is linear in its scale, and so are the floor filter and the building: the
     // intensity at a scale is the unscaled intensity times (scaled peak / unscaled peak) of the
     // driving motion (of its surrogate's envelope, for the fitted sine).
@@ -81,6 +94,7 @@ StudyRow runStudyCase(const StudySpec& s, const StudyCase& c) {
     row.limitIntensity = s.search.to * perPeak;
     row.runs = crit.runs;
     row.noFit = crit.noFit;
+    row.runLimitReached = runLimitReached;
     if (s.asGiven) addAsGiven(*c.record, row);
     return row;
 }

@@ -9,6 +9,7 @@
 #include "core/building/ModalModel.h"
 #include "core/codes/Building.h"
 #include "core/records/Accelerogram.h"
+#include "core/study/StudyBlock.h"
 #include "core/sweep/CriticalAmplitude.h"
 
 #include <cstddef>
@@ -100,6 +101,10 @@ struct StudySpec {
     // polarity. "normal" (the default) runs each record once, as older study files did.
     bool bothPolarities = false;
     double limit = 1.0; // slab.limit, bearing length / (d/2)
+    // A free-standing block instead of the slab (core/study/StudyBlock.h): each case asks for
+    // the scale at which it overturns; mu, tstar, limit and motion are then the slab's unused
+    // defaults (the study file refuses them).
+    std::optional<StudyBlock> block;
     CriticalSearch search;
     std::string fingerprint; // once the records are read (core/study/StudyFingerprint.h)
 };

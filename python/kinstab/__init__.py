@@ -487,7 +487,9 @@ def rocking_critical(
     """The amplitudes (g; a record: its peak) that overturn the block under a pulse shape or a
     record, as ``kinstab-cli rocking --critical``: ``critical_amplitude_g`` (None when nothing
     up to ``max_amplitude`` overturns) and ``overturning_intervals_g`` [(from, to), ...], where
-    a gap above the first interval is a safe cape (Zhang & Makris 2001)."""
+    a gap above the first interval is a safe cape (Zhang & Makris 2001). The search refines
+    near overturning as the command does (docs/theory.md §10.7) and stops at 5000 runs
+    (``critical_run_limit_reached``)."""
     return _core._rocking_critical(
         half_width, half_height, restitution, linear, mu, pulse, _record_of(record),
         pulse_frequency, pulse_duration, max_amplitude, scan_points, tolerance)

@@ -166,6 +166,8 @@ py::dict rockingCritical(double halfWidth, double halfHeight, Opt restitution, b
     s.maxAmplitude = maxAmplitude;
     s.scanPoints = scanPoints;
     s.tolerance = tolerance;
+    s.refineDepth = kOverturningRefineDepth; // as kinstab-cli rocking --critical
+    s.maxRuns = kOverturningMaxRuns;
     SweepControl control;
     OverturningIntervals iv;
     if (!runWatchingSignals(control, [&] { iv = overturningIntervals(m, e.family, s, &control); }))
@@ -179,6 +181,7 @@ py::dict rockingCritical(double halfWidth, double halfHeight, Opt restitution, b
     d["overturning_intervals_g"] = intervals;
     d["max_amplitude_g"] = maxAmplitude;
     d["critical_runs"] = iv.runs;
+    d["critical_run_limit_reached"] = iv.runLimitReached;
     return d;
 }
 

@@ -114,6 +114,69 @@ private slots:
         QCOMPARE(iv[1].toArray()[1].toDouble(), 2.5);
         QCOMPARE(j["outcome"].toString(), QString("rocks")); // 2 alpha g: below the first interval
     }
+    void thinStandingGapsFound() {
+        // Zhang & Makris 2001's block (alpha 0.25, p 2.14 rad/s), linearised, eta 0.9, one-cosine
+        // pulse of omega_p / p = 1.5, amplitudes up to 5 g: overturning from 1.172 alpha g with
+        // two standing gaps about 0.01 alpha g wide (1.2246-1.2341 and 1.2837-1.2979 alpha g) and
+        // the safe cape from 2.993 to 3.300 alpha g. The reference is a brute-force scan of
+        // 20,000 amplitudes (a step of 1e-3 alpha g, a tenth of the gaps), each change bisected;
+        // the default 200-point scan (step 0.1 alpha g) without refinement misses both gaps.
+        const QStringList run = QStringList{"rocking"} + zhangMakrisBlock() +
+                                QStringList{"--linear",
+                                            "--restitution",
+                                            "0.9",
+                                            "--pulse",
+                                            "one-cosine",
+                                            "--pulse-frequency",
+                                            num(1.5 * 2.14 / (2 * std::numbers::pi)),
+                                            "--amplitude",
+                                            "0.5",
+                                            "--critical"};
+        const Run fine = cli(run + QStringList{"--scan-points", "20000", "--refine-depth", "0",
+                                               "--max-runs", "100000"});
+        const Run coarse = cli(run + QStringList{"--refine-depth", "0"});
+        const Run refined = cli(run);
+        QCOMPARE(fine.code, 0);
+        QCOMPARE(coarse.code, 0);
+        QCOMPARE(refined.code, 0);
+        const QJsonArray want = json(fine)["overturning_intervals_g"].toArray();
+        QCOMPARE(want.size(), 4);
+        QCOMPARE(json(fine)["critical_run_limit_reached"].toBool(), false);
+        QCOMPARE(json(coarse)["overturning_intervals_g"].toArray().size(), 2);
+        const QJsonObject j = json(refined);
+        const QJsonArray got = j["overturning_intervals_g"].toArray();
+        QCOMPARE(got.size(), want.size());
+        double previous = 0.0;
+        for (int i = 0; i < got.size(); ++i) {
+            const double from = got[i].toArray()[0].toDouble();
+            const double to = got[i].toArray()[1].toDouble();
+            QVERIFY(previous < from && from < to); // increasing, disjoint, each non-empty
+            previous = to;
+            // Both bisected to 1e-4 relative: the ends agree to twice that.
+            QVERIFY(std::abs(from - want[i].toArray()[0].toDouble()) < 2e-4 * from);
+            QVERIFY(std::abs(to - want[i].toArray()[1].toDouble()) < 2e-4 * to);
+        }
+        QCOMPARE(got.last().toArray()[1].toDouble(), 5.0); // open to the maximum
+        QCOMPARE(j["critical_amplitude_g"].toDouble(), got[0].toArray()[0].toDouble());
+        QVERIFY(std::abs(j["critical_amplitude_g"].toDouble() / 0.25 - 1.1721) < 1e-3);
+        QCOMPARE(j["critical_run_limit_reached"].toBool(), false);
+        QVERIFY(j["critical_runs"].toInt() < 1000); // against about 20,000 for the brute force
+    }
+    void runLimitIsSaid() {
+        const Run r = cli(QStringList{"rocking"} + zhangMakrisBlock() +
+                          QStringList{"--linear", "--restitution", "0.9", "--pulse", "one-cosine",
+                                      "--pulse-frequency", num(1.5 * 2.14 / (2 * std::numbers::pi)),
+                                      "--amplitude", "0.5", "--critical", "--max-runs", "210"});
+        QCOMPARE(r.code, 0);
+        const QJsonObject j = json(r);
+        QCOMPARE(j["critical_run_limit_reached"].toBool(), true);
+        QCOMPARE(j["critical_runs"].toInt(), 210);
+        QVERIFY(r.err.contains("--max-runs"));
+        const QJsonArray iv = j["overturning_intervals_g"].toArray();
+        QVERIFY(!iv.isEmpty());
+        for (int i = 1; i < iv.size(); ++i)
+            QVERIFY(iv[i - 1].toArray()[1].toDouble() < iv[i].toArray()[0].toDouble());
+    }
     void nothingOverturnsGivesNull() {
         const Run r = cli({"rocking", "--half-width", "0.2", "--half-height", "0.6", "--pulse",
                            "half-sine", "--pulse-frequency", "20", "--amplitude", "0.2",
@@ -195,6 +258,13 @@ private slots:
         QTest::newRow("max amplitude")
             << (block + pulse + QStringList{"--critical", "--max-amplitude", "-1"})
             << "--max-amplitude -1";
+        QTest::newRow("refine depth")
+            << (block + pulse + QStringList{"--critical", "--refine-depth", "21"})
+            << "--refine-depth 21";
+        QTest::newRow("max runs") << (block + pulse + QStringList{"--critical", "--max-runs", "9"})
+                                  << "--max-runs 9";
+        QTest::newRow("max runs without critical")
+            << (block + pulse + QStringList{"--max-runs", "100"}) << "--max-runs 100";
         QTest::newRow("duration") << (block + pulse + QStringList{"--duration", "0"})
                                   << "--duration 0";
         QTest::newRow("missing record")

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/study/StudyBlock.h"
+
+#include "core/base/TextInput.h"
+#include "core/rocking/RockingMotions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace kinstab {
+
+RockingModel studyBlockModel(const StudyBlock& b) {
+    RockingModel m;
+    m.block = b.block;
+    m.mu = b.mu;
+    m.restitution = b.restitution;
+    m.equations = b.linear ? RockingEquations::Linearised : RockingEquations::Exact;
+    return m;
+}
+
+// The scan step of the slab's search, as the project's block checks take it
+// (core/assessment/BlockCheck.cpp); its absolute tolerance relative to the limit, within the
+// range kinstab-cli rocking --tolerance accepts.
+OverturningSearch studyBlockSearch(const CriticalSearch& search) {
+    OverturningSearch s;
+    s.maxAmplitude = search.to;
+    const double points = std::ceil(search.to / search.scanStep - 1e-9);
+    s.scanPoints = static_cast<int>(std::clamp(points, 2.0, 100000.0));
+    s.tolerance = std::clamp(search.tolerance / search.to, 1e-12, 0.1);
+    s.refineDepth = kOverturningRefineDepth;
+    s.maxRuns = kOverturningMaxRuns;
+    return s;
+}
+
+std::string studyBlockText(const StudyBlock& b) {
+    return "b = " + formatDouble(b.block.halfWidth) +
+           " m, h = " + formatDouble(b.block.halfHeight) +
+           " m, mu = " + (b.mu ? formatDouble(*b.mu) : std::string("none")) + ", restitution = " +
+           (b.restitution ? formatDouble(*b.restitution) : std::string("housner")) + ", " +
+           (b.linear ? "linearised" : "exact");
+}
+
+nlohmann::ordered_json studyBlockJson(const StudyBlock& b) {
+    auto orNull = [](const std::optional<double>& x) {
+        return x ? nlohmann::ordered_json(*x) : nlohmann::ordered_json();
+    };
+    return {{"half_width_m", b.block.halfWidth},
+            {"half_height_m", b.block.halfHeight},
+            {"mu", orNull(b.mu)},
+            {"restitution", orNull(b.restitution)},
+            {"linear", b.linear}};
+}
+
+namespace {
+
+double rowNumber(const nlohmann::json& j, const char* key, const NumberInput& in) {
+    const std::string at = std::string("block.") + key;
+    if (!j.contains(key) || !j[key].is_number())
+        throw std::invalid_argument(at + ": expected a number");
+    const double x = j[key].get<double>();
+    if (const InputProblem p = checkInput(in, x); !p.empty())
+        throw std::invalid_argument(describeAs(p, at));
+    return x;
+}
+
+std::optional<double> optionalRowNumber(const nlohmann::json& j, const char* key,
+                                        const NumberInput& in) {
+    if (!j.contains(key) || j[key].is_null()) return std::nullopt;
+    return rowNumber(j, key, in);
+}
+
+} // namespace
+
+StudyBlock studyBlockFromRowJson(const nlohmann::json& j) {
+    if (!j.is_object()) throw std::invalid_argument("block: expected an object");
+    StudyBlock b;
+    b.block.halfWidth = rowNumber(j, "half_width_m", kHalfWidthInput);
+    b.block.halfHeight = rowNumber(j, "half_height_m", kHalfHeightInput);
+    b.mu = optionalRowNumber(j, "mu", kBlockMuInput);
+    b.restitution = optionalRowNumber(j, "restitution", kRestitutionInput);
+    if (!j.contains("linear") || !j["linear"].is_boolean())
+        throw std::invalid_argument("block.linear: expected true or false");
+    b.linear = j["linear"].get<bool>();
+    return b;
+}
+
+BlockCaseCritical blockCaseCritical(const StudyBlock& b, const Accelerogram& motion,
+                                    const CriticalSearch& search) {
+    const OverturningIntervals iv =
+        overturningIntervals(studyBlockModel(b), recordFamily(motion), studyBlockSearch(search));
+    BlockCaseCritical out;
+    out.peak = iv.critical();
+    out.unitPeak = std::abs(motion.peak().value);
+    out.runs = iv.runs;
+    out.runLimitReached = iv.runLimitReached;
+    return out;
+}
+
+} // namespace kinstab
