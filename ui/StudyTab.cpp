@@ -182,6 +182,8 @@ QLayout* StudyTab::buildForm() {
     searchRow->addWidget(new QLabel(tr("scan step"), this));
     searchRow->addWidget(m_step);
     auto* parameters = new QFormLayout;
+    m_mu->setObjectName(QStringLiteral("mu")); // tests find the fields by name
+    m_tstar->setObjectName(QStringLiteral("tstar"));
     parameters->addRow(tr("μ (LIST)"), m_mu);
     parameters->addRow(tr("t* s (LIST)"), m_tstar);
     parameters->addRow(tr("Floor periods s (LIST)"), m_floors);
@@ -265,6 +267,17 @@ void StudyTab::setSearch(double maxG, double scanStepG) {
     m_step->setValue(scanStepG);
 }
 
+// A block study (its "block" instead of the slab) has no μ or t*: the fields say so and stay
+// out of the file (core/io/StudyFileWriter keeps the block).
+void StudyTab::showBlockStudy(bool block) {
+    for (QLineEdit* e : {m_mu, m_tstar}) {
+        e->setEnabled(!block);
+        if (block) e->clear();
+        e->setPlaceholderText(block ? tr("a block study: the study file's \"block\" sets it")
+                                    : QString());
+    }
+}
+
 std::string StudyTab::studyJson() const {
     StudyFileFields f;
     f.folder = m_folder->text().toStdString();
@@ -318,6 +331,7 @@ bool StudyTab::openStudy(const QString& path) {
     m_measure->setCurrentText(sa ? "sa" : "pga");
     if (sa) m_saPeriod->setValue(spec.intensity.period);
     setLists(joined(spec.mu), joined(spec.tstar), floorPeriods(spec));
+    showBlockStudy(spec.block.has_value());
     setSearch(spec.search.to, spec.search.scanStep);
     m_studyFile = path;
     m_openedText = studyJson();

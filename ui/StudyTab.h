@@ -92,6 +92,7 @@ signals:
     void studyChosen(const QString& specPath, const QString& resultsPath);
 
 private:
+    void showBlockStudy(bool block);
     QLayout* buildFileRow();
     QLayout* buildForm();
     QLayout* buildRunBar();

@@ -8,6 +8,7 @@
 #include <QTableWidget>
 
 #include <map>
+#include <utility>
 
 namespace kinstab::ui {
 
@@ -72,6 +73,17 @@ QTableWidget* makeStudySetTable(QWidget* parent) {
     return t;
 }
 
+// The μ and t* columns: the slab's, or for a block study the block's μ and its size (the
+// block has no t*; its whole description is the cells' tooltip).
+namespace {
+std::pair<QString, QString> slabOrBlockCells(const StudyRow& r) {
+    if (!r.block) return {number(r.mu), number(r.tstar)};
+    const StudyBlock& b = *r.block;
+    return {b.mu ? number(*b.mu) : tr("no sliding"),
+            tr("block %1×%2 m").arg(number(2 * b.block.halfWidth), number(2 * b.block.halfHeight))};
+}
+} // namespace
+
 void fillStudyCaseTable(QTableWidget* t, const std::vector<StudyRow>& rows,
                         const std::vector<StudyRecordMetrics>& metrics) {
     std::map<std::string, const RecordMetrics*> byRecord;
@@ -81,8 +93,8 @@ void fillStudyCaseTable(QTableWidget* t, const std::vector<StudyRow>& rows,
     for (int i = 0; i < t->rowCount(); ++i) {
         const StudyRow& r = rows[static_cast<std::size_t>(i)];
         QStringList cells = {QString::fromStdString(studyRecordText(r)),
-                             number(r.mu),
-                             number(r.tstar),
+                             slabOrBlockCells(r).first,
+                             slabOrBlockCells(r).second,
                              QString::fromStdString(studyDriverText(r)),
                              r.criticalIntensity
                                  ? number(*r.criticalIntensity)
@@ -103,11 +115,11 @@ void fillStudySetTable(QTableWidget* t, const std::vector<Fragility>& sets) {
         const Fragility& f = sets[static_cast<std::size_t>(i)];
         const RecordStatistics& s = f.statistics;
         setRow(t, i,
-               {QString::number(f.parameters.set + 1), number(f.parameters.mu),
-                number(f.parameters.tstar), QString::fromStdString(studyDriverText(f.parameters)),
-                QString::number(f.records), QString::number(s.censored), number(s.meanG),
-                number(s.medianG), number(s.stdG), number(s.stdLn),
-                f.fit ? number(f.fit->median) : tr("no fit"),
+               {QString::number(f.parameters.set + 1), slabOrBlockCells(f.parameters).first,
+                slabOrBlockCells(f.parameters).second,
+                QString::fromStdString(studyDriverText(f.parameters)), QString::number(f.records),
+                QString::number(s.censored), number(s.meanG), number(s.medianG), number(s.stdG),
+                number(s.stdLn), f.fit ? number(f.fit->median) : tr("no fit"),
                 f.fit ? number(f.fit->beta) : QStringLiteral("–")});
     }
     t->resizeColumnsToContents();

@@ -30,9 +30,12 @@ json intensityOf(const json& base, const StudyFileFields& f) {
 
 json parametersOf(const json& base, const StudyFileFields& f) {
     json p = objectOf(base, "parameters");
-    p["mu"] = f.mu;
-    p["tstar"] = f.tstar;
-    p.erase("wall_width_in"); // the field is t*
+    // A block study has no slab: the file refuses mu and t* there (the block keeps its own).
+    if (!(base.is_object() && base.contains("block"))) {
+        p["mu"] = f.mu;
+        p["tstar"] = f.tstar;
+        p.erase("wall_width_in"); // the field is t*
+    }
     if (!f.floorPeriods) {
         p.erase("floor_filter");
     } else {

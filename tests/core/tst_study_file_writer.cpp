@@ -18,8 +18,8 @@ namespace {
 
 const std::string kExamples = KINSTAB_SOURCE_DIR "/resources/examples";
 
-json exampleJson() {
-    std::ifstream in(kExamples + "/study-example.json");
+json exampleJson(const std::string& name = "study-example.json") {
+    std::ifstream in(kExamples + "/" + name);
     std::stringstream text;
     text << in.rdbuf();
     return json::parse(text.str());
@@ -48,7 +48,26 @@ private slots:
     void writtenFileReadsAsTheOpenedStudy();
     void keysTheFieldsDoNotCoverAreKept();
     void measureAndFloorFilterFollowTheFields();
+    void blockStudyKeepsItsBlockAndNoSlab();
 };
+
+// The shipped block study (resources/examples/study-block.json): the file refuses mu and t*
+// beside a block, so the tab's (empty) slab lists are not written and the block is kept.
+void TestStudyFileWriter::blockStudyKeepsItsBlockAndNoSlab() {
+    StudyFileFields f = exampleFields();
+    f.mu.clear();
+    f.tstar.clear();
+    const json base = exampleJson("study-block.json");
+    const json j = json::parse(studyFileText(base, f));
+    QVERIFY(!j["parameters"].contains("mu"));
+    QVERIFY(!j["parameters"].contains("tstar"));
+    QCOMPARE(j["block"], base["block"]);
+    QCOMPARE(j["parameters"]["levels"], base["parameters"]["levels"]);
+    const StudySpec opened = loadStudy(kExamples + "/study-block.json");
+    const StudySpec written = studyFromJsonText(j.dump(), kExamples);
+    QVERIFY(written.block && opened.block && *written.block == *opened.block);
+    QVERIFY(written.levels == opened.levels);
+}
 
 void TestStudyFileWriter::writtenFileReadsAsTheOpenedStudy() {
     const StudySpec opened = loadStudy(kExamples + "/study-example.json");

@@ -11,10 +11,13 @@
 
 #include <QChart>
 #include <QChartView>
+#include <QLineEdit>
 #include <QProcess>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <nlohmann/json.hpp>
 
 using namespace kinstab;
 using namespace kinstab::ui;
@@ -150,6 +153,21 @@ private slots:
         tab.run();
         QVERIFY(done.wait(60000));
         QVERIFY2(tab.message().contains("parameters.mu[1] = -1"), qPrintable(tab.message()));
+    }
+    // The shipped block study opens with its μ and t* fields off (a block study has neither),
+    // and the study the tab would run keeps the block and writes no slab list.
+    void blockStudyOpensWithoutSlabFields() {
+        StudyTab tab;
+        QVERIFY(tab.openStudy(KINSTAB_SOURCE_DIR "/resources/examples/study-block.json"));
+        for (const char* name : {"mu", "tstar"}) {
+            auto* field = tab.findChild<QLineEdit*>(QString::fromLatin1(name));
+            QVERIFY2(field, name);
+            QVERIFY2(!field->isEnabled(), name);
+        }
+        const nlohmann::json j = nlohmann::json::parse(tab.studyJson());
+        QVERIFY(j.contains("block"));
+        QVERIFY(!j["parameters"].contains("mu"));
+        QVERIFY(!j["parameters"].contains("tstar"));
     }
 };
 
