@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/teaching/BlockTeachingView.h"
+#include "ui/teaching/TransportBar.h"
 
 #include "ui/teaching/BlockAnimation.h"
 #include "ui/teaching/BlockPresets.h"
@@ -22,7 +23,6 @@
 namespace kinstab::ui {
 
 namespace {
-const double kSpeeds[] = {0.1, 0.25, 0.5, 1.0, 2.0};
 // How long an impact flashes in the drawing, s of the run.
 constexpr double kImpactFlash = 0.04;
 } // namespace
@@ -63,50 +63,18 @@ void BlockTeachingView::installKeys() {
 
 BlockTeachingView::~BlockTeachingView() = default;
 
+QSlider* BlockTeachingView::scrubber() const {
+    return transport_->scrubber();
+}
+
 QWidget* BlockTeachingView::buildTransport() {
-    auto* bar = new QWidget(this);
-    bar->setObjectName(QStringLiteral("blockTransport"));
-    auto* h = new QHBoxLayout(bar);
-    h->setContentsMargins(0, 0, 0, 0);
-    auto tool = [&](QStyle::StandardPixmap icon, const QString& tip, auto slot) {
-        auto* b = new QToolButton(bar);
-        b->setIcon(style()->standardIcon(icon));
-        b->setToolTip(tip);
-        b->setMinimumWidth(34);
-        connect(b, &QToolButton::clicked, player_, slot);
-        h->addWidget(b);
-        return b;
-    };
-    tool(QStyle::SP_MediaSkipBackward, tr("Back to the start"), &TeachingPlayer::rewind);
-    tool(QStyle::SP_MediaSeekBackward, tr("Previous event (B)"),
-         &TeachingPlayer::stepToPreviousEvent);
-    playButton_ =
-        tool(QStyle::SP_MediaPlay, tr("Play / pause (space)"), &TeachingPlayer::togglePlay);
-    tool(QStyle::SP_MediaSeekForward, tr("Next event: impact, mode change, overturning (N)"),
-         &TeachingPlayer::stepToNextEvent);
-    connect(player_, &TeachingPlayer::playingChanged, this, [this](bool on) {
-        playButton_->setIcon(
-            style()->standardIcon(on ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
-    });
-    scrub_ = new QSlider(Qt::Horizontal, bar);
-    scrub_->setObjectName(QStringLiteral("blockScrub"));
-    scrub_->setRange(0, kScrubSteps);
-    scrub_->setToolTip(tr("Scrub through the run"));
-    connect(scrub_, &QSlider::valueChanged, this,
-            [this](int v) { player_->seek(run_->end() * v / kScrubSteps); });
-    h->addWidget(scrub_, 1);
-    timeLabel_ = new QLabel(bar);
-    timeLabel_->setMinimumWidth(120);
-    h->addWidget(timeLabel_);
-    speed_ = new QComboBox(bar);
-    for (double s : kSpeeds)
-        speed_->addItem(QStringLiteral("%1×").arg(s), s);
-    speed_->setCurrentIndex(2); // kDefaultSpeed
-    speed_->setToolTip(tr("Speed: 1× is real time"));
-    connect(speed_, &QComboBox::currentIndexChanged, this,
-            [this](int i) { player_->setSpeed(speed_->itemData(i).toDouble()); });
-    h->addWidget(speed_);
-    return bar;
+    transport_ = new TransportBar(
+        player_, [this] { return run_->end(); },
+        {tr("Next event: impact, mode change, overturning (N)"), tr("Speed: 1× is real time"), 120},
+        this);
+    transport_->setObjectName(QStringLiteral("blockTransport"));
+    transport_->scrubber()->setObjectName(QStringLiteral("blockScrub"));
+    return transport_;
 }
 
 QWidget* BlockTeachingView::buildSidePanel() {
@@ -211,12 +179,7 @@ void BlockTeachingView::showFrame(double t) {
     sc.units = units_;
     animation_->setScene(sc);
     traces_->setCursor(t);
-    {
-        const QSignalBlocker block(scrub_);
-        const double end = run_->end();
-        scrub_->setValue(end > 0 ? static_cast<int>(std::lround(t / end * kScrubSteps)) : 0);
-    }
-    timeLabel_->setText(tr("t %1 / %2 s").arg(t, 0, 'f', 3).arg(run_->end(), 0, 'f', 2));
+    transport_->showPosition(t, tr("t %1 / %2 s").arg(t, 0, 'f', 3).arg(run_->end(), 0, 'f', 2));
 }
 
 void BlockTeachingView::updateOutcome() {

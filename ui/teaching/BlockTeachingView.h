@@ -8,6 +8,7 @@
 
 #include "ui/Units.h"
 #include "ui/teaching/BlockRun.h"
+#include "ui/teaching/TransportBar.h"
 
 #include <QWidget>
 
@@ -28,7 +29,7 @@ class TeachingPlayer;
 class BlockTeachingView : public QWidget {
     Q_OBJECT
 public:
-    static constexpr int kScrubSteps = 10000;
+    static constexpr int kScrubSteps = TransportBar::kScrubSteps;
     static constexpr double kDefaultSpeed = 0.5;
 
     explicit BlockTeachingView(QWidget* parent = nullptr);
@@ -37,7 +38,7 @@ public:
     const BlockRun& run() const { return *run_; }
     TeachingPlayer* player() const { return player_; }
     BlockAnimation* animation() const { return animation_; }
-    QSlider* scrubber() const { return scrub_; }
+    QSlider* scrubber() const;
     QString currentPresetId() const { return presetId_; }
     // What the drawing shows now.
     RockingSample displayedState() const;
@@ -66,10 +67,7 @@ private:
     QLabel* caption_ = nullptr;
     QLabel* outcome_ = nullptr;
     QListWidget* events_ = nullptr;
-    QToolButton* playButton_ = nullptr;
-    QSlider* scrub_ = nullptr;
-    QComboBox* speed_ = nullptr;
-    QLabel* timeLabel_ = nullptr;
+    TransportBar* transport_ = nullptr;
     QString presetId_;
     UnitSystem units_ = UnitSystem::SI;
 };

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/teaching/TeachingView.h"
+#include "ui/teaching/TransportBar.h"
 
 #include "ui/ProjectFolder.h"
 #include "ui/teaching/EventLog.h"
@@ -34,10 +35,7 @@
 
 namespace kinstab::ui {
 
-namespace {
-constexpr int kScrubSteps = 10000;
-const double kSpeeds[] = {0.1, 0.25, 0.5, 1.0, 2.0, 5.0, 10.0};
-} // namespace
+namespace {} // namespace
 
 TeachingView::TeachingView(QWidget* parent)
     : QWidget(parent), run_(std::make_unique<TeachingRun>()), player_(new TeachingPlayer(this)),
@@ -123,58 +121,13 @@ void TeachingView::setFontScale(double scale) {
 }
 
 QWidget* TeachingView::buildTransport() {
-    auto* bar = new QWidget(this);
-    bar->setObjectName(QStringLiteral("transport"));
-    auto* h = new QHBoxLayout(bar);
-    h->setContentsMargins(0, 0, 0, 0);
-    auto tool = [&](QStyle::StandardPixmap icon, const QString& tip, auto slot) {
-        auto* b = new QToolButton(bar);
-        b->setIcon(style()->standardIcon(icon));
-        b->setToolTip(tip);
-        b->setMinimumWidth(34);
-        connect(b, &QToolButton::clicked, player_, slot);
-        h->addWidget(b);
-        return b;
-    };
-    tool(QStyle::SP_MediaSkipBackward, tr("Back to the start"), &TeachingPlayer::rewind);
-    tool(QStyle::SP_MediaSeekBackward, tr("Previous event (B)"),
-         &TeachingPlayer::stepToPreviousEvent);
-    playButton_ =
-        tool(QStyle::SP_MediaPlay, tr("Play / pause (space)"), &TeachingPlayer::togglePlay);
-    tool(QStyle::SP_MediaSeekForward, tr("Next event (N)"), &TeachingPlayer::stepToNextEvent);
-    connect(player_, &TeachingPlayer::playingChanged, this, [this](bool on) {
-        playButton_->setIcon(
-            style()->standardIcon(on ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
-    });
-    scrub_ = new QSlider(Qt::Horizontal, bar);
-    scrub_->setRange(0, kScrubSteps);
-    scrub_->setToolTip(tr("Scrub through the run"));
-    connect(scrub_, &QSlider::valueChanged, this,
-            [this](int v) { player_->seek(run_->displayEnd() * v / kScrubSteps); });
-    h->addWidget(scrub_, 1);
-    timeLabel_ = new QLabel(bar);
-    timeLabel_->setMinimumWidth(170);
-    h->addWidget(timeLabel_);
-    speed_ = new QComboBox(bar);
-    for (double s : kSpeeds)
-        speed_->addItem(QStringLiteral("%1×").arg(s), s);
-    speed_->setCurrentIndex(static_cast<int>(
-        std::find(std::begin(kSpeeds), std::end(kSpeeds), TeachingPlayer::kDefaultSpeed) -
-        std::begin(kSpeeds)));
-    speed_->setToolTip(tr("Speed: 1× is real time for this wall (τ advances 1/t* per second)"));
-    connect(speed_, &QComboBox::currentIndexChanged, this,
-            [this](int i) { player_->setSpeed(speed_->itemData(i).toDouble()); });
-    connect(player_, &TeachingPlayer::speedChanged, this, [this](double s) {
-        const QSignalBlocker block(speed_);
-        int best = 0;
-        for (int i = 0; i < speed_->count(); ++i)
-            if (std::abs(speed_->itemData(i).toDouble() - s) <
-                std::abs(speed_->itemData(best).toDouble() - s))
-                best = i;
-        speed_->setCurrentIndex(best);
-    });
-    h->addWidget(speed_);
-    return bar;
+    transport_ = new TransportBar(
+        player_, [this] { return run_->displayEnd(); },
+        {tr("Next event (N)"),
+         tr("Speed: 1× is real time for this wall (τ advances 1/t* per second)"), 170},
+        this);
+    transport_->setObjectName(QStringLiteral("transport"));
+    return transport_;
 }
 
 // The text size sits beside the presets, not in the play bar: there it made the bar wider
@@ -301,15 +254,10 @@ void TeachingView::showFrame(double tau) {
         SlabScene{f, run_->params(), run_->tstar(), run_->displayEnd(), run_->exitSide(), units_});
     traces_->setCursor(tau);
     log_->setCurrent(f.eventIndex);
-    {
-        const QSignalBlocker block(scrub_);
-        const double end = run_->displayEnd();
-        scrub_->setValue(end > 0 ? static_cast<int>(std::lround(tau / end * kScrubSteps)) : 0);
-    }
-    timeLabel_->setText(QStringLiteral("τ %1 / %2   t %3 s")
-                            .arg(tau, 0, 'f', 2)
-                            .arg(run_->displayEnd(), 0, 'f', 1)
-                            .arg(tau * run_->tstar(), 0, 'f', 2));
+    transport_->showPosition(tau, QStringLiteral("τ %1 / %2   t %3 s")
+                                      .arg(tau, 0, 'f', 2)
+                                      .arg(run_->displayEnd(), 0, 'f', 1)
+                                      .arg(tau * run_->tstar(), 0, 'f', 2));
     emit frameChanged(tau);
 }
 

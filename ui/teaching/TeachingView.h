@@ -27,6 +27,7 @@ class SlabAnimation;
 class SurfaceMarker;
 class TeachingPlayer;
 class TracePlot;
+class TransportBar;
 
 class TeachingView : public QWidget {
     Q_OBJECT
@@ -94,10 +95,7 @@ private:
     QComboBox* presets_;
     QLabel* caption_;
     QLabel* outcome_;
-    QToolButton* playButton_;
-    QSlider* scrub_;
-    QComboBox* speed_;
-    QLabel* timeLabel_;
+    TransportBar* transport_ = nullptr;
     QComboBox* fontScaleBox_;
     QWidget* side_ = nullptr;
     double fontScale_ = 1.0;
