@@ -34,12 +34,14 @@ void TracePlot::paintEvent(QPaintEvent*) {
 
 void TracePlot::mousePressEvent(QMouseEvent* e) {
     if (run_ && e->button() == Qt::LeftButton)
-        emit seekRequested(traceLayout(rect(), *run_, traceLabelPixels(font())).tauAt(e->position().x()));
+        emit seekRequested(
+            traceLayout(rect(), *run_, traceLabelPixels(font())).tauAt(e->position().x()));
 }
 
 void TracePlot::mouseMoveEvent(QMouseEvent* e) {
     if (run_ && (e->buttons() & Qt::LeftButton))
-        emit seekRequested(traceLayout(rect(), *run_, traceLabelPixels(font())).tauAt(e->position().x()));
+        emit seekRequested(
+            traceLayout(rect(), *run_, traceLabelPixels(font())).tauAt(e->position().x()));
 }
 
 } // namespace kinstab::ui
