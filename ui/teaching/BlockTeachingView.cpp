@@ -11,7 +11,6 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QScrollArea>
-#include <QShortcut>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QStyle>
@@ -51,14 +50,7 @@ BlockTeachingView::BlockTeachingView(QWidget* parent)
 void BlockTeachingView::installKeys() {
     animation_->setFocusPolicy(Qt::ClickFocus);
     traces_->setFocusPolicy(Qt::ClickFocus);
-    auto key = [this](QKeyCombination k, auto slot) {
-        auto* s =
-            new QShortcut(QKeySequence(k), this, nullptr, nullptr, Qt::WidgetWithChildrenShortcut);
-        connect(s, &QShortcut::activated, player_, slot);
-    };
-    key(Qt::Key_Space, &TeachingPlayer::togglePlay);
-    key(Qt::Key_N, &TeachingPlayer::stepToNextEvent);
-    key(Qt::Key_B, &TeachingPlayer::stepToPreviousEvent);
+    transport_->installKeys(this);
 }
 
 BlockTeachingView::~BlockTeachingView() = default;

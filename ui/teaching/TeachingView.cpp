@@ -72,14 +72,12 @@ TeachingView::~TeachingView() = default;
 void TeachingView::installKeys() {
     animation_->setFocusPolicy(Qt::ClickFocus);
     traces_->setFocusPolicy(Qt::ClickFocus);
+    transport_->installKeys(this);
     auto key = [this](QKeyCombination k, auto slot) {
         auto* s =
             new QShortcut(QKeySequence(k), this, nullptr, nullptr, Qt::WidgetWithChildrenShortcut);
         connect(s, &QShortcut::activated, this, slot);
     };
-    key(Qt::Key_Space, [this] { player_->togglePlay(); });
-    key(Qt::Key_N, [this] { player_->stepToNextEvent(); });
-    key(Qt::Key_B, [this] { player_->stepToPreviousEvent(); });
     key(Qt::Key_Right, [this] { stepFrames(1); });
     key(Qt::Key_Left, [this] { stepFrames(-1); });
     key(Qt::SHIFT | Qt::Key_Right, [this] { stepFrames(25); });

@@ -6,6 +6,7 @@
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QShortcut>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QStyle>
@@ -83,6 +84,17 @@ void TransportBar::buildSpeed(const Texts& texts) {
         speed_->setCurrentIndex(best);
     });
     layout()->addWidget(speed_);
+}
+
+void TransportBar::installKeys(QWidget* view) {
+    auto key = [&](QKeyCombination k, auto slot) {
+        auto* s =
+            new QShortcut(QKeySequence(k), view, nullptr, nullptr, Qt::WidgetWithChildrenShortcut);
+        connect(s, &QShortcut::activated, player_, slot);
+    };
+    key(Qt::Key_Space, &TeachingPlayer::togglePlay);
+    key(Qt::Key_N, &TeachingPlayer::stepToNextEvent);
+    key(Qt::Key_B, &TeachingPlayer::stepToPreviousEvent);
 }
 
 void TransportBar::showPosition(double at, const QString& timeText) {

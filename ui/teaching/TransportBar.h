@@ -31,6 +31,8 @@ public:
     TransportBar(TeachingPlayer* player, std::function<double()> end, const Texts& texts,
                  QWidget* parent = nullptr);
 
+    // Space plays and pauses, N and B step between events, wherever the focus is inside view.
+    void installKeys(QWidget* view);
     // The slider at `at` of the run's end (without seeking back) and the time text beside it.
     void showPosition(double at, const QString& timeText);
     QSlider* scrubber() const { return scrub_; }
