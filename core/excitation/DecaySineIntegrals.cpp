@@ -171,20 +171,11 @@ double DecaySineIntegrals::second(double t0, double h) const {
     return (endAt(m, t0 + h).p2 - o.p2 - o.p1 * h).imag();
 }
 
+// The two integrals over the same span: the memo keeps the origin's and the end's exponentials,
+// so the second call reuses what the first computed (same arithmetic as each alone).
 double DecaySineIntegrals::both(double t0, double h, double& secondOut, double* valueAtEnd) const {
-    Memo& m = memo();
-    const Point& o = origin(m, t0);
-    if (zqAbs_ * h <= kShortSpan) {
-        secondOut = shortSpan(o, h, 2).imag();
-        Complex end;
-        const double v = shortSpan(o, h, 1, valueAtEnd ? &end : nullptr).imag();
-        if (valueAtEnd) *valueAtEnd = end.imag();
-        return v;
-    }
-    const Point& p = endAt(m, t0 + h);
-    if (valueAtEnd) *valueAtEnd = (p.near ? p.eq * p.em1 : p.ep - p.eq).imag();
-    secondOut = (p.p2 - o.p2 - o.p1 * h).imag();
-    return (p.p1 - o.p1).imag();
+    secondOut = second(t0, h);
+    return first(t0, h, valueAtEnd);
 }
 
 } // namespace kinstab
