@@ -61,6 +61,32 @@ FrictionPanel::FrictionPanel(QWidget* parent) : QWidget(parent) {
 
 void FrictionPanel::buildUi() {
     auto* open = new QPushButton(tr("Open CSV…"));
+    QLayout* controls = buildControls(open);
+    QLayout* muRow = buildMuRow();
+    status_ = new QLabel;
+    status_->setWordWrap(true);
+    QWidget* results = buildResults();
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(controls);
+    layout->addLayout(muRow);
+    layout->addWidget(results, 1);
+    layout->addWidget(status_);
+
+    connect(open, &QPushButton::clicked, this, &FrictionPanel::openFile);
+    connect(configuration_, &QComboBox::currentTextChanged, this, &FrictionPanel::refresh);
+    connect(slopeKind_, &QComboBox::currentIndexChanged, this, &FrictionPanel::refresh);
+    connect(area_, &QDoubleSpinBox::valueChanged, this, [this](double shown) {
+        areaIn2_ = shown * shownUnits(units_).area;
+        recalibrate();
+    });
+    connect(useMu_, &QPushButton::clicked, this, [this] {
+        if (const auto mu = currentMu()) emit useMu(*mu);
+    });
+}
+
+// Open, the configuration, the bearing area and the slope's fit in one row.
+QLayout* FrictionPanel::buildControls(QPushButton* open) {
     configuration_ = new QComboBox;
     slopeKind_ = new QComboBox;
     slopeKind_->addItems({tr("least squares with intercept"), tr("through the origin")});
@@ -70,12 +96,6 @@ void FrictionPanel::buildUi() {
     area_->setSuffix(QStringLiteral(" in²"));
     area_->setSpecialValueText(tr("not set"));
     area_->setToolTip(tr("Bearing area A_b: tau_inf = V_inf / A_b (not given in Furgerson 1980)"));
-    useMu_ = new QPushButton(tr("Use this μ"));
-    useMu_->setObjectName("useMu");
-    muLabel_ = new QLabel;
-    status_ = new QLabel;
-    status_->setWordWrap(true);
-
     auto* controls = new QHBoxLayout;
     controls->addWidget(open);
     controls->addWidget(new QLabel(tr("Configuration")));
@@ -84,12 +104,23 @@ void FrictionPanel::buildUi() {
     controls->addWidget(area_);
     controls->addWidget(slopeKind_);
     controls->addStretch(1);
-    // The fitted μ and its button on a line of their own: beside the controls above they made
-    // the row wider than the tab at 1280 × 800 and the button was cut at the right.
+    return controls;
+}
+
+// The fitted μ and its button on a line of their own: beside the controls above they made the
+// row wider than the tab at 1280 × 800 and the button was cut at the right.
+QLayout* FrictionPanel::buildMuRow() {
+    useMu_ = new QPushButton(tr("Use this μ"));
+    useMu_->setObjectName("useMu");
+    muLabel_ = new QLabel;
     auto* muRow = new QHBoxLayout;
     muRow->addWidget(muLabel_, 1);
     muRow->addWidget(useMu_);
+    return muRow;
+}
 
+// The two charts side by side above the table of fits.
+QWidget* FrictionPanel::buildResults() {
     curves_ = makeChartView(tr("Shear force after fracture"));
     coulomb_ = makeChartView(tr("Asymptotic friction law"));
     table_ = new QTableWidget(0, 10);
@@ -115,23 +146,7 @@ void FrictionPanel::buildUi() {
                              4 * table_->verticalHeader()->defaultSectionSize() +
                              2 * table_->frameWidth());
     split->setChildrenCollapsible(false);
-
-    auto* layout = new QVBoxLayout(this);
-    layout->addLayout(controls);
-    layout->addLayout(muRow);
-    layout->addWidget(split, 1);
-    layout->addWidget(status_);
-
-    connect(open, &QPushButton::clicked, this, &FrictionPanel::openFile);
-    connect(configuration_, &QComboBox::currentTextChanged, this, &FrictionPanel::refresh);
-    connect(slopeKind_, &QComboBox::currentIndexChanged, this, &FrictionPanel::refresh);
-    connect(area_, &QDoubleSpinBox::valueChanged, this, [this](double shown) {
-        areaIn2_ = shown * shownUnits(units_).area;
-        recalibrate();
-    });
-    connect(useMu_, &QPushButton::clicked, this, [this] {
-        if (const auto mu = currentMu()) emit useMu(*mu);
-    });
+    return split;
 }
 
 bool FrictionPanel::loadCsv(const QString& path, QString* error) {
