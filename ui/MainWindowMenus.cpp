@@ -49,6 +49,13 @@ void MainWindow::buildFileMenu() {
             statusBar()->showMessage(tr("Project information changed; save to keep it"), 5000);
     });
     file->addSeparator();
+    addExportActions(file);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+}
+
+// File → Export surface, Export chart, Export report.
+void MainWindow::addExportActions(QMenu* file) {
     QAction* exportSurface =
         file->addAction(tr("Export &surface (CSV/JSON)…"), this, &MainWindow::exportSurface);
     exportSurface->setShortcut(Qt::CTRL | Qt::SHIFT | Qt::Key_E);
@@ -78,8 +85,6 @@ void MainWindow::buildFileMenu() {
     report->setShortcut(Qt::CTRL | Qt::Key_E);
     // Also while the 3D view (a window of its own) has the focus.
     report->setShortcutContext(Qt::ApplicationShortcut);
-    file->addSeparator();
-    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 }
 
 void MainWindow::buildActions() {
