@@ -38,6 +38,7 @@ double shownDecayRate(double cPerInch, double beta, const ShownUnits& u) {
     return cPerInch / (u.length * std::pow(u.force * u.length, beta));
 }
 
+// f_m's unit goes in squared: in "%1²" QString::arg reads ² as a digit, placeholder %12.
 QStringList tableHeader(const ShownUnits& u) {
     return {QObject::tr("Configuration"),
             QObject::tr("CP %1").arg(u.p),
@@ -47,7 +48,7 @@ QStringList tableHeader(const ShownUnits& u) {
             QObject::tr("c 1/%1·(%2·%1)^β").arg(u.l, u.f),
             QObject::tr("b"),
             QObject::tr("β"),
-            QObject::tr("f_m %1²").arg(u.f),
+            QObject::tr("f_m %1").arg(u.f + QStringLiteral("²")),
             QObject::tr("Outlier (Grubbs 95 %)")};
 }
 
