@@ -5,6 +5,7 @@
 #include "core/excitation/FourierSpectrum.h"
 #include "ui/RecordPreview.h"
 
+#include <QLabel>
 #include <QtCharts/QChart>
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QValueAxis>
