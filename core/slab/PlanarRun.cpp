@@ -22,7 +22,8 @@ WallEvents wallEvents(const PlanarParams& p) {
 }
 
 PlanarRun::PlanarRun(const SlabModel2D& m, const PlanarOptions& o, PlanarRecorder* recorder)
-    : m_(m), o_(o), recorder_(recorder), mu_(m.params().mu), walls_(wallEvents(m.params())) {}
+    : m_(m), o_(o), recorder_(recorder), mu_(m.params().mu), walls_(wallEvents(m.params())),
+      radauTol_(o.relTol) {}
 
 PlanarResult PlanarRun::run() {
     const PlanarParams& p = m_.params();
@@ -116,26 +117,27 @@ PlanarRun::Step PlanarRun::startSlip(double onset) {
     return event(EventKind::SlipOnset) ? Step::Continue : Step::Done;
 }
 
-// The roots of a time event's function in (lo, hi], appended to out.
-void PlanarRun::scanTimeEvent(const TimeEvent& e, double lo, double hi, std::vector<double>& out) {
+// The roots of a time event's function in (lo, hi], appended to out; with `from`, only those
+// of the sub-intervals that end after it.
+void PlanarRun::scanTimeEvent(const TimeEvent& e, double lo, double hi, std::vector<double>& out,
+                              double from) {
     CrossingScanWork scan;
-    levelCrossings(
-        [&](double t, double& f, double& df) {
-            f = (m_.*e.g)(t);
-            df = (m_.*e.slope)(t);
-        },
-        lo, hi, kTimeEventSub, out, scan);
+    levelCrossings([&](double t, double& f, double& df) { (m_.*e.gAndSlope)(t, f, df); }, lo, hi,
+                   kTimeEventSub, out, scan, from);
     r_.slab.work.accelEvaluations += scan.evaluations;
     r_.slab.work.rootIterations += scan.iterations;
 }
 
-// The window's onset roots, scanned on first use: cuts_ = {start, roots..., end}.
-void PlanarRun::scanCuts() {
+// The window's onset roots after `from`, scanned on first use: cuts_ = {start, roots..., end}.
+// Only where the slab sticks or is slaved from `from` on is the rest of the window scanned (the
+// run's time never goes back); the sub-intervals stay the window's, so the roots are the bits a
+// scan of the whole window gives. `quiet`: nothing can start after `from` (no roots there).
+void PlanarRun::scanCuts(double from, bool quiet) {
     if (cutsKnown_) return;
     cutsKnown_ = true;
     cuts_.clear();
     cuts_.push_back(winStart_);
-    if (!m_.quietOn(winStart_, winEnd_)) scanTimeEvent(kOnsetEvent, winStart_, winEnd_, cuts_);
+    if (!quiet) scanTimeEvent(kOnsetEvent, winStart_, winEnd_, cuts_, from);
     cuts_.push_back(winEnd_);
 }
 
@@ -143,7 +145,7 @@ void PlanarRun::scanCuts() {
 // piece that follows); winEnd_ when there is none.
 double PlanarRun::nextOnset(double from) {
     if (m_.quietOn(from, winEnd_)) return winEnd_;
-    scanCuts();
+    scanCuts(from, false);
     for (std::size_t i = 0; i + 1 < cuts_.size(); ++i) {
         const double lo = std::max(cuts_[i], from), hi = cuts_[i + 1];
         if (hi > lo && m_.onsetMargin(0.5 * (lo + hi)) > 0.0) return lo;
@@ -153,7 +155,7 @@ double PlanarRun::nextOnset(double from) {
 
 // The first onset root after tau in the window (winEnd_ when none): where a slaved stretch ends.
 double PlanarRun::nextCut(double tau) {
-    scanCuts();
+    if (!cutsKnown_) scanCuts(tau, m_.quietOn(tau, winEnd_));
     const auto it = std::upper_bound(cuts_.begin(), cuts_.end(), tau);
     return it == cuts_.end() ? winEnd_ : *it;
 }

@@ -118,8 +118,9 @@ private:
     Step window(double w0, double w1);
     bool scanLiftOff(double w0, double w1, double& wEnd);
     Step startSlip(double onset);
-    void scanTimeEvent(const TimeEvent& e, double lo, double hi, std::vector<double>& out);
-    void scanCuts();
+    void scanTimeEvent(const TimeEvent& e, double lo, double hi, std::vector<double>& out,
+                       double from = -INFINITY);
+    void scanCuts(double from, bool quiet);
     double nextOnset(double from);
     double nextCut(double tau);
     void moveTo(double tau, const Vec4& y);
@@ -185,8 +186,9 @@ private:
         double h = 0.0, err = 0.0; // err floored at kErrorFloor
         bool implicit = false;
     } lastStep_;
-    double stiffSpeed_ = 0; // over mu n: below it a slip takes implicit steps
-    double fsalT_ = -1.0;   // the last accepted step's end, state and derivative
+    double stiffSpeed_ = 0;             // over mu n: below it a slip takes implicit steps
+    radau::EstimateTolerance radauTol_; // the implicit steps' estimate tolerances
+    double fsalT_ = -1.0;               // the last accepted step's end, state and derivative
     Vec4 fsalY_ = Vec4::Zero(), fsalF_ = Vec4::Zero();
     // The slip loop's memory between steps: whether the last trial was rejected or implicit.
     bool rejected_ = true, lastImplicit_ = false;

@@ -32,6 +32,7 @@ Slip slipAt(const Vec2d& u, const Vec2d& a, double mun) {
 
 constexpr int kS = radau::kStages;
 using Stages = Eigen::Matrix<double, 2 * kS, 1>; // the stage velocity increments, two per stage
+using StageMatrix = std::array<std::array<double, kS>, kS>;
 
 double rmsNorm(const Stages& v, const Vec2d& scale) {
     double s = 0.0;
@@ -87,22 +88,29 @@ double errorNorm(const SlabModel2D& m, double t0, const OdeVec<4>& y0, const Ode
 // M = I + Q^T W, M_jk = delta_jk + h A_jk c_k p_j.p_k: the same solution as a 10x10 LU, at a
 // fraction of its cost (with three stages the 6x6 LU had been a tenth of the planar solver's
 // time). M is solved by core/numerics/SmallLinearSolve.h.
-Stages newtonCorrection(const std::array<Slip, kS>& s, double h, const Stages& rhs) {
-    using namespace radau;
+// hA = h A, formed once per step. p_j.p_k is symmetric: formed once per pair.
+Stages newtonCorrection(const std::array<Slip, kS>& s, const StageMatrix& hA, const Stages& rhs) {
     Eigen::Matrix<double, kS, kS> m;
     Eigen::Matrix<double, kS, 1> qb;
+    std::array<std::array<double, kS>, kS> dot;
     for (int j = 0; j < kS; ++j) {
         qb[j] = s[j].normal.dot(rhs.segment<2>(2 * j));
-        for (int k = 0; k < kS; ++k)
-            m(j, k) =
-                (j == k ? 1.0 : 0.0) + h * kA[j][k] * s[k].rate * s[j].normal.dot(s[k].normal);
+        for (int k = j; k < kS; ++k)
+            dot[j][k] = dot[k][j] = s[j].normal.dot(s[k].normal);
     }
+    for (int j = 0; j < kS; ++j)
+        for (int k = 0; k < kS; ++k)
+            m(j, k) = (j == k ? 1.0 : 0.0) + hA[j][k] * s[k].rate * dot[j][k];
     Eigen::Matrix<double, kS, 1>& y = qb;
     if (!solveInPlace<kS>(m, y)) y.setConstant(NAN); // Newton then stops: no finite norm
     Stages dz = rhs;
-    for (int i = 0; i < kS; ++i)
-        for (int k = 0; k < kS; ++k)
-            dz.segment<2>(2 * i) -= h * kA[i][k] * s[k].rate * y[k] * s[k].normal;
+    for (int k = 0; k < kS; ++k) {
+        std::array<double, kS> w;
+        for (int i = 0; i < kS; ++i)
+            w[i] = hA[i][k] * s[k].rate * y[k];
+        for (int i = 0; i < kS; ++i)
+            dz.segment<2>(2 * i) -= w[i] * s[k].normal;
+    }
     return dz;
 }
 
@@ -151,6 +159,13 @@ Eigen::Vector2d SlipRadauPolynomial::displacement(double x) const {
 SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0,
                             const OdeVec<4>& f0, double h, const OdeVec<4>& absTol, double relTol,
                             bool refine, const SlipRadauPolynomial* guess) {
+    return slipRadauStep(m, t0, y0, f0, h, absTol, radau::EstimateTolerance(relTol), refine, guess);
+}
+
+SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0,
+                            const OdeVec<4>& f0, double h, const OdeVec<4>& absTol,
+                            const radau::EstimateTolerance& tol, bool refine,
+                            const SlipRadauPolynomial* guess) {
     using namespace radau;
     SlipRadauStep r;
     const double mu = m.params().mu;
@@ -181,10 +196,13 @@ SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0
     }
     // Newton's corrections are measured against the error estimate's tolerances and stopped, as
     // in RADAU5, when the contraction rate says the rest is below fnewt of them.
-    const EstimateTolerance tol(relTol);
     const Vec2d scale(tol.scale(absTol[2], std::abs(u0[0])), tol.scale(absTol[3], std::abs(u0[1])));
     const double fnewt = std::max(10.0 * 2.2e-16 / tol.rtol, std::min(0.03, std::sqrt(tol.rtol)));
     std::array<Slip, kS> s;
+    StageMatrix hA;
+    for (int i = 0; i < kS; ++i)
+        for (int j = 0; j < kS; ++j)
+            hA[i][j] = h * kA[i][j];
     bool converged = false;
     double lastNorm = INFINITY;
     for (int k = 0; k < kSlipRadauMaxNewton && !converged; ++k) {
@@ -197,8 +215,8 @@ SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0
         }
         for (int i = 0; i < kS; ++i)
             for (int j = 0; j < kS; ++j)
-                g.segment<2>(2 * i) -= h * kA[i][j] * s[j].f;
-        const Stages dz = newtonCorrection(s, h, -g);
+                g.segment<2>(2 * i) -= hA[i][j] * s[j].f;
+        const Stages dz = newtonCorrection(s, hA, -g);
         z += dz;
         r.newton = k + 1;
         const double norm = rmsNorm(dz, scale);
@@ -222,7 +240,7 @@ SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0
     for (int i = 0; i < kS; ++i) {
         zd[i] = Vec2d::Zero();
         for (int j = 0; j < kS; ++j)
-            zd[i] += h * kA[i][j] * u[j];
+            zd[i] += hA[i][j] * u[j];
     }
     const Vec2d dd = zd[kS - 1];
     const Vec2d& u1 = u[kS - 1];
