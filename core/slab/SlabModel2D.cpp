@@ -64,10 +64,20 @@ double SlabModel2D::normalSlope(double tau) const {
 void SlabModel2D::WindowPiece::enter(const Excitation1D* a, double l, double h) {
     lo = hi = 0.0;
     endKnown = false;
-    if (a && a->linearOn(l, h, piece)) {
+    start = NAN;
+    if (!a) return;
+    if (a->linearOn(l, h, piece)) {
         lo = l;
         hi = h;
+        return;
     }
+    const double next = std::nextafter(l, h);
+    if (!(next < h) || !a->linearOn(next, h, piece)) return;
+    lo = next;
+    hi = h;
+    start = l;
+    startAccel = a->accel(l);
+    startSlope = piece.slope; // the window's side: a scan of [l, h) needs the slope into it
 }
 
 void SlabModel2D::enterWindow(double lo, double hi) const {

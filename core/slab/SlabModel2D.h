@@ -61,7 +61,7 @@ public:
     // interval) is evaluated from that piece, and at hi from its value there, asked once, without
     // finding its sample interval at every call (issue 34: the lookup was a tenth of a run with a
     // vertical record; the steps and scans that end at hi had still looked it up). The same bits
-    // as without: outside [lo, hi] and where a piece is not known, the components themselves.
+    // as without (but a slope at a sample time, see WindowPiece); elsewhere, the components'.
     void enterWindow(double lo, double hi) const;
     // g_on = |a_h| - mu n: the slab slips where it is positive (a time-only event).
     double onsetMargin(double tau) const;
@@ -97,20 +97,26 @@ public:
 
 private:
     // A component's linear piece on the current window [lo, hi), when it has one, and its value
-    // and slope at hi (the next piece's there), asked of the component on first use.
+    // and slope at hi (the next piece's there), asked of the component on first use. A window that
+    // starts at a sample time the component reads from the piece before (floor(tau / h) rounds
+    // down there: 7 % of RSN68's samples at t* 0.099) is the piece from the next double on; at its
+    // start the value is the component's, the slope the piece's (the window's side, for scans).
     struct WindowPiece {
         double lo = 0, hi = 0; // empty: covers nothing
         LinearPiece piece;
+        double start = NAN, startAccel = 0, startSlope = 0; // NaN: lo is the window's start
         mutable bool endKnown = false;
         mutable double endAccel = 0, endSlope = 0;
         bool covers(double tau) const { return tau >= lo && tau < hi; }
         double accel(const Excitation1D& a, double tau) const {
             if (covers(tau)) return piece.accel(tau);
-            return tau == hi && hi > lo ? end(a).endAccel : a.accel(tau);
+            if (tau == hi && hi > lo) return end(a).endAccel;
+            return tau == start ? startAccel : a.accel(tau);
         }
         double slope(const Excitation1D& a, double tau) const {
             if (covers(tau)) return piece.slope;
-            return tau == hi && hi > lo ? end(a).endSlope : a.accelSlope(tau);
+            if (tau == hi && hi > lo) return end(a).endSlope;
+            return tau == start ? startSlope : a.accelSlope(tau);
         }
         const WindowPiece& end(const Excitation1D& a) const {
             if (!endKnown) {
