@@ -21,10 +21,12 @@ struct CrossingScanWork {
     long iterations = 0;
 };
 
-// fdf(t, f, df) evaluates f and f'. Appends the roots in (lo, hi] in increasing order.
+// fdf(t, f, df) evaluates f and f'. Appends the roots in (lo, hi] in increasing order; with
+// `from` in [lo, hi], only those of the sub-intervals that end after it (the sub-intervals stay
+// those of [lo, hi], so every root reported is the one the whole scan would report, to the bit).
 template <class FDF>
 void levelCrossings(FDF&& fdf, double lo, double hi, int subIntervals, std::vector<double>& out,
-                    CrossingScanWork& work) {
+                    CrossingScanWork& work, double from = -INFINITY) {
     auto root = [&](double a, double b, double fa, double fb) {
         const RootResult r = safeguardedNewton(fdf, a, b, fa, fb);
         work.iterations += r.iterations;
@@ -36,11 +38,15 @@ void levelCrossings(FDF&& fdf, double lo, double hi, int subIntervals, std::vect
         ++work.evaluations;
         return df;
     };
-    double t0 = lo, f0 = 0, d0 = 0;
+    auto point = [&](int i) { return i == subIntervals ? hi : lo + (hi - lo) * i / subIntervals; };
+    int first = 1;
+    while (first < subIntervals && !(point(first) > from))
+        ++first;
+    double t0 = first == 1 ? lo : point(first - 1), f0 = 0, d0 = 0;
     fdf(t0, f0, d0);
     ++work.evaluations;
-    for (int i = 1; i <= subIntervals; ++i) {
-        const double t1 = i == subIntervals ? hi : lo + (hi - lo) * i / subIntervals;
+    for (int i = first; i <= subIntervals; ++i) {
+        const double t1 = point(i);
         double f1 = 0, d1 = 0;
         fdf(t1, f1, d1);
         ++work.evaluations;

@@ -24,20 +24,18 @@ enum class Direction {
     Falling // from g > 0 to g <= 0
 };
 
-// A function of tau alone and its slope (members of the model).
+// A function of tau alone and its slope, evaluated together (a member of the model: the scan
+// needs both at every point, and the excitation is evaluated once for them).
 struct TimeEvent {
     EventKind kind;
-    double (SlabModel2D::*g)(double) const;
-    double (SlabModel2D::*slope)(double) const;
+    void (SlabModel2D::*gAndSlope)(double, double&, double&) const;
     Direction direction;
 };
 
 // Lift-off first: where n reaches 0 the window ends, and only then are onsets sought in it.
 inline constexpr std::array<TimeEvent, 2> kTimeEvents{{
-    {EventKind::LiftOff, &SlabModel2D::liftMargin, &SlabModel2D::liftMarginSlope,
-     Direction::Rising},
-    {EventKind::SlipOnset, &SlabModel2D::onsetMargin, &SlabModel2D::onsetMarginSlope,
-     Direction::Rising},
+    {EventKind::LiftOff, &SlabModel2D::liftMarginAndSlope, Direction::Rising},
+    {EventKind::SlipOnset, &SlabModel2D::onsetMarginAndSlope, Direction::Rising},
 }};
 inline constexpr const TimeEvent& kLiftOffEvent = kTimeEvents[0];
 inline constexpr const TimeEvent& kOnsetEvent = kTimeEvents[1];

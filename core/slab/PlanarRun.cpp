@@ -22,7 +22,8 @@ WallEvents wallEvents(const PlanarParams& p) {
 }
 
 PlanarRun::PlanarRun(const SlabModel2D& m, const PlanarOptions& o, PlanarRecorder* recorder)
-    : m_(m), o_(o), recorder_(recorder), mu_(m.params().mu), walls_(wallEvents(m.params())) {}
+    : m_(m), o_(o), recorder_(recorder), mu_(m.params().mu), walls_(wallEvents(m.params())),
+      radauTol_(o.relTol) {}
 
 PlanarResult PlanarRun::run() {
     const PlanarParams& p = m_.params();
@@ -31,14 +32,15 @@ PlanarResult PlanarRun::run() {
         fail("the excitation never decays below mu n: set a duration (tau_out)");
         return r_;
     }
-    startLength_ = m_.horizontalTimeScale() / kSlavedStartDivisions;
+    timeScale_ = m_.horizontalTimeScale();
+    startLength_ = timeScale_ / kSlavedStartDivisions;
     slavedSpeed_ = std::clamp(kSlavedSpeed * std::cbrt(o_.relTol / kSlavedSpeedRtol),
                               kSlavedSpeedMin, kSlavedSpeedMax);
     stiffSpeed_ = kStiffSpeed * mu_ * m_.horizontalTimeScale(); // see isStiff
     if (startsLifted()) return r_;
     double w0 = 0.0;
     while (true) {
-        if (!slipping_ && m_.quietAfter(w0)) {
+        if (!slipping_ && quietAfter(w0)) {
             t_ = std::max(t_, w0);
             event(EventKind::Stable);
             finish(Outcome::Stable);
@@ -96,16 +98,6 @@ PlanarRun::Step PlanarRun::window(double w0, double w1) {
     return finish(Outcome::LiftOff);
 }
 
-// The lift-off event's first root in [w0, w1] (when n may reach 0 there) ends the window.
-bool PlanarRun::scanLiftOff(double w0, double w1, double& wEnd) {
-    if (!m_.mayLiftOn(w0, w1)) return false;
-    roots_.clear();
-    scanTimeEvent(kLiftOffEvent, w0, w1, roots_);
-    if (roots_.empty()) return false;
-    wEnd = roots_.front();
-    return true;
-}
-
 // Slip onset: the slab lags the walls and starts along -a_h.
 PlanarRun::Step PlanarRun::startSlip(double onset) {
     t_ = onset;
@@ -114,48 +106,6 @@ PlanarRun::Step PlanarRun::startSlip(double onset) {
     y_[2] = y_[3] = 0.0;
     ++r_.slab.slipIntervals;
     return event(EventKind::SlipOnset) ? Step::Continue : Step::Done;
-}
-
-// The roots of a time event's function in (lo, hi], appended to out.
-void PlanarRun::scanTimeEvent(const TimeEvent& e, double lo, double hi, std::vector<double>& out) {
-    CrossingScanWork scan;
-    levelCrossings(
-        [&](double t, double& f, double& df) {
-            f = (m_.*e.g)(t);
-            df = (m_.*e.slope)(t);
-        },
-        lo, hi, kTimeEventSub, out, scan);
-    r_.slab.work.accelEvaluations += scan.evaluations;
-    r_.slab.work.rootIterations += scan.iterations;
-}
-
-// The window's onset roots, scanned on first use: cuts_ = {start, roots..., end}.
-void PlanarRun::scanCuts() {
-    if (cutsKnown_) return;
-    cutsKnown_ = true;
-    cuts_.clear();
-    cuts_.push_back(winStart_);
-    if (!m_.quietOn(winStart_, winEnd_)) scanTimeEvent(kOnsetEvent, winStart_, winEnd_, cuts_);
-    cuts_.push_back(winEnd_);
-}
-
-// The first time at or after `from` in the window where the slab slips (|a_h| > mu n on the
-// piece that follows); winEnd_ when there is none.
-double PlanarRun::nextOnset(double from) {
-    if (m_.quietOn(from, winEnd_)) return winEnd_;
-    scanCuts();
-    for (std::size_t i = 0; i + 1 < cuts_.size(); ++i) {
-        const double lo = std::max(cuts_[i], from), hi = cuts_[i + 1];
-        if (hi > lo && m_.onsetMargin(0.5 * (lo + hi)) > 0.0) return lo;
-    }
-    return winEnd_;
-}
-
-// The first onset root after tau in the window (winEnd_ when none): where a slaved stretch ends.
-double PlanarRun::nextCut(double tau) {
-    scanCuts();
-    const auto it = std::upper_bound(cuts_.begin(), cuts_.end(), tau);
-    return it == cuts_.end() ? winEnd_ : *it;
 }
 
 void PlanarRun::moveTo(double tau, const Vec4& y) {

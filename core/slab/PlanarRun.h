@@ -2,7 +2,8 @@
 #pragma once
 // One run of the planar solver (core/slab/PlanarSolver.h; docs/theory.md §5, §6.5): the class is
 // private to the solver and its methods live in one file per concern:
-//   PlanarRun.cpp           the time line: windows, time events (onset, lift-off), results
+//   PlanarRun.cpp           the time line: windows, slip onsets, events, results
+//   PlanarTimeEvents.cpp    the time events' scans (onset, lift-off) on a window
 //   PlanarSlip.cpp          a slip's steps: DOP853, or Radau IIA where the slip is stiff
 //   PlanarSlaved.cpp        the slaved slip on the slow manifold at small |u|
 //   PlanarStopApproach.cpp  the approach of a stop in s = ln|u|
@@ -30,7 +31,9 @@ inline constexpr double kRateFloor = 1e-300;
 // A step below this times max(1, tau) is lost in the rounding of tau: the run fails.
 inline constexpr double kStepUnderflow = 1e-15;
 // Sub-intervals of a window scanned for time events (each holds at most one extremum of
-// |a_h| - mu n: a window is at most a half-period of each component or one record sample).
+// |a_h| - mu n: a window is at most a half-period of each component or one record sample). A
+// window shorter than the horizontal time scale T takes fewer, none longer than T / kTimeEventSub
+// (a record sample of 0.1 tau takes one where it took eight: the scans were a tenth of a run).
 inline constexpr int kTimeEventSub = 8;
 // A slip's stop is taken once |u| is below this times its peak speed: the rest of the way is
 // |u| / D, in error by O(|u|^2) (F7 (c), docs/theory.md §6.5).
@@ -116,16 +119,22 @@ private:
     // Time line (PlanarRun.cpp).
     bool startsLifted();
     Step window(double w0, double w1);
-    bool scanLiftOff(double w0, double w1, double& wEnd);
     Step startSlip(double onset);
-    void scanTimeEvent(const TimeEvent& e, double lo, double hi, std::vector<double>& out);
-    void scanCuts();
-    double nextOnset(double from);
-    double nextCut(double tau);
     void moveTo(double tau, const Vec4& y);
     bool event(EventKind kind);
     Step finish(Outcome o);
     Step fail(const std::string& why);
+
+    // Time events (PlanarTimeEvents.cpp).
+    bool scanLiftOff(double w0, double w1, double& wEnd);
+    void scanTimeEvent(const TimeEvent& e, double lo, double hi, std::vector<double>& out,
+                       double from = -INFINITY);
+    int onsetSubIntervals(double lo, double hi) const;
+    void scanCuts(double from, bool quiet);
+    double nextOnset(double from);
+    double nextCut(double tau);
+    bool quietOn(double lo, double hi);
+    bool quietAfter(double tau);
 
     // Slip (PlanarSlip.cpp).
     Vec4 rhs(double tau, const Vec4& y);
@@ -176,6 +185,7 @@ private:
     bool slipping_ = false;
     double hNext_ = 0;             // step proposal in tau
     double slipPeak_ = 0;          // largest |u| of the current slip (scale of the stop floor)
+    double timeScale_ = 0;         // the horizontal time scale T
     double startLength_ = 0;       // first step of a slaved slip
     double slavedSpeed_ = 0;       // below this |u| a slip may be slaved
     SlipRadauPolynomial lastPoly_; // the last accepted step's (h = 0: it was explicit)
@@ -185,8 +195,9 @@ private:
         double h = 0.0, err = 0.0; // err floored at kErrorFloor
         bool implicit = false;
     } lastStep_;
-    double stiffSpeed_ = 0; // over mu n: below it a slip takes implicit steps
-    double fsalT_ = -1.0;   // the last accepted step's end, state and derivative
+    double stiffSpeed_ = 0;             // over mu n: below it a slip takes implicit steps
+    radau::EstimateTolerance radauTol_; // the implicit steps' estimate tolerances
+    double fsalT_ = -1.0;               // the last accepted step's end, state and derivative
     Vec4 fsalY_ = Vec4::Zero(), fsalF_ = Vec4::Zero();
     // The slip loop's memory between steps: whether the last trial was rejected or implicit.
     bool rejected_ = true, lastImplicit_ = false;
@@ -194,6 +205,11 @@ private:
     // across windows so that no window allocates.
     double winStart_ = 0, winEnd_ = 0;
     bool cutsKnown_ = false;
+    // Where the model's bounds were asked ahead (see quietOn, quietAfter).
+    struct {
+        double lo = 0.0, hi = -1.0;
+    } quietSpan_;
+    double loudSpanEnd_ = -1.0, loudUntil_ = -1.0;
     std::vector<double> cuts_, roots_;
 };
 

@@ -130,7 +130,7 @@ PlanarRun::Trial PlanarRun::trial(bool implicit, double t0, const Vec4& y0, cons
     const Vec4 absTol = Vec4::Constant(o_.absTol);
     if (implicit) {
         // The previous step's polynomial is used only when it ended at t0 (slipRadauStep checks).
-        const SlipRadauStep st = slipRadauStep(m_, t0, y0, f0, h, absTol, o_.relTol, refine,
+        const SlipRadauStep st = slipRadauStep(m_, t0, y0, f0, h, absTol, radauTol_, refine,
                                                lastPoly_.h > 0.0 ? &lastPoly_ : nullptr);
         r_.slab.work.accelEvaluations += st.evaluations;
         r_.slab.work.rootIterations += st.newton;

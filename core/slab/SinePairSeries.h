@@ -11,7 +11,7 @@
 // z_p^k - z_q^k = z_p (z_p^{k-1} - z_q^{k-1}) + d z_q^{k-1}, so nothing cancels when q ~ p.
 // |z delta| <= 1/2 on a patch: the terms past degree 15 are below 1e-18 of K, and the value is a
 // pure function of tau (the patch grid does not depend on which times were asked before).
-// Not safe to share between threads: it keeps the last two patches.
+// Not safe to share between threads: it keeps the last patches it built.
 
 #include <array>
 #include <complex>
@@ -49,8 +49,10 @@ private:
         std::array<std::complex<double>, kDegree + 1> zp{}; // z_p^k / k!
         std::array<std::complex<double>, kDegree + 1> dz{}; // (z_p^k - z_q^k) / k!
     };
-    // A patch's Taylor terms of both components. Two are kept (even and odd index): a step or a
-    // root search that straddles a patch boundary would otherwise rebuild them in turn.
+    // A patch's Taylor terms of both components. kPatches are kept, by index modulo kPatches: a
+    // step or a root search that straddles a patch boundary would otherwise rebuild them in turn,
+    // and a window's onset scan runs ahead over several patches that its slip then steps
+    // through again (with two kept, the scans' rebuilds were two thirds of all).
     struct Patch {
         long index = -1;
         std::array<Pair, kDegree + 1> c{};
@@ -61,7 +63,7 @@ private:
     const Patch* patchFor(double tau, double& delta) {
         if (!(tau >= 0.0 && tau <= kMaxTau)) return nullptr;
         const long k = static_cast<long>(tau * inverseLength_);
-        Patch& patch = patches_[static_cast<std::size_t>(k & 1)];
+        Patch& patch = patches_[static_cast<std::size_t>(k) % kPatches];
         if (patch.index != k) build(patch, k);
         delta = tau - (static_cast<double>(k) + 0.5) * length_;
         return &patch;
@@ -87,7 +89,8 @@ private:
 
     std::array<Component, 2> lanes_; // x, y
     double p_ = 0.0, q_ = 0.0, length_ = 0.0, inverseLength_ = 0.0;
-    std::array<Patch, 2> patches_;
+    static constexpr std::size_t kPatches = 8;
+    std::array<Patch, kPatches> patches_;
 };
 
 } // namespace kinstab

@@ -28,7 +28,8 @@ double slopeBound(const EnvelopedSine& c) {
 SlabModel2D::SlabModel2D(std::shared_ptr<const Excitation1D> ax,
                          std::shared_ptr<const Excitation1D> ay,
                          std::shared_ptr<const Excitation1D> az, PlanarParams params)
-    : ax_(std::move(ax)), ay_(std::move(ay)), az_(std::move(az)), params_(params) {
+    : ax_(std::move(ax)), ay_(std::move(ay)), az_(std::move(az)), params_(params),
+      liftPossible_(az_ && !(az_->boundAfter(0.0) < 1.0)) {
     const auto* x = dynamic_cast<const EnvelopedSine*>(ax_.get());
     const auto* y = dynamic_cast<const EnvelopedSine*>(ay_.get());
     if (x && (y || !ay_)) slopeBound_ = std::hypot(slopeBound(*x), y ? slopeBound(*y) : 0.0);
@@ -57,16 +58,26 @@ Vec2 SlabModel2D::accelSlope(double tau) const {
     return {x_.slope(*ax_, tau), ay_ ? y_.slope(*ay_, tau) : 0.0};
 }
 double SlabModel2D::normalSlope(double tau) const {
-    if (z_.covers(tau)) return z_.piece.slope;
-    return az_ ? az_->accelSlope(tau) : 0.0;
+    return az_ ? z_.slope(*az_, tau) : 0.0;
 }
 
 void SlabModel2D::WindowPiece::enter(const Excitation1D* a, double l, double h) {
     lo = hi = 0.0;
-    if (a && a->linearOn(l, h, piece)) {
+    endKnown = false;
+    start = NAN;
+    if (!a) return;
+    if (a->linearOn(l, h, piece)) {
         lo = l;
         hi = h;
+        return;
     }
+    const double next = std::nextafter(l, h);
+    if (!(next < h) || !a->linearOn(next, h, piece)) return;
+    lo = next;
+    hi = h;
+    start = l;
+    startAccel = a->accel(l);
+    startSlope = piece.slope; // the window's side: a scan of [l, h) needs the slope into it
 }
 
 void SlabModel2D::enterWindow(double lo, double hi) const {
@@ -89,6 +100,14 @@ double SlabModel2D::onsetMarginSlope(double tau) const {
     return dm - params_.mu * normalSlope(tau);
 }
 
+void SlabModel2D::onsetMarginAndSlope(double tau, double& g, double& slope) const {
+    const Vec2 a = accel(tau), s = accelSlope(tau);
+    const double m = norm2(a.x, a.y);
+    const double dm = m > 0.0 ? (a.x * s.x + a.y * s.y) / m : norm2(s.x, s.y);
+    g = m - params_.mu * normal(tau);
+    slope = dm - params_.mu * normalSlope(tau);
+}
+
 bool SlabModel2D::quietAfter(double tau) const {
     const double b = horizontalBound(ax_->boundAfter(tau), [&] { return ay_->boundAfter(tau); });
     const double nMin = 1.0 - (az_ ? az_->boundAfter(tau) : 0.0);
@@ -105,10 +124,6 @@ bool SlabModel2D::quietOn(double lo, double hi) const {
     if (!std::isfinite(slopeBound_)) return false;
     const Vec2 a = accel(0.5 * (lo + hi));
     return (norm2(a.x, a.y) + 0.5 * (hi - lo) * slopeBound_) * (1.0 + 1e-12) < params_.mu * nMin;
-}
-
-bool SlabModel2D::mayLiftOn(double lo, double hi) const {
-    return az_ && az_->boundOn(lo, hi) >= 1.0;
 }
 
 double SlabModel2D::segmentEnd(double tau) const {

@@ -52,19 +52,26 @@ public:
     }
     Vec2 accelSlope(double tau) const; // a_h'
     double normal(double tau) const {  // n = 1 + a_z
-        if (z_.covers(tau)) return 1.0 + z_.piece.accel(tau);
-        return 1.0 + (az_ ? az_->accel(tau) : 0.0);
+        if (!az_) return 1.0;
+        return 1.0 + z_.accel(*az_, tau);
     }
     double normalSlope(double tau) const;
-    // The solver works in [lo, hi) next (a window of the time line, inside one segment of each
-    // component): a component that is one linear piece there (a record inside one sample
-    // interval) is evaluated from that piece, without finding its sample interval at every call
-    // (issue 34: the lookup was a tenth of a run with a vertical record). The same bits as
-    // without: outside [lo, hi) and where a piece is not known, the components themselves.
+    // The solver works in [lo, hi] next (a window of the time line, inside one segment of each
+    // component): a component that is one linear piece on [lo, hi) (a record inside one sample
+    // interval) is evaluated from that piece, and at hi from its value there, asked once, without
+    // finding its sample interval at every call (issue 34: the lookup was a tenth of a run with a
+    // vertical record; the steps and scans that end at hi had still looked it up). The same bits
+    // as without (but a slope at a sample time, see WindowPiece); elsewhere, the components'.
     void enterWindow(double lo, double hi) const;
     // g_on = |a_h| - mu n: the slab slips where it is positive (a time-only event).
     double onsetMargin(double tau) const;
     double onsetMarginSlope(double tau) const;
+    // Both at once (a_h and n evaluated once), with the same bits as the two calls.
+    void onsetMarginAndSlope(double tau, double& g, double& slope) const;
+    void liftMarginAndSlope(double tau, double& g, double& slope) const {
+        g = liftMargin(tau);
+        slope = liftMarginSlope(tau);
+    }
     // g_lift = -n: the slab leaves its support where it is positive (a time-only event).
     double liftMargin(double tau) const { return -normal(tau); }
     double liftMarginSlope(double tau) const { return -normalSlope(tau); }
@@ -75,7 +82,9 @@ public:
     // envelopes, or |a_h| at the middle plus the bound on |a_h'| times the half-length).
     bool quietOn(double lo, double hi) const;
     // True when n may reach 0 inside [lo, hi].
-    bool mayLiftOn(double lo, double hi) const;
+    bool mayLiftOn(double lo, double hi) const {
+        return liftPossible_ && az_->boundOn(lo, hi) >= 1.0;
+    }
     // Next cut of the time line: the earliest segment end of any component.
     double segmentEnd(double tau) const;
     // Length of the first segment of the horizontal motion (a half-period for a sine): the
@@ -87,16 +96,35 @@ public:
     bool hasAlongWalls() const { return ay_ != nullptr; }
 
 private:
-    // A component's linear piece on the current window [lo, hi), when it has one.
+    // A component's linear piece on the current window [lo, hi), when it has one, and its value
+    // and slope at hi (the next piece's there), asked of the component on first use. A window that
+    // starts at a sample time the component reads from the piece before (floor(tau / h) rounds
+    // down there: 7 % of RSN68's samples at t* 0.099) is the piece from the next double on; at its
+    // start the value is the component's, the slope the piece's (the window's side, for scans).
     struct WindowPiece {
         double lo = 0, hi = 0; // empty: covers nothing
         LinearPiece piece;
+        double start = NAN, startAccel = 0, startSlope = 0; // NaN: lo is the window's start
+        mutable bool endKnown = false;
+        mutable double endAccel = 0, endSlope = 0;
         bool covers(double tau) const { return tau >= lo && tau < hi; }
         double accel(const Excitation1D& a, double tau) const {
-            return covers(tau) ? piece.accel(tau) : a.accel(tau);
+            if (covers(tau)) return piece.accel(tau);
+            if (tau == hi && hi > lo) return end(a).endAccel;
+            return tau == start ? startAccel : a.accel(tau);
         }
         double slope(const Excitation1D& a, double tau) const {
-            return covers(tau) ? piece.slope : a.accelSlope(tau);
+            if (covers(tau)) return piece.slope;
+            if (tau == hi && hi > lo) return end(a).endSlope;
+            return tau == start ? startSlope : a.accelSlope(tau);
+        }
+        const WindowPiece& end(const Excitation1D& a) const {
+            if (!endKnown) {
+                endKnown = true;
+                endAccel = a.accel(hi);
+                endSlope = a.accelSlope(hi);
+            }
+            return *this;
         }
         void enter(const Excitation1D* a, double l, double h);
     };
@@ -112,6 +140,9 @@ private:
     double boundRatio_ = 0.0; // with series_: K_y / K_x folded in, sqrt(1 + (K_y/K_x)^2)
     double horizontalBound(double bx, auto&& yBound) const;
     PlanarParams params_;
+    // False when |a_z| stays below 1 g over the whole motion: n > 0 throughout, and no window
+    // needs its bound (with a vertical record that was a twentieth of a run).
+    bool liftPossible_ = false;
     // Bound on |a_h'| over all time (both components enveloped sines; infinite otherwise).
     double slopeBound_ = std::numeric_limits<double>::infinity();
 };

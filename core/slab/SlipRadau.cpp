@@ -32,6 +32,7 @@ Slip slipAt(const Vec2d& u, const Vec2d& a, double mun) {
 
 constexpr int kS = radau::kStages;
 using Stages = Eigen::Matrix<double, 2 * kS, 1>; // the stage velocity increments, two per stage
+using StageMatrix = std::array<std::array<double, kS>, kS>;
 
 double rmsNorm(const Stages& v, const Vec2d& scale) {
     double s = 0.0;
@@ -87,22 +88,29 @@ double errorNorm(const SlabModel2D& m, double t0, const OdeVec<4>& y0, const Ode
 // M = I + Q^T W, M_jk = delta_jk + h A_jk c_k p_j.p_k: the same solution as a 10x10 LU, at a
 // fraction of its cost (with three stages the 6x6 LU had been a tenth of the planar solver's
 // time). M is solved by core/numerics/SmallLinearSolve.h.
-Stages newtonCorrection(const std::array<Slip, kS>& s, double h, const Stages& rhs) {
-    using namespace radau;
+// hA = h A, formed once per step. p_j.p_k is symmetric: formed once per pair.
+Stages newtonCorrection(const std::array<Slip, kS>& s, const StageMatrix& hA, const Stages& rhs) {
     Eigen::Matrix<double, kS, kS> m;
     Eigen::Matrix<double, kS, 1> qb;
+    std::array<std::array<double, kS>, kS> dot;
     for (int j = 0; j < kS; ++j) {
         qb[j] = s[j].normal.dot(rhs.segment<2>(2 * j));
-        for (int k = 0; k < kS; ++k)
-            m(j, k) =
-                (j == k ? 1.0 : 0.0) + h * kA[j][k] * s[k].rate * s[j].normal.dot(s[k].normal);
+        for (int k = j; k < kS; ++k)
+            dot[j][k] = dot[k][j] = s[j].normal.dot(s[k].normal);
     }
+    for (int j = 0; j < kS; ++j)
+        for (int k = 0; k < kS; ++k)
+            m(j, k) = (j == k ? 1.0 : 0.0) + hA[j][k] * s[k].rate * dot[j][k];
     Eigen::Matrix<double, kS, 1>& y = qb;
     if (!solveInPlace<kS>(m, y)) y.setConstant(NAN); // Newton then stops: no finite norm
     Stages dz = rhs;
-    for (int i = 0; i < kS; ++i)
-        for (int k = 0; k < kS; ++k)
-            dz.segment<2>(2 * i) -= h * kA[i][k] * s[k].rate * y[k] * s[k].normal;
+    for (int k = 0; k < kS; ++k) {
+        std::array<double, kS> w;
+        for (int i = 0; i < kS; ++i)
+            w[i] = hA[i][k] * s[k].rate * y[k];
+        for (int i = 0; i < kS; ++i)
+            dz.segment<2>(2 * i) -= w[i] * s[k].normal;
+    }
     return dz;
 }
 
@@ -151,19 +159,32 @@ Eigen::Vector2d SlipRadauPolynomial::displacement(double x) const {
 SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0,
                             const OdeVec<4>& f0, double h, const OdeVec<4>& absTol, double relTol,
                             bool refine, const SlipRadauPolynomial* guess) {
-    using namespace radau;
-    SlipRadauStep r;
-    const double mu = m.params().mu;
-    const Vec2d u0(y0[2], y0[3]);
+    return slipRadauStep(m, t0, y0, f0, h, absTol, radau::EstimateTolerance(relTol), refine, guess);
+}
+
+namespace {
+
+// The stage times' a_h and mu n: the only evaluations of the step.
+struct StageForcing {
     std::array<Vec2d, kS> a;
     std::array<double, kS> mun;
+};
+StageForcing stageForcing(const SlabModel2D& m, double t0, double h) {
+    StageForcing f;
+    const double mu = m.params().mu;
     for (int i = 0; i < kS; ++i) {
-        const double t = t0 + kC[i] * h;
+        const double t = t0 + radau::kC[i] * h;
         const Vec2 ai = m.accel(t);
-        a[i] = Vec2d(ai.x, ai.y);
-        mun[i] = mu * m.normal(t);
+        f.a[i] = Vec2d(ai.x, ai.y);
+        f.mun[i] = mu * m.normal(t);
     }
-    r.evaluations = kS;
+    return f;
+}
+
+// Newton's starting stages.
+Stages startingStages(const Vec2d& u0, double t0, double h, const StageForcing& f,
+                      const SlipRadauPolynomial* guess) {
+    using namespace radau;
     Stages z;
     if (guess && guess->h > 0.0 && guess->t0 + guess->h == t0 && h <= kMaxGrowth * guess->h) {
         // Start from the previous step's collocation polynomial, extrapolated: no further than
@@ -177,42 +198,63 @@ SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0
         // Start: each stage slides along u0's direction under its own a_h and n.
         const Vec2d e0 = u0 / u0.norm();
         for (int i = 0; i < kS; ++i)
-            z.segment<2>(2 * i) = kC[i] * h * (-a[i] - mun[i] * e0);
+            z.segment<2>(2 * i) = kC[i] * h * (-f.a[i] - f.mun[i] * e0);
     }
-    // Newton's corrections are measured against the error estimate's tolerances and stopped, as
-    // in RADAU5, when the contraction rate says the rest is below fnewt of them.
-    const EstimateTolerance tol(relTol);
-    const Vec2d scale(tol.scale(absTol[2], std::abs(u0[0])), tol.scale(absTol[3], std::abs(u0[1])));
-    const double fnewt = std::max(10.0 * 2.2e-16 / tol.rtol, std::min(0.03, std::sqrt(tol.rtol)));
+    return z;
+}
+
+// Newton's iteration on the stages z (in place); false when it fails (a stage at rest or turned
+// against u0, no finite norm, divergence, or no convergence in kSlipRadauMaxNewton). Newton's
+// corrections are measured against the error estimate's tolerances and stopped, as in RADAU5,
+// when the contraction rate says the rest is below fnewt of them.
+bool newtonSolve(Stages& z, const Vec2d& u0, const StageForcing& f, const StageMatrix& hA,
+                 const Vec2d& scale, double fnewt, int& iterations) {
     std::array<Slip, kS> s;
-    bool converged = false;
     double lastNorm = INFINITY;
-    for (int k = 0; k < kSlipRadauMaxNewton && !converged; ++k) {
+    for (int k = 0; k < kSlipRadauMaxNewton; ++k) {
         Stages g = z;
         for (int j = 0; j < kS; ++j) {
             const Vec2d uj = u0 + z.segment<2>(2 * j);
             // A stage at rest or turned against u0 holds a stop: not this step's business.
-            if (!(uj.dot(u0) > 0.0)) return r;
-            s[j] = slipAt(uj, a[j], mun[j]);
+            if (!(uj.dot(u0) > 0.0)) return false;
+            s[j] = slipAt(uj, f.a[j], f.mun[j]);
         }
         for (int i = 0; i < kS; ++i)
             for (int j = 0; j < kS; ++j)
-                g.segment<2>(2 * i) -= h * kA[i][j] * s[j].f;
-        const Stages dz = newtonCorrection(s, h, -g);
+                g.segment<2>(2 * i) -= hA[i][j] * s[j].f;
+        const Stages dz = newtonCorrection(s, hA, -g);
         z += dz;
-        r.newton = k + 1;
+        iterations = k + 1;
         const double norm = rmsNorm(dz, scale);
-        if (!std::isfinite(norm)) return r;
-        if (k == 0) {
-            converged = norm <= 1e-2 * fnewt;
-        } else {
-            const double theta = norm / lastNorm;
-            if (theta >= 1.0 && k >= 2) return r; // diverges
-            converged = theta < 1.0 && theta / (1.0 - theta) * norm <= fnewt;
-        }
+        if (!std::isfinite(norm)) return false;
+        const double theta = norm / lastNorm;
+        if (k > 0 && theta >= 1.0 && k >= 2) return false; // diverges
+        const bool converged =
+            k == 0 ? norm <= 1e-2 * fnewt : theta < 1.0 && theta / (1.0 - theta) * norm <= fnewt;
+        if (converged) return true;
         lastNorm = norm;
     }
-    if (!converged) return r;
+    return false;
+}
+
+} // namespace
+
+SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0,
+                            const OdeVec<4>& f0, double h, const OdeVec<4>& absTol,
+                            const radau::EstimateTolerance& tol, bool refine,
+                            const SlipRadauPolynomial* guess) {
+    SlipRadauStep r;
+    const Vec2d u0(y0[2], y0[3]);
+    const StageForcing f = stageForcing(m, t0, h);
+    r.evaluations = kS;
+    Stages z = startingStages(u0, t0, h, f, guess);
+    const Vec2d scale(tol.scale(absTol[2], std::abs(u0[0])), tol.scale(absTol[3], std::abs(u0[1])));
+    const double fnewt = std::max(10.0 * 2.2e-16 / tol.rtol, std::min(0.03, std::sqrt(tol.rtol)));
+    StageMatrix hA;
+    for (int i = 0; i < kS; ++i)
+        for (int j = 0; j < kS; ++j)
+            hA[i][j] = h * radau::kA[i][j];
+    if (!newtonSolve(z, u0, f, hA, scale, fnewt, r.newton)) return r;
     std::array<Vec2d, kS> u;
     for (int j = 0; j < kS; ++j)
         u[j] = u0 + z.segment<2>(2 * j);
@@ -222,11 +264,11 @@ SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0
     for (int i = 0; i < kS; ++i) {
         zd[i] = Vec2d::Zero();
         for (int j = 0; j < kS; ++j)
-            zd[i] += h * kA[i][j] * u[j];
+            zd[i] += hA[i][j] * u[j];
     }
     const Vec2d dd = zd[kS - 1];
     const Vec2d& u1 = u[kS - 1];
-    const Slip end = slipAt(u1, a[kS - 1], mun[kS - 1]);
+    const Slip end = slipAt(u1, f.a[kS - 1], f.mun[kS - 1]);
     r.y << y0[0] + dd[0], y0[1] + dd[1], u1[0], u1[1];
     r.f << u1[0], u1[1], end.f[0], end.f[1];
     r.poly = SlipRadauPolynomial(t0, h, u0, u);

@@ -53,5 +53,11 @@ inline constexpr int kSlipRadauMaxNewton = 8;
 SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0,
                             const OdeVec<4>& f0, double h, const OdeVec<4>& absTol, double relTol,
                             bool refine, const SlipRadauPolynomial* guess = nullptr);
+// The same with the estimate's tolerances formed once by the caller (a run: the cube root per
+// step was a hundredth of the planar solver's instructions).
+SlipRadauStep slipRadauStep(const SlabModel2D& m, double t0, const OdeVec<4>& y0,
+                            const OdeVec<4>& f0, double h, const OdeVec<4>& absTol,
+                            const radau::EstimateTolerance& tol, bool refine,
+                            const SlipRadauPolynomial* guess = nullptr);
 
 } // namespace kinstab

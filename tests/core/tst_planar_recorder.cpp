@@ -2,7 +2,8 @@
 // What a planar run keeps is the recorder's choice and changes nothing of the run
 // (core/slab/PlanarRecorder.h), and the window's linear piece of a recorded component gives the
 // same bits as the motion itself (Excitation1D::linearOn, SlabModel2D::enterWindow). The
-// expected values are the runs' and the motion's own: these are identities, not references.
+// expected values are the runs' and the motion's own: these are identities, not references
+// (but the last test's, whose reference is named there).
 
 #include "core/excitation/RecordedMotion.h"
 #include "core/records/RecordReader.h"
@@ -95,6 +96,45 @@ private slots:
             QVERIFY(sameBits(windowed.normalSlope(tau), plain.normalSlope(tau)));
             QVERIFY(sameBits(windowed.onsetMargin(tau), plain.onsetMargin(tau)));
         }
+    }
+
+    // A window that starts at a sample time the record reads from the interval before (31 h at
+    // t* 0.099: floor(tau / h) gives 30 there, so [31 h, 32 h) is not one piece, checked first)
+    // gives the motion's bits everywhere but the slope at its start, which is the window's own
+    // (its piece's, as at any time inside it).
+    void aWindowAtARoundedSampleTime() {
+        const Accelerogram rec = readRecord(kRecords + "RSN68_SFERN_PEL-UP.AT2");
+        PlanarCase c = slippingCase();
+        c.vertical = verticalMotion(rec, c.common.tstar);
+        const SlabModel2D plain = planarModel(c, 0.9, 1.5);
+        const SlabModel2D windowed = planarModel(c, 0.9, 1.5);
+        const double h = 0.01 / c.common.tstar;
+        const double lo = h * 31.0, hi = h * 32.0;
+        LinearPiece piece;
+        QVERIFY(!RecordedMotion(rec, c.common.tstar).linearOn(lo, hi, piece));
+        windowed.enterWindow(lo, hi);
+        for (int i = 0; i <= 16; ++i) {
+            const double tau = lo + (hi - lo) * i / 16.0;
+            QVERIFY(sameBits(windowed.normal(tau), plain.normal(tau)));
+            QVERIFY(sameBits(windowed.onsetMargin(tau), plain.onsetMargin(tau)));
+            if (i > 0) QVERIFY(sameBits(windowed.normalSlope(tau), plain.normalSlope(tau)));
+        }
+        QVERIFY(sameBits(windowed.normalSlope(lo), plain.normalSlope(0.5 * (lo + hi))));
+    }
+
+    // A hump of |a_h| - mu n inside one record sample whose ends are both below 0 (RSN68 UP,
+    // A_x 0.5 g at 1.625 Hz, f_y 1 Hz, tau 57.37-57.47): found, so the slab slips there once. The
+    // reference is the solver before issue 34's scans (commit 0664031): stable, six slips, the
+    // sixth from tau 57.3903 to 57.9506. With a scan that took the next sample's slope at the
+    // window's end the hump went unseen and a slip started and stopped at tau 57.3737 until the
+    // event guard failed the run.
+    void aHumpInsideOneSampleIsFound() {
+        const Accelerogram rec = readRecord(kRecords + "RSN68_SFERN_PEL-UP.AT2");
+        PlanarCase c = slippingCase();
+        c.vertical = verticalMotion(rec, c.common.tstar);
+        const PlanarResult r = runPlanar(c, 0.5, 1.625);
+        QCOMPARE(r.slab.outcome, Outcome::Stable);
+        QCOMPARE(r.slab.slipIntervals, 6);
     }
 };
 
