@@ -9,6 +9,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/PlanarFlags.h"
 #include "app/cli/RecordFlags.h"
+#include "core/base/JsonValue.h"
 #include "core/check/RecordAnalysis.h"
 #include "core/io/JsonText.h"
 #include "core/io/PlanarResultJson.h"
@@ -63,7 +64,7 @@ int runSimulatePlanarRecord(const Args& args) {
     j["floor_filter"] = e.floor ? floorFilterJson(*e.floor) : nlohmann::json();
     j["amplitude"] = m.peakX;
     j["scale_factor"] = m.peakX / std::abs(m.x.peak().value);
-    j["tau_ref"] = tauRef ? nlohmann::json(*tauRef) : nlohmann::json();
+    j["tau_ref"] = orNull(tauRef);
     j["wall_time_s"] = wall;
     if (args.has("events")) j["events"] = planarEventsJson(log.events.events);
     if (args.has("history")) writeOutput(args, "history", planarHistoryCsv(model, log.path.path));
