@@ -30,8 +30,6 @@
 
 namespace kinstab::ui {
 
-namespace {} // namespace
-
 Slab1DCase MainWindow::currentCase() const {
     Slab1DCase c = m_project.slab; // duration and paper steps are not on a panel
     m_slabPanel->apply(c);
