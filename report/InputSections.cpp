@@ -66,20 +66,6 @@ QString scaleLabel(TauScale s) {
     return {};
 }
 
-QString gammaLabel(const Slab1DCase& c) {
-    switch (c.scale) {
-    case TauScale::TauRise:
-        return QStringLiteral("γc = τrise/τc");
-    case TauScale::TauMax:
-        return QStringLiteral("γc = τmax/τc");
-    case TauScale::TauDur:
-        return QStringLiteral("γc = τdur/τc");
-    case TauScale::One:
-        return QStringLiteral("γc = 1/τc");
-    }
-    return QStringLiteral("γc");
-}
-
 namespace {
 
 QString listText(const std::vector<double>& v, const QString& unit) {

@@ -32,7 +32,6 @@ QString lengthSymbolOf(const Project& p, LengthScale scale);
 QString lengthOf(const Project& p, double metres, LengthScale scale);
 double buildingMetres(const Building& b, double v);
 std::vector<double> levelHeightsShown(const Project& p); // levelHeights in the shown unit
-QString gammaLabel(const Slab1DCase& c);                 // "γc = τmax/τc"
 QString scaleLabel(TauScale s); // "τ_max (peak of the envelope)", not the key tau_max
 
 // Page 1 (FrontMatter.cpp): the revision table under the title block (the last three revisions),

@@ -54,7 +54,7 @@ Table gammaTable(const Project& p, const ReportAnalysis& a) {
 } // namespace
 
 void addSurfaceSections(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {
-    const QString gl = gammaLabel(p.slab);
+    const QString gl = qs(gammaScaleLabel(p.slab.scale));
     const QString env = envelopeWords(p.slab.envelope);
     doc.addSection(QStringLiteral("Collapse factor γc(A, f)"));
     doc.addParagraph(

@@ -31,7 +31,8 @@ void addSymbolTable(ReportDocument& doc, const Project& p, const ReportAnalysis&
     t.rows.push_back({"τ, τc", "time in units of t*; τc: when the slab slides off", "—"});
     t.rows.push_back({"δ", "slip of the slab across the walls in units of d/2", "—"});
     t.rows.push_back(
-        {"γc", gammaLabel(p.slab) + ": collapse factor, 0 where the slab stays on", "—"});
+        {"γc", qs(gammaScaleLabel(p.slab.scale)) + ": collapse factor, 0 where the slab stays on",
+         "—"});
     t.rows.push_back({"α, β", "decay and rise rates of the envelope e(t)", "1/s"});
     if (p.model == ModelKind::Planar)
         t.rows.push_back({"f_y, A_y, Θ",

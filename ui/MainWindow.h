@@ -89,7 +89,7 @@ public:
     ModelPanel* modelPanel() const { return m_modelPanel; }
     PlanarHistoryChart* planarHistoryChart() const { return m_planarHistory; }
     // The planar case the surface was computed with (none: the 1-DOF model).
-    const std::optional<PlanarCase>& sweepPlanarCase() const;
+    std::optional<PlanarCase> sweepPlanarCase() const;
     const std::optional<PlanarPointRun>& pickedPlanarRun() const {
         return m_results.pickedPlanar();
     }

@@ -22,7 +22,7 @@ void MainWindow::exportSurface() {
     }
     const SweepResult& sweep = m_results.surface()->sweep; // with the inputs it was run with
     const Slab1DCase& sweepCase = m_results.surface()->slabCase;
-    const std::optional<PlanarCase>& sweepPlanar = m_results.surface()->planar;
+    const std::optional<PlanarCase> sweepPlanar = m_results.surface()->planarCase();
     const QString path = QFileDialog::getSaveFileName(
         this, tr("Export surface"), inProjectFolder(m_path, QStringLiteral("surface.csv")),
         tr("CSV (*.csv);;JSON (*.json)"));

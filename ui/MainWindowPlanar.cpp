@@ -31,7 +31,7 @@ QString MainWindow::modelTitle() const {
 
 void MainWindow::pickPlanar(double amplitude, double frequency) {
     m_results.setPicked(std::nullopt,
-                        runPlanarPoint(*m_results.surface()->planar, amplitude, frequency));
+                        runPlanarPoint(*m_results.surface()->planarCase(), amplitude, frequency));
     m_planarHistory->setRun(*m_results.pickedPlanar());
     m_historyStack->setCurrentWidget(m_planarHistory);
 }

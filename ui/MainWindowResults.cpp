@@ -30,9 +30,8 @@ const SweepResult& MainWindow::lastSweep() const {
     return m_results.surface() ? m_results.surface()->sweep : none;
 }
 
-const std::optional<PlanarCase>& MainWindow::sweepPlanarCase() const {
-    static const std::optional<PlanarCase> none;
-    return m_results.surface() ? m_results.surface()->planar : none;
+std::optional<PlanarCase> MainWindow::sweepPlanarCase() const {
+    return m_results.surface() ? m_results.surface()->planarCase() : std::nullopt;
 }
 
 void MainWindow::clearResults() {

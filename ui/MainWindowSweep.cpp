@@ -30,22 +30,6 @@
 
 namespace kinstab::ui {
 
-namespace {
-QString gammaTitle(TauScale s) {
-    switch (s) {
-    case TauScale::TauRise:
-        return QStringLiteral("γc = τ_rise/τc");
-    case TauScale::TauMax:
-        return QStringLiteral("γc = τ_max/τc");
-    case TauScale::TauDur:
-        return QStringLiteral("γc = τ_dur/τc");
-    case TauScale::One:
-        return QStringLiteral("γc = 1/τc");
-    }
-    return QStringLiteral("γc");
-}
-} // namespace
-
 Slab1DCase MainWindow::currentCase() const {
     Slab1DCase c = m_project.slab; // duration and paper steps are not on a panel
     m_slabPanel->apply(c);
@@ -99,7 +83,7 @@ void MainWindow::runSweep() {
     if (!job) return;
     // The old surface, curve, history and verdicts go: the new run replaces them.
     statusBar()->clearMessage(); // "Opened …" must not cover the run's status
-    m_results.startSweep(job->slab, job->planarCase());
+    m_results.startSweep(job->slab, job->planar);
     m_overlays.aCrit.clear();
     m_history->clearRun();
     m_planarHistory->clearRun();
@@ -130,8 +114,8 @@ void MainWindow::showProgress(qint64 done, qint64 total) {
 void MainWindow::showPartial(const SweepResult& r) {
     if (!m_results.awaits(ResultState::Run::Sweep) || !m_results.surface()) return;
     const SurfaceResult& s = *m_results.surface();
-    GammaGrid g = gammaGrid(r, s.planar ? s.planar->tauRef() : s.slabCase.tauRef());
-    g.gammaTitle = gammaTitle(s.slabCase.scale) + modelTitle();
+    GammaGrid g = gammaGrid(r, s.slabCase.tauRef()); // the planar case's too
+    g.gammaTitle = QString::fromStdString(gammaScaleLabel(s.slabCase.scale)) + modelTitle();
     m_results.setSweepProgress(r, g);
     m_surface->setData(g);
     updateSlice();
@@ -197,7 +181,7 @@ void MainWindow::pickPoint(int ai, int fi) {
     // The teaching tab follows the pick with the model that made the surface (planar too).
     std::string notShown;
     m_teaching->setParams(
-        teachingParamsOf(s->slabCase, s->planar, a, f, m_teaching->params(), &notShown));
+        teachingParamsOf(s->slabCase, s->planarCase(), a, f, m_teaching->params(), &notShown));
     if (!notShown.empty())
         m_status->setText(tr("Teaching does not show %1.").arg(QString::fromStdString(notShown)));
     if (s->planar) {

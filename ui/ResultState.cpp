@@ -64,7 +64,7 @@ bool ResultState::setInputs(const std::optional<InputFingerprint>& now,
     return true;
 }
 
-void ResultState::startSweep(const Slab1DCase& c, const std::optional<PlanarCase>& planar) {
+void ResultState::startSweep(const Slab1DCase& c, const std::optional<PlanarInputs>& planar) {
     m_runKey = m_now.value_or(InputFingerprint{});
     m_pending = Run::Sweep;
     m_surface = SurfaceResult{c, planar, {}, {}, {}};

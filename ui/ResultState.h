@@ -40,12 +40,20 @@ struct InputFingerprint {
 InputFingerprint fingerprintOf(const Project& p);
 
 // The γc surface of one sweep (finished, cancelled or still running) and what it was run with.
+// The case is held once, as core's request holds it (core/analysis/AnalysisRequest.h): the 1-DOF
+// case and, when the planar model ran, its own inputs on that case.
 struct SurfaceResult {
     Slab1DCase slabCase;
-    std::optional<PlanarCase> planar; // set: the planar model ran
+    std::optional<PlanarInputs> planar; // set: the planar model ran
     SweepResult sweep;
     GammaGrid gamma;
     std::vector<std::pair<double, double>> aCrit; // (f, A_crit) of a finished sweep
+
+    // The planar case that ran (slabCase with the planar inputs), or none.
+    std::optional<PlanarCase> planarCase() const {
+        if (!planar) return std::nullopt;
+        return PlanarCase(slabCase, *planar);
+    }
 };
 
 // Where the verdicts' A_crit came from, so they can be re-judged for new code ratios.
@@ -76,7 +84,7 @@ public:
     void runEnded() { m_pending = Run::None; }
 
     // A sweep started with the current inputs: the old surface, curve, history and check go.
-    void startSweep(const Slab1DCase& c, const std::optional<PlanarCase>& planar);
+    void startSweep(const Slab1DCase& c, const std::optional<PlanarInputs>& planar);
     void setSweepProgress(const SweepResult& r, const GammaGrid& g);
     void setACrit(std::vector<std::pair<double, double>> aCrit);
     // Verdicts made with the inputs the run started with.

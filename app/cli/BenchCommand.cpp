@@ -11,6 +11,7 @@
 #include "app/cli/RecordFlags.h"
 #include "app/cli/SearchFlags.h"
 #include "core/check/RecordBenchmark.h"
+#include "core/io/BenchJson.h"
 #include "core/io/JsonText.h"
 #include "core/io/StudySpecJson.h"
 #include "core/records/RecordReader.h"
@@ -27,21 +28,6 @@
 namespace kinstab::cli {
 
 namespace {
-nlohmann::json timingJson(const TimingStats& t) {
-    return {{"min_s", t.minSeconds},
-            {"median_s", t.medianSeconds},
-            {"median_cpu_s", t.medianCpuSeconds},
-            {"runs", t.runs}};
-}
-
-// The grid and thread count every bench reports first.
-nlohmann::json gridJson(const SweepGrid& grid, int threads) {
-    return {{"amplitudes", grid.amplitudes.size()},
-            {"frequencies", grid.frequencies.size()},
-            {"points", grid.size()},
-            {"threads", threads}};
-}
-
 // The human summary on stderr: the grid, then one line per timed variant (label padded by the
 // caller, `digits` decimals of seconds).
 void printHeader(const SweepGrid& grid, const char* what, int threads, int runs) {
@@ -58,18 +44,7 @@ int runBenchPlanar(const Args& args, const SweepGrid& grid, int threads, int rep
     const PlanarCase planar = planarCaseFromFlags(args);
     const Slab1DCase oneDof = commonCaseFromFlags(args);
     const PlanarSurfaceBenchmark b = benchmarkPlanarSurface(oneDof, planar, grid, repeats, threads);
-    nlohmann::json j = planarCaseJson(planar);
-    j.update(gridJson(grid, b.threads));
-    j.update({{"planar", timingJson(b.planar)},
-              {"one_dof", timingJson(b.oneDof)},
-              {"ratio_planar_over_one_dof", b.ratioMedian},
-              {"ratio_planar_over_one_dof_cpu", b.ratioCpu},
-              {"planar_collapsed_points", b.planarCollapsed},
-              {"planar_along_wall_points", b.planarAlongWalls},
-              {"planar_lift_off_points", b.planarLiftOff},
-              {"planar_steps", b.planarSteps},
-              {"planar_accel_evaluations", b.planarEvaluations}});
-    std::cout << j.dump(2) << "\n";
+    std::cout << jsonText(planarBenchmarkJson(b, planar, grid), 2) << "\n";
     printHeader(grid, "surface", b.threads, b.planar.runs);
     printTiming(std::string("planar (") + (planar.vertical ? "with" : "no") + " vertical) ",
                 b.planar, 4);
@@ -82,12 +57,7 @@ int runBenchPlanar(const Args& args, const SweepGrid& grid, int threads, int rep
 // process (issue 15: is the workaround still needed now that the CLI loads no Qml?).
 int runBenchVectorState(const Slab1DCase& c, const SweepGrid& grid, int threads, int repeats) {
     const VectorStateBenchmark b = benchmarkVectorState(c, grid, repeats, threads);
-    nlohmann::json j = gridJson(grid, b.threads);
-    j.update({{"with_vzeroupper", timingJson(b.cleared)},
-              {"without_vzeroupper", timingJson(b.uncleared)},
-              {"ratio_without_over_with", b.ratioMedian},
-              {"ratio_without_over_with_cpu", b.ratioCpu}});
-    std::cout << jsonText(j, 2) << "\n";
+    std::cout << jsonText(vectorStateBenchmarkJson(b, grid), 2) << "\n";
     printHeader(grid, "exact surface", b.threads, b.cleared.runs);
     printTiming("with vzeroupper    ", b.cleared, 3);
     printTiming("without vzeroupper ", b.uncleared, 3);
@@ -110,25 +80,7 @@ int runBenchRecord(const Args& args, int repeats) {
     } catch (const std::invalid_argument& e) {
         throw UsageError("--record " + args.text("record") + ": " + e.what());
     }
-    nlohmann::json j = {{"record", record.file},
-                        {"mu", c.slab.mu},
-                        {"tstar", c.tstar},
-                        {"sine_amplitude", amplitude},
-                        {"sine_frequency", frequency},
-                        {"record_run", timingJson(b.recordRun)},
-                        {"sine_run", timingJson(b.sineRun)},
-                        {"ratio_record_over_sine", b.recordOverSine},
-                        {"ratio_record_over_sine_cpu", b.recordOverSineCpu},
-                        {"envelope_fit", timingJson(b.fit)},
-                        {"fit_share_of_record_run", b.fitShare},
-                        {"fit_share_of_record_run_cpu", b.fitShareCpu},
-                        {"record_critical", timingJson(b.recordCritical)},
-                        {"sine_critical", timingJson(b.sineCritical)},
-                        {"ratio_record_critical_over_sine_critical", b.criticalRatio},
-                        {"ratio_record_critical_over_sine_critical_cpu", b.criticalRatioCpu},
-                        {"record_critical_runs", b.recordCriticalRuns},
-                        {"sine_critical_runs", b.sineCriticalRuns}};
-    std::cout << jsonText(j, 2) << "\n";
+    std::cout << jsonText(recordBenchmarkJson(b, c, record.file, amplitude, frequency), 2) << "\n";
     std::fprintf(stderr, "record %s, mu %g, %d alternating runs of each pair after a warm-up:\n",
                  record.file.c_str(), c.slab.mu, b.recordRun.runs);
     printTiming("record run (read, filter, fit, solve)", b.recordRun, 5);
@@ -150,15 +102,7 @@ int runBenchRocking(const Args& args, int threads, int repeats) {
     if (points < 2 || points > 4097)
         throw UsageError("--map-points " + args.text("map-points") + ": must be 2 to 4097");
     const RockingBenchmark b = benchmarkRocking(points, repeats, threads);
-    const nlohmann::json j = {{"pulse_run", timingJson(b.pulseRun)},
-                              {"pulse_runs_per_timing", b.runsPerTiming},
-                              {"map_points", b.mapPoints},
-                              {"map_threads", b.threads},
-                              {"map_linear", timingJson(b.mapLinear)},
-                              {"map_exact", timingJson(b.mapExact)},
-                              {"map_linear_overturning_points", b.overturnsLinear},
-                              {"map_exact_overturning_points", b.overturnsExact}};
-    std::cout << jsonText(j, 2) << "\n";
+    std::cout << jsonText(rockingBenchmarkJson(b), 2) << "\n";
     std::fprintf(stderr, "free-standing block, %d timed runs of each after a warm-up:\n",
                  b.mapLinear.runs);
     std::fprintf(stderr, "  one pulse run      median %.1f us (min %.1f us)\n",
@@ -183,16 +127,7 @@ int runBenchStudy(const Args& args, int threads, int repeats) {
     }
     const int n = threads > 0 ? threads : static_cast<int>(allowedCpuCount());
     const StudyBenchmark b = benchmarkStudy(spec, n, repeats);
-    const nlohmann::json j = {{"study", path},
-                              {"cases", b.cases},
-                              {"threads", b.threads},
-                              {"one_thread", timingJson(b.one)},
-                              {"threads_run", timingJson(b.many)},
-                              {"cases_per_cpu_second_one_thread", b.perCpuSecondOne},
-                              {"cases_per_cpu_second_threads", b.perCpuSecondMany},
-                              {"speedup_threads_over_one", b.speedup},
-                              {"rows_identical", b.rowsAgree}};
-    std::cout << jsonText(j, 2) << "\n";
+    std::cout << jsonText(studyBenchmarkJson(b, path), 2) << "\n";
     std::fprintf(stderr, "study %s, %zu cases, 1 and %d threads, %d alternating runs each:\n",
                  path.c_str(), b.cases, b.threads, b.one.runs);
     printTiming("1 thread  ", b.one, 4);
@@ -249,22 +184,7 @@ int runBench(const ArgList& argv) {
     if (args.has("vector-state")) return runBenchVectorState(c, grid, threads, repeats);
 
     const SurfaceBenchmark b = benchmarkSurface(c, grid, repeats, threads);
-    const double points = static_cast<double>(grid.size());
-    const double perEvent =
-        b.exactEvents > 0 ? static_cast<double>(b.exactEvaluations) / b.exactEvents : 0.0;
-    nlohmann::json j = gridJson(grid, b.threads);
-    j.update({{"envelope", envelopeJson(c)},
-              {"mu", c.slab.mu},
-              {"paper_steps_per_period", c.paperStepsPerPeriod},
-              {"exact", timingJson(b.exact)},
-              {"paper", timingJson(b.paper)},
-              {"ratio_exact_over_paper", b.ratioMedian},
-              {"ratio_exact_over_paper_cpu", b.ratioCpu},
-              {"exact_collapsed_points", b.exactCollapsed},
-              {"outcome_disagreements", b.outcomeDisagreements},
-              {"exact_cpu_us_per_point", 1e6 * b.exact.medianCpuSeconds / points},
-              {"exact_events_per_point", static_cast<double>(b.exactEvents) / points},
-              {"exact_evaluations_per_event", perEvent}});
+    const nlohmann::json j = surfaceBenchmarkJson(b, c, grid);
     std::cout << jsonText(j, 2) << "\n";
     printHeader(grid, "surface", b.threads, b.exact.runs);
     printTiming("exact      ", b.exact, 3);
@@ -278,8 +198,9 @@ int runBench(const ArgList& argv) {
     std::fprintf(stderr,
                  "  exact: %.2f us CPU per point, %.1f events per point, %.2f evaluations per "
                  "event\n",
-                 1e6 * b.exact.medianCpuSeconds / points,
-                 static_cast<double>(b.exactEvents) / points, perEvent);
+                 j["exact_cpu_us_per_point"].get<double>(),
+                 j["exact_events_per_point"].get<double>(),
+                 j["exact_evaluations_per_event"].get<double>());
     return 0;
 }
 

@@ -1,5 +1,4 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "app/cli/AnalysisRuns.h"
 #include "app/cli/Args.h"
 #include "app/cli/BuildingFlags.h"
 #include "app/cli/Commands.h"
@@ -7,10 +6,9 @@
 #include "app/cli/PlanarFlags.h"
 #include "app/cli/RecordFlags.h"
 #include "core/assessment/AssessmentJson.h"
+#include "core/assessment/AssessmentRunJson.h"
 #include "core/assessment/RunAssessment.h"
 #include "core/io/AtomicFile.h"
-#include "core/io/CaseJson.h"
-#include "core/io/CodesJson.h"
 #include "core/io/JsonText.h"
 #include "core/io/Project.h"
 #include "core/slab/VerticalRecord.h"
@@ -43,20 +41,6 @@ AssessmentRun assess(const Project& p, const std::optional<PlanarCase>& planar) 
     }
 }
 
-// The per-basis figures kept from before the assessment (keys are never renamed): "codes" holds
-// the record's verdicts for a record project, the sine's otherwise.
-nlohmann::json detailJson(const Project& p, const AssessmentRun& run) {
-    if (!run.record) return designCheckJson(*run.parts.sine);
-    const RecordAnalysis& a = *run.record;
-    nlohmann::json j = designCheckJson(DesignCheckResult{a.verdicts, a.critical->runs});
-    j["record"] = accelerogramJson(a.ground);
-    j["floor_filter"] = p.record->floor ? floorFilterJson(*p.record->floor) : nlohmann::json();
-    j["amplitude"] = a.peak;
-    j["critical_peak_g"] = a.critical->peak ? nlohmann::json(*a.critical->peak) : nlohmann::json();
-    j["outcome"] = outcomeName(a.run.outcome);
-    return j;
-}
-
 } // namespace
 
 // The project's assessment (core/assessment): every check the project implies (the sine's or
@@ -76,7 +60,6 @@ int runCheck(const ArgList& argv) {
                          modelKindName(p.model) + "': the check against a record uses the " +
                          modelKindName(ModelKind::Slab1D) + " model");
     const auto start = std::chrono::steady_clock::now();
-    nlohmann::json j;
     AssessmentRun run;
     try {
         run = assess(p, planarModel(p));
@@ -87,18 +70,9 @@ int runCheck(const ArgList& argv) {
         writeStandardOutput(p.name + "\n\n" + assessmentTable(run.assessment));
         return 0;
     }
-    j = detailJson(p, run);
-    j["assessment"] = assessmentJson(run.assessment);
-    j["project"] = p.name;
-    // model, solver, envelope, mu, t* (and the planar inputs); a record replaces the envelope.
-    j.update(modelKeysJson(run.request));
-    if (p.record) j.erase("envelope");
-    j["search"] = {{"max_amplitude", p.critical.to},
-                   {"scan_step", p.critical.scanStep},
-                   {"tolerance", p.critical.tolerance}};
-    j["wall_time_s"] =
+    const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    writeStandardOutput(jsonText(j, 2) + "\n");
+    writeStandardOutput(jsonText(assessmentRunJson(p, run, wall), 2) + "\n");
     return 0;
 }
 

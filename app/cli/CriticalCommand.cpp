@@ -5,8 +5,8 @@
 #include "app/cli/ModelFlags.h"
 #include "app/cli/SearchFlags.h"
 #include "core/excitation/FrequencyRange.h"
+#include "core/io/AnalysisJson.h"
 #include "core/io/JsonText.h"
-#include "core/io/ResultJson.h"
 
 #include <iostream>
 
@@ -32,14 +32,7 @@ int runCritical(const ArgList& argv) {
     // Each 1-DOF run is checked before its verdict counts: a collapse with no finite time is an
     // internal error (exit 3), never an A_crit.
     request.requireSoundRuns = true;
-    const nlohmann::json crit = criticalCurveJson(request);
-    nlohmann::json j = modelKeysJson(request);
-    j.update({{"frequencies", freqs},
-              {"a_crit", crit},
-              {"max_amplitude", search.to},
-              {"scan_step", search.scanStep},
-              {"tolerance", search.tolerance}});
-    std::cout << jsonText(j, 2) << "\n";
+    std::cout << jsonText(criticalCurveJson(request, criticalCurveOf(request)), 2) << "\n";
     return 0;
 }
 

@@ -6,7 +6,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/PlanarFlags.h"
 #include "core/io/JsonText.h"
-#include "core/io/ResultJson.h"
+#include "core/io/PlanarResultJson.h"
 #include "core/sweep/SearchWork.h"
 
 #include <chrono>
@@ -14,18 +14,6 @@
 #include <sstream>
 
 namespace kinstab::cli {
-
-nlohmann::json planarEventsJson(const std::vector<PlanarEvent>& events) {
-    nlohmann::json a = nlohmann::json::array();
-    for (const auto& e : events)
-        a.push_back({{"tau", e.tau},
-                     {"kind", eventKindName(e.kind)},
-                     {"dx", e.dx},
-                     {"dy", e.dy},
-                     {"ux", e.ux},
-                     {"uy", e.uy}});
-    return a;
-}
 
 PlanarCliLogs::PlanarCliLogs(const Args& args)
     : recorder(args.has("events") ? &events : nullptr, args.has("history") ? &path : nullptr) {}
@@ -43,15 +31,6 @@ std::string planarHistoryCsv(const SlabModel2D& m, const std::vector<PlanarSampl
     return s.str();
 }
 
-void addPlanarResultKeys(nlohmann::json& j, const PlanarResult& r) {
-    j["exit_side"] = r.slab.outcome == Outcome::Collapsed ? nlohmann::json(exitSideName(r.exitSide))
-                                                          : nlohmann::json();
-    j["tau_lift_off"] = numberOrNull(r.tauLiftOff);
-    j["max_abs_delta_y"] = r.maxAbsDeltaY;
-    j["residual_delta_y"] = r.residualDeltaY;
-    j["work"]["rejected_steps"] = r.slab.work.restarts;
-}
-
 int runSimulatePlanar(const Args& args, double amplitude, double frequency, double historyStep) {
     PlanarCase c = planarCaseFromFlags(args);
     if (args.has("history-step") && historyStep > 0.0)
@@ -66,12 +45,11 @@ int runSimulatePlanar(const Args& args, double amplitude, double frequency, doub
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-    nlohmann::json j = slabResultJson(r.slab, c.tauRef());
+    nlohmann::json j = planarResultJson(r, c.tauRef());
     j.update(planarCaseJson(c));
     j["amplitude"] = amplitude;
     j["frequency"] = frequency;
     j["tau_ref"] = c.tauRef();
-    addPlanarResultKeys(j, r);
     j["wall_time_s"] = wall;
     if (args.has("events")) j["events"] = planarEventsJson(log.events.events);
     if (args.has("history")) writeOutput(args, "history", planarHistoryCsv(model, log.path.path));

@@ -21,9 +21,8 @@ PlanarCase planarCaseFromFlags(const Args& args, bool recordDriven = false);
 
 // The planar branch of simulate, after the shared flags are read.
 int runSimulatePlanar(const Args& args, double amplitude, double frequency, double historyStep);
-// Shared by the sine- and record-driven planar simulate: the event list, the path CSV and the
-// planar keys of the result (exit_side, tau_lift_off, max_abs_delta_y, residual_delta_y).
-nlohmann::json planarEventsJson(const std::vector<PlanarEvent>& events);
+// Shared by the sine- and record-driven planar simulate: the path CSV (the result's JSON is
+// core/io/PlanarResultJson.h's).
 std::string planarHistoryCsv(const SlabModel2D& m, const std::vector<PlanarSample>& path);
 // What --events and --history ask a run to keep.
 struct PlanarCliLogs {
@@ -32,7 +31,6 @@ struct PlanarCliLogs {
     PlanarPathLog path;
     PlanarRecorderPair recorder;
 };
-void addPlanarResultKeys(nlohmann::json& j, const PlanarResult& r);
 
 // simulate --model planar --record FILE [--record-y FILE] (PlanarRecord.cpp).
 int runSimulatePlanarRecord(const Args& args);

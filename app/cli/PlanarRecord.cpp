@@ -9,9 +9,10 @@
 #include "app/cli/Commands.h"
 #include "app/cli/PlanarFlags.h"
 #include "app/cli/RecordFlags.h"
+#include "core/base/JsonValue.h"
 #include "core/check/RecordAnalysis.h"
 #include "core/io/JsonText.h"
-#include "core/io/ResultJson.h"
+#include "core/io/PlanarResultJson.h"
 #include "core/slab/PlanarRecordCase.h"
 
 #include <chrono>
@@ -53,18 +54,17 @@ int runSimulatePlanarRecord(const Args& args) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     const std::optional<double> tauRef = recordTauRef(fitOrNone(m.x), c.common);
-    nlohmann::json j = slabResultJson(r.slab, tauRef.value_or(std::nan("")));
+    nlohmann::json j = planarResultJson(r, tauRef.value_or(std::nan("")));
     if (!tauRef) j["gamma_c"] = nullptr;
     j.update(planarCaseJson(c));
     for (const char* k : {"envelope", "ay_ratio", "fy", "normalization"})
         j.erase(k); // the sine's parameters: the records replace them
-    addPlanarResultKeys(j, r);
     j["record"] = accelerogramJson(groundX);
     j["record_y"] = groundY ? accelerogramJson(*groundY) : nlohmann::json();
     j["floor_filter"] = e.floor ? floorFilterJson(*e.floor) : nlohmann::json();
     j["amplitude"] = m.peakX;
     j["scale_factor"] = m.peakX / std::abs(m.x.peak().value);
-    j["tau_ref"] = tauRef ? nlohmann::json(*tauRef) : nlohmann::json();
+    j["tau_ref"] = orNull(tauRef);
     j["wall_time_s"] = wall;
     if (args.has("events")) j["events"] = planarEventsJson(log.events.events);
     if (args.has("history")) writeOutput(args, "history", planarHistoryCsv(model, log.path.path));

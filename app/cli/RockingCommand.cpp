@@ -13,6 +13,7 @@
 #include "core/excitation/EnvelopedSine.h"
 #include "core/io/AtomicFile.h"
 #include "core/io/JsonText.h"
+#include "core/io/RockingJson.h"
 #include "core/rocking/OverturningAmplitude.h"
 #include "core/rocking/RockingMotions.h"
 #include "core/rocking/RockingSolver.h"
@@ -63,13 +64,7 @@ RockingExcitation pulseExcitation(const Args& args) {
     RockingExcitation e;
     e.motion = std::make_unique<PulseMotion>(p);
     e.family = pulseFamily(p);
-    e.json = {{"kind", "pulse"},
-              {"shape", std::string(pulseShapeName(p.shape))},
-              {"amplitude_g", p.amplitude}};
-    if (p.shape == PulseShape::Rectangular)
-        e.json["duration_s"] = p.durationS;
-    else
-        e.json["frequency_hz"] = p.frequencyHz;
+    e.json = pulseExcitationJson(p);
     return e;
 }
 
@@ -93,9 +88,7 @@ RockingExcitation sineExcitation(const Args& args, std::optional<double> duratio
     e.family = [env, frequency, duration](double a) {
         return envelopedSineMotion(env, a, frequency, duration);
     };
-    e.json = {{"kind", "enveloped-sine"},  {"amplitude_g", amplitude},
-              {"frequency_hz", frequency}, {"envelope_alpha", env.alpha},
-              {"envelope_beta", env.beta}, {"end_s", e.motion->end()}};
+    e.json = sineExcitationJson(env, amplitude, frequency, e.motion->end());
     return e;
 }
 
@@ -134,11 +127,9 @@ RockingExcitation recordExcitation(const Args& args) {
         throw UsageError("--record " + rec.file + ": " + x.what());
     }
     e.family = recordFamily(motion, vertical);
-    e.json = accelerogramJson(motion);
-    e.json["kind"] = "record";
-    e.json["scaled_peak_g"] = peak;
-    if (args.has("level")) e.json["level"] = args.integer("level", 0);
-    if (vertical) e.json["vertical"] = accelerogramJson(*vertical);
+    const std::optional<int> level =
+        args.has("level") ? std::optional<int>(args.integer("level", 0)) : std::nullopt;
+    e.json = recordExcitationJson(motion, peak, level, vertical ? &*vertical : nullptr);
     return e;
 }
 
@@ -205,19 +196,7 @@ nlohmann::json criticalJson(const RockingModel& m, const RockingExcitation& e, c
                      "kinstab-cli rocking: --critical stopped at its limit of %ld runs "
                      "(--max-runs): gaps near overturning were not all refined or bisected\n",
                      s.maxRuns);
-    nlohmann::json intervals = nlohmann::json::array();
-    for (const auto& [from, to] : iv.intervals)
-        intervals.push_back({from, to});
-    const std::optional<double> c = iv.critical();
-    return {{"critical_amplitude_g", c ? nlohmann::json(*c) : nlohmann::json(nullptr)},
-            {"overturning_intervals_g", intervals},
-            {"max_amplitude_g", s.maxAmplitude},
-            {"scan_points", s.scanPoints},
-            {"tolerance", s.tolerance},
-            {"refine_depth", s.refineDepth},
-            {"max_runs", s.maxRuns},
-            {"critical_runs", iv.runs},
-            {"critical_run_limit_reached", iv.runLimitReached}};
+    return overturningSearchJson(iv, s);
 }
 
 } // namespace

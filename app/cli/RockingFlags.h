@@ -7,9 +7,7 @@
 
 #include "app/cli/Args.h"
 #include "core/rocking/RockingModel.h"
-#include "core/rocking/RockingResult.h"
 
-#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 
@@ -18,9 +16,5 @@ namespace kinstab::cli {
 std::set<std::string> rockingModelFlagNames(); // valued flags; the switch is "linear"
 // Throws UsageError naming the flag and value (--half-width and --half-height are required).
 RockingModel rockingModelFromFlags(const Args& args);
-// The block and its model as the JSON outputs state them.
-nlohmann::json rockingModelJson(const RockingModel& m);
-// outcome, max_theta_over_alpha, impact_times_s, overturn_time_s, sliding_displacement_m, ...
-nlohmann::json rockingResultJson(const RockingResult& r);
 
 } // namespace kinstab::cli

@@ -6,6 +6,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/RockingFlags.h"
 #include "core/io/JsonText.h"
+#include "core/io/RockingJson.h"
 #include "core/rocking/OverturningMap.h"
 
 #include <chrono>
@@ -48,27 +49,6 @@ std::string mapCsv(const OverturningMap& m) {
     return s.str();
 }
 
-nlohmann::json mapJson(const OverturningMap& m) {
-    nlohmann::json states = nlohmann::json::array(), theta = nlohmann::json::array();
-    for (std::size_t i = 0; i < m.frequencies.size(); ++i) {
-        nlohmann::json rowS = nlohmann::json::array(), rowT = nlohmann::json::array();
-        for (std::size_t j = 0; j < m.amplitudes.size(); ++j) {
-            const std::size_t k = m.at(static_cast<int>(i), static_cast<int>(j));
-            rowS.push_back(m.overturns[k]);
-            rowT.push_back(m.maxThetaOverAlpha[k]);
-        }
-        states.push_back(rowS);
-        theta.push_back(rowT);
-    }
-    return {{"shape", std::string(pulseShapeName(m.spec.shape))},
-            {"a_p_over_alpha_g", m.amplitudes},
-            {"omega_p_over_p", m.frequencies},
-            {"state_legend", {"survives", "overturns", "leaves-base"}},
-            {"state", states},
-            {"max_theta_over_alpha", theta},
-            {"complete", m.complete}};
-}
-
 } // namespace
 
 int runRockingMap(const ArgList& argv) {
@@ -100,7 +80,7 @@ int runRockingMap(const ArgList& argv) {
         writeOutput(args, "o", mapCsv(map));
         return 0;
     }
-    nlohmann::json j = mapJson(map);
+    nlohmann::json j = overturningMapJson(map);
     j["block"] = rockingModelJson(m);
     j["wall_time_s"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -135,6 +135,14 @@ std::string tauScaleName(TauScale s) {
     return enumName(kTauScaleNames, s);
 }
 
+constexpr std::array<const char*, 4> kGammaScaleLabels = {"γc = τrise/τc", "γc = τmax/τc",
+                                                          "γc = τdur/τc", "γc = 1/τc"};
+static_assert(kGammaScaleLabels.size() == kTauScaleNames.size());
+
+std::string gammaScaleLabel(TauScale s) {
+    return enumName(kGammaScaleLabels, s);
+}
+
 InputProblem checkEnvelope(double alpha, double beta) {
     if (InputProblem p = checkInput(kAlphaInput, alpha); !p.empty()) return p;
     if (InputProblem p = checkInput(kBetaInput, beta); !p.empty()) return p;

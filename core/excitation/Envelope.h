@@ -42,6 +42,9 @@ std::optional<EnvelopePreset> presetFromName(const std::string& name);
 std::string presetName(EnvelopePreset p);
 std::optional<TauScale> tauScaleFromName(const std::string& name);
 std::string tauScaleName(TauScale s);
+// The γc scale as a figure's axis and the report's symbol table write it: "γc = τmax/τc"
+// (UTF-8). One spelling for the GUI's surface and slice and the report's figures.
+std::string gammaScaleLabel(TauScale s);
 
 // Largest β (and so α < β) of an envelope, 1/s: a rise time of 0.1 ms is no earthquake's.
 inline constexpr double kMaxEnvelopeRate = 1e4;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/BlockMapJson.h"
 
+#include "core/base/JsonValue.h"
 #include "core/base/TextInput.h"
 
 #include <cmath>
@@ -8,12 +9,6 @@
 namespace kinstab {
 
 using nlohmann::json;
-
-namespace {
-template <class T> json orNull(const std::optional<T>& x) {
-    return x ? json(*x) : json();
-}
-} // namespace
 
 json blockMapToJson(const BlockMapSettings& s) {
     return {{"selected", s.selected},

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/CodesJson.h"
 
+#include "core/base/JsonValue.h"
 #include "core/base/TextInput.h"
 
 #include "core/io/ResultJson.h"
@@ -14,7 +15,7 @@ using nlohmann::json;
 namespace {
 
 template <class T> void putOptional(json& j, const char* key, const std::optional<T>& v) {
-    j[key] = v ? json(*v) : json();
+    j[key] = orNull(v);
 }
 
 std::string choices(const std::vector<std::string>& names) {
@@ -230,8 +231,8 @@ json designCheckJson(const DesignCheckResult& d) {
                   {"ratio", v.ratio},
                   {"period_s", v.periodSeconds},
                   {"frequency_hz", v.frequencyHz},
-                  {"a_crit", v.aCrit ? json(*v.aCrit) : json()},
-                  {"margin", v.margin ? json(*v.margin) : json()},
+                  {"a_crit", orNull(v.aCrit)},
+                  {"margin", orNull(v.margin)},
                   {"verdict", verdictText(v.verdict)},
                   {"explanation", v.explanation}};
         if (v.ratioWithoutFt) c["ratio_without_ft"] = *v.ratioWithoutFt;

@@ -12,11 +12,11 @@ namespace kinstab {
 using nlohmann::json;
 
 json floorSettingsToJson(const FloorSettings& s) {
-    return {{"slab_level", s.slabLevel ? json(*s.slabLevel) : json()},
+    return {{"slab_level", orNull(s.slabLevel)},
             {"stiffness", stiffnessName(s.stiffness)},
             {"damping", s.damping},
             {"asce7_omega0", s.omega0},
-            {"ec8_element_period_s", s.ec8ElementPeriod ? json(*s.ec8ElementPeriod) : json()}};
+            {"ec8_element_period_s", orNull(s.ec8ElementPeriod)}};
 }
 
 FloorSettings floorSettingsFromJson(const JsonReader& r) {

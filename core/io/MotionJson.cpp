@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/MotionJson.h"
 
+#include "core/base/JsonValue.h"
 #include "core/base/TextInput.h"
 
 #include <filesystem>
@@ -39,10 +40,10 @@ json recordToJson(const RecordExcitation& e, const std::string& baseDir) {
     if (e.floor) floor = {{"period_s", e.floor->period}, {"damping", e.floor->damping}};
     return {{"file", pathForProject(e.file, baseDir)},
             {"format", recordFormatName(e.read.format)},
-            {"dt", e.read.dt ? json(*e.read.dt) : json()},
+            {"dt", orNull(e.read.dt)},
             {"unit", e.read.unit ? json(accelUnitName(*e.read.unit)) : json()},
             {"channel", e.read.channel},
-            {"target_peak_g", e.targetPeak ? json(*e.targetPeak) : json()},
+            {"target_peak_g", orNull(e.targetPeak)},
             {"scale_factor", e.scaleFactor},
             {"floor_filter", floor}};
 }

@@ -3,6 +3,7 @@
 
 #include "core/base/DisplayText.h"
 #include "core/base/InputLimits.h"
+#include "core/base/JsonValue.h"
 #include "core/base/TextInput.h"
 #include "core/io/AtomicFile.h"
 #include "core/io/BlockJson.h"
@@ -80,7 +81,7 @@ json slabToJson(const Project& p) {
     json j = {{"envelope", env},
               {"mu", c.slab.mu},
               {"limit", c.slab.limit},
-              {"duration", c.slab.duration ? json(*c.slab.duration) : json()},
+              {"duration", orNull(c.slab.duration)},
               {"solver", solverName(c.solver)},
               {"paper_steps", c.paperStepsPerPeriod},
               {"scale", tauScaleName(c.scale)}};

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/StudyBlock.h"
 
+#include "core/base/JsonValue.h"
 #include "core/base/TextInput.h"
 #include "core/rocking/RockingMotions.h"
 
@@ -42,13 +43,11 @@ std::string studyBlockText(const StudyBlock& b) {
 }
 
 nlohmann::ordered_json studyBlockJson(const StudyBlock& b) {
-    auto orNull = [](const std::optional<double>& x) {
-        return x ? nlohmann::ordered_json(*x) : nlohmann::ordered_json();
-    };
+    using ojson = nlohmann::ordered_json;
     return {{"half_width_m", b.block.halfWidth},
             {"half_height_m", b.block.halfHeight},
-            {"mu", orNull(b.mu)},
-            {"restitution", orNull(b.restitution)},
+            {"mu", orNull<ojson>(b.mu)},
+            {"restitution", orNull<ojson>(b.restitution)},
             {"linear", b.linear}};
 }
 

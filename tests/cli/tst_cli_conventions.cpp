@@ -145,6 +145,10 @@ private slots:
             "critical", "--frequencies", "5", "--max-amplitude", "2", "--scan-step", "0.1"};
         QTest::newRow("codes") << QStringList{"codes", "--project", kExample};
         QTest::newRow("check") << QStringList{"check", "--project", kExample};
+        // The planar bench dumped its object itself and wrote no version (fixed in issue 36).
+        QTest::newRow("bench-planar")
+            << QStringList{"bench", "--model",       "planar", "--fy",      "1", "--amplitudes",
+                           "0.8",   "--frequencies", "1",      "--repeats", "1"};
         QTest::newRow("risk") << QStringList{
             "risk",
             "--hazard",

@@ -139,6 +139,8 @@ private slots:
         QCOMPARE(r.completed, std::size_t(6));
         const GammaGrid& shown = w->surfaceView()->data();
         QVERIFY(shown.gammaTitle.contains(QStringLiteral("planar")));
+        // The report's spelling of the scale (core's one label), not a second table of the GUI's.
+        QVERIFY(shown.gammaTitle.startsWith(QString::fromStdString(gammaScaleLabel(p.slab.scale))));
         std::size_t collapsed = 0;
         for (std::size_t i = 0; i < 3; ++i)
             for (std::size_t j = 0; j < 2; ++j) {
