@@ -32,9 +32,11 @@ TeachingParams paperCase(double a, double f, EnvelopePreset e = EnvelopePreset::
 }
 
 std::vector<SlabEvent> solverEvents(const TeachingParams& p) {
-    if (p.model == TeachingModel::Slab1D)
-        return runSlab1D(p.toCase(), p.amplitude, p.frequencyHz, RunOptions{.recordEvents = true})
-            .events;
+    if (p.model == TeachingModel::Slab1D) {
+        SlabEventLog log;
+        runSlab1D(p.toCase(), p.amplitude, p.frequencyHz, {}, &log);
+        return log.events;
+    }
     std::vector<SlabEvent> ev;
     PlanarEventLog log;
     runPlanar(p.toPlanarCase(), p.amplitude, p.frequencyHz, &log);
