@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 using namespace kinstab;
 
