@@ -2,8 +2,8 @@
 #pragma once
 // Every number a slab result promises is finite: tau_c when it collapsed, where the run ended,
 // the residual and largest displacement, and each recorded event's time, displacement and
-// velocity (core/slab/SlabRecorder.h). A solver that breaks this reports an internal failure instead of a wrong verdict,
-// and the command line refuses to write it (exit 3).
+// velocity (core/slab/SlabRecorder.h). A solver that breaks this reports an internal failure
+// instead of a wrong verdict, and the command line refuses to write it (exit 3).
 
 #include "core/slab/SlabTypes.h"
 

@@ -11,8 +11,7 @@
 
 namespace kinstab {
 
-template <class Event, class Sample>
-class RunRecorder {
+template <class Event, class Sample> class RunRecorder {
 public:
     virtual ~RunRecorder() = default;
     virtual void onEvent(const Event& /*event*/) {}
@@ -20,24 +19,21 @@ public:
 };
 
 // The events, in the order they happened.
-template <class Event, class Sample>
-class EventLog : public RunRecorder<Event, Sample> {
+template <class Event, class Sample> class EventLog : public RunRecorder<Event, Sample> {
 public:
     void onEvent(const Event& e) override { events.push_back(e); }
     std::vector<Event> events;
 };
 
 // The path: every state the solver reported.
-template <class Event, class Sample>
-class PathLog : public RunRecorder<Event, Sample> {
+template <class Event, class Sample> class PathLog : public RunRecorder<Event, Sample> {
 public:
     void onStep(const Sample& s) override { path.push_back(s); }
     std::vector<Sample> path;
 };
 
 // Both of two recorders (either may be null), as the caller asks for events, the path or both.
-template <class Event, class Sample>
-class RecorderPair : public RunRecorder<Event, Sample> {
+template <class Event, class Sample> class RecorderPair : public RunRecorder<Event, Sample> {
 public:
     RecorderPair(RunRecorder<Event, Sample>* first, RunRecorder<Event, Sample>* second)
         : first_(first), second_(second) {}
