@@ -4,6 +4,7 @@
 #include "core/excitation/RecordedMotion.h"
 #include "core/slab/History.h"
 #include "core/slab/RecordRun.h"
+#include "core/slab/SlabRecorder.h"
 #include "ui/DockedChart.h"
 #include "ui/NiceAxisTicks.h"
 
@@ -120,11 +121,10 @@ QString fillLevelChart(QChart* chart, const FloorAnalysis& a, const Accelerogram
     chart->setTitle(
         QObject::tr("Level %1: floor motion and the slab's run (record as given)").arg(level));
     const double peak = std::abs(m.peak().value);
-    RunOptions options;
-    options.recordEvents = true;
-    const SlabResult run = runRecord1D(slab, m, peak, options);
     const RecordedMotion motion(m, slab.tstar, peak);
-    const History h = sampleHistory(motion, slab.slab.mu, run.events, run.tauEnd, 0.05);
+    SlabHistoryLog log(motion, slab.slab.mu);
+    const SlabResult run = runRecord1D(slab, m, peak, {}, &log);
+    const History h = log.history(run.tauEnd, 0.05);
     const double tEnd = m.dt * static_cast<double>(m.size() - 1);
     QValueAxis* x = axis(chart, QObject::tr("time, s"), Qt::AlignBottom, 0.0, tEnd);
     const double amax = std::max(peak, std::abs(ground.peak().value));

@@ -15,10 +15,9 @@ PointRun runPoint(const Slab1DCase& c, double amplitude, double frequencyHz) {
     p.mu = c.slab.mu;
     p.limit = c.slab.limit;
     p.tauRef = c.tauRef();
-    RunOptions options;
-    options.recordEvents = true;
-    p.result = runSlab1D(c, amplitude, frequencyHz, options);
     const EnvelopedSine a(c.envelope, amplitude, frequencyHz, c.tstar);
+    SlabHistoryLog log(a, c.slab.mu);
+    p.result = runSlab1D(c, amplitude, frequencyHz, {}, &log);
     const double period = 1.0 / (frequencyHz * c.tstar); // in tau
     // Up to the collapse; a stable run is shown at least past the envelope's peak.
     const bool ended =
@@ -27,7 +26,7 @@ PointRun runPoint(const Slab1DCase& c, double amplitude, double frequencyHz) {
         ended ? p.result.tauEnd
               : std::max(p.result.tauEnd, 1.2 * c.envelope.computedTimes(c.tstar).tauMax);
     const double step = std::max(period / 40.0, tauEnd / 40000.0);
-    p.history = sampleHistory(a, c.slab.mu, p.result.events, tauEnd, step);
+    p.history = log.history(tauEnd, step);
     const int n = 400;
     for (int k = 0; k <= n; ++k) {
         const double tau = tauEnd * k / n;

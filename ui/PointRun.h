@@ -6,6 +6,7 @@
 #include "core/slab/History.h"
 #include "core/slab/PointResult.h"
 #include "core/slab/Slab1DCase.h"
+#include "core/slab/SlabRecorder.h"
 
 #include <string>
 #include <vector>

@@ -8,7 +8,8 @@
 
 namespace kinstab::ui {
 
-PointRun recordPointRun(const Slab1DCase& c, const RecordAnalysis& a) {
+PointRun recordPointRun(const Slab1DCase& c, const RecordAnalysis& a,
+                        const std::vector<SlabEvent>& events) {
     PointRun p;
     p.amplitude = a.peak;
     p.mu = c.slab.mu;
@@ -25,7 +26,7 @@ PointRun recordPointRun(const Slab1DCase& c, const RecordAnalysis& a) {
     const bool ended = a.run.outcome == Outcome::Collapsed || a.run.outcome == Outcome::LiftOff;
     const double tauEnd = ended ? a.run.tauEnd : std::max(a.run.tauEnd, motion.endTau());
     const double step = std::max(motion.sampleStep() / 4.0, tauEnd / 40000.0);
-    p.history = sampleHistory(motion, c.slab.mu, a.run.events, tauEnd, step);
+    p.history = sampleHistory(motion, c.slab.mu, events, tauEnd, step);
     if (a.fit) {
         const int n = 400;
         for (int k = 0; k <= n; ++k) {

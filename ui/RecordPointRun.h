@@ -8,7 +8,8 @@
 
 namespace kinstab::ui {
 
-// a.run must have its events (RecordAnalysisInput::events).
-PointRun recordPointRun(const Slab1DCase& c, const RecordAnalysis& a);
+// events: a.run's, as the recorder passed to analyseRecord kept them (SlabEventLog).
+PointRun recordPointRun(const Slab1DCase& c, const RecordAnalysis& a,
+                        const std::vector<SlabEvent>& events);
 
 } // namespace kinstab::ui

@@ -10,11 +10,10 @@ namespace kinstab::ui {
 RecordOutput runRecordJob(const RecordAnalysisInput& input, SweepControl* control) {
     RecordOutput out;
     try {
-        RecordAnalysisInput in = input;
-        in.events = true; // the history chart needs them
-        out.analysis = analyseRecord(in, control);
+        SlabEventLog events; // the history chart needs them
+        out.analysis = analyseRecord(input, control, &events);
         out.cancelled = out.analysis->cancelled;
-        out.history = recordPointRun(in.slab, *out.analysis);
+        out.history = recordPointRun(input.slab, *out.analysis, events.events);
     } catch (const RecordError& e) {
         out.error = "excitation.record.file = '" + input.record.file + "': " + e.what();
     } catch (const std::exception& e) {

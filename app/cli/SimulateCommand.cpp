@@ -13,6 +13,7 @@
 #include "core/io/ResultJson.h"
 #include "core/slab/FiniteResult.h"
 #include "core/slab/History.h"
+#include "core/slab/SlabRecorder.h"
 #include "core/sweep/SearchWork.h"
 
 #include <chrono>
@@ -49,10 +50,12 @@ int runSimulate(const ArgList& argv) {
     if (const InputProblem p = checkRunWork(c, amplitude, {frequency, 1.0, solverCostFactor(c)});
         !p.empty())
         throw UsageError("--frequency " + args.text("frequency") + ": " + p.why);
-    RunOptions options;
-    options.recordEvents = wantHistory || args.has("events");
+    // The events for --events, and the history sampled from them for --history.
+    const EnvelopedSine a(c.envelope, amplitude, frequency, c.tstar);
+    SlabHistoryLog log(a, c.slab.mu);
+    SlabRecorder* recorder = wantHistory || args.has("events") ? &log : nullptr;
     const auto t0 = std::chrono::steady_clock::now();
-    const SlabResult r = runSlab1D(c, amplitude, frequency, options);
+    const SlabResult r = runSlab1D(c, amplitude, frequency, {}, recorder);
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     requireSound(r, caseName(c, amplitude, frequency));
@@ -67,13 +70,11 @@ int runSimulate(const ArgList& argv) {
     j["tau_ref"] = c.tauRef();
     j["envelope"] = envelopeJson(c);
     j["wall_time_s"] = wall;
-    if (args.has("events")) j["events"] = eventsJson(r.events);
+    if (args.has("events")) j["events"] = eventsJson(log.events);
     if (wantHistory) {
         if (const std::string e = validateHistoryStep(r.tauEnd, historyStep); !e.empty())
             throw UsageError("--history-step " + args.text("history-step", "0.05") + ": " + e);
-        const EnvelopedSine a(c.envelope, amplitude, frequency, c.tstar);
-        const History h = sampleHistory(a, c.slab.mu, r.events, r.tauEnd, historyStep);
-        writeOutput(args, "history", historyCsv(h));
+        writeOutput(args, "history", historyCsv(log.history(r.tauEnd, historyStep)));
     }
     std::cout << jsonText(j, 2) << "\n";
     return 0;

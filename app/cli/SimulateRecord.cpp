@@ -40,9 +40,9 @@ void rejectSineFlags(const Args& args) {
             if (args.has(f)) throw UsageError("--" + f + " " + args.text(f) + ": needs --critical");
 }
 
-RecordAnalysis analyse(const Args& args, const RecordAnalysisInput& in) {
+RecordAnalysis analyse(const Args& args, const RecordAnalysisInput& in, SlabRecorder* recorder) {
     try {
-        return analyseRecord(in);
+        return analyseRecord(in, nullptr, recorder);
     } catch (const RecordError& e) {
         throw UsageError("--record " + args.text("record") + ": " + e.what());
     } catch (const std::invalid_argument& e) {
@@ -59,12 +59,14 @@ int runSimulateRecord(const Args& args) {
     in.record = recordExcitationFromFlags(args, "record");
     in.critical = args.has("critical");
     if (in.critical) in.search = criticalSearchFromFlags(args);
-    in.events = args.has("history") || args.has("events");
     const double historyStep = args.number("history-step", 0.05);
     if (historyStep <= 0.0)
         throw UsageError("--history-step " + args.text("history-step") + ": must be > 0");
 
-    const RecordAnalysis a = analyse(args, in);
+    // The single run's events, for --events and the --history sampled from them.
+    SlabEventLog events;
+    const bool keep = args.has("history") || args.has("events");
+    const RecordAnalysis a = analyse(args, in, keep ? &events : nullptr);
     const Slab1DCase& c = in.slab;
     nlohmann::json j = slabResultJson(a.run, a.tauRef.value_or(std::nan("")));
     if (!a.tauRef) j["gamma_c"] = nullptr;
@@ -83,13 +85,13 @@ int runSimulateRecord(const Args& args) {
     j["record_end_tau"] = motion.endTau();
     j["wall_time_s"] = a.runSeconds;
     if (in.critical) j["critical"] = recordCriticalJson(a, in.search);
-    if (args.has("events")) j["events"] = eventsJson(a.run.events);
+    if (args.has("events")) j["events"] = eventsJson(events.events);
     if (args.has("history")) {
         if (const std::string e = validateHistoryStep(a.run.tauEnd, historyStep); !e.empty())
             throw UsageError("--history-step " + args.text("history-step", "0.05") + ": " + e);
         writeOutput(
             args, "history",
-            historyCsv(sampleHistory(motion, c.slab.mu, a.run.events, a.run.tauEnd, historyStep)));
+            historyCsv(sampleHistory(motion, c.slab.mu, events.events, a.run.tauEnd, historyStep)));
     }
     std::cout << jsonText(j, 2) << "\n";
     return 0;

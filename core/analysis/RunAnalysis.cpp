@@ -121,7 +121,7 @@ void runDesignCheck(const AnalysisRequest& q, const ModelPoint& m, AnalysisContr
 
 void runRecordCheck(const AnalysisRequest& q, AnalysisControl& control, AnalysisResult& out) {
     if (!q.record) throw std::invalid_argument("record check asked for without a record");
-    RecordAnalysisInput in{q.slab, *q.record, q.checkSearch, q.codes, true, false};
+    RecordAnalysisInput in{q.slab, *q.record, q.checkSearch, q.codes, true};
     const auto t0 = Clock::now();
     out.record = analyseRecord(in, &control.sweepControl());
     out.recordSeconds = secondsSince(t0);

@@ -72,14 +72,13 @@ long runEstimate(const CriticalSearch& s, double mu) {
 }
 } // namespace
 
-RecordAnalysis analyseRecord(const RecordAnalysisInput& in, SweepControl* control) {
+RecordAnalysis analyseRecord(const RecordAnalysisInput& in, SweepControl* control,
+                             SlabRecorder* recorder) {
     if (const std::string e = validateRecordAnalysis(in); !e.empty())
         throw std::invalid_argument(e);
     RecordAnalysis a = recordMotions(in.record, in.slab);
-    RunOptions options;
-    options.recordEvents = in.events;
     auto t0 = std::chrono::steady_clock::now();
-    a.run = runRecord1D(in.slab, a.motion, a.peak, options);
+    a.run = runRecord1D(in.slab, a.motion, a.peak, {}, recorder);
     a.runSeconds = secondsSince(t0);
     if (!in.critical) return a;
     t0 = std::chrono::steady_clock::now();

@@ -9,6 +9,7 @@
 #include "core/check/RecordCheck.h"
 #include "core/excitation/EnvelopeFit.h"
 #include "core/excitation/RecordExcitation.h"
+#include "core/slab/SlabRecorder.h"
 #include "core/sweep/CriticalRecordScale.h"
 #include "core/sweep/SweepControl.h"
 
@@ -23,7 +24,6 @@ struct RecordAnalysisInput {
     CriticalSearch search;
     std::vector<CodeResult> codes; // verdicts for these (none: no verdicts)
     bool critical = true;          // search the critical scale
-    bool events = false;           // keep the single run's events (for a history)
 };
 
 struct RecordAnalysis {
@@ -45,7 +45,10 @@ struct RecordAnalysis {
 std::string validateRecordAnalysis(const RecordAnalysisInput& in);
 // Throws RecordError for an unreadable file, std::invalid_argument for a bad input.
 // control: cancel (the critical search stops within one run) and progress (runs, estimate).
-RecordAnalysis analyseRecord(const RecordAnalysisInput& in, SweepControl* control = nullptr);
+// recorder: what the single run keeps beyond its result (core/slab/SlabRecorder.h: its events,
+// for a history); null: nothing. The critical search's runs keep nothing.
+RecordAnalysis analyseRecord(const RecordAnalysisInput& in, SweepControl* control = nullptr,
+                             SlabRecorder* recorder = nullptr);
 // The motion alone (read, filtered), for previews: throws like analyseRecord.
 RecordAnalysis recordMotions(const RecordExcitation& record, const Slab1DCase& slab);
 // The envelope fitted to a motion (Fig. 27); none, with the reason in *why, when the motion has

@@ -33,7 +33,7 @@ Slab1DCase modelWith(EnvelopePreset preset) {
 struct Run {
     std::unique_ptr<EnvelopedSine> a;
     SlabParams params;
-    SlabResult solver; // the exact solver at tolerance 0, with its events
+    SlabResult solver; // the exact solver at tolerance 0
     SlabResult ref;    // its long double replay's tau_c and residual; the solver's work counts
     double endTau = 0; // where a model without sticking is stopped (regularized)
 };
@@ -66,12 +66,10 @@ std::vector<Run> referenceRuns(const WorkPrecisionCase& c) {
         r.a = std::make_unique<EnvelopedSine>(c.model.envelope, amplitude, c.frequencyHz,
                                               c.model.tstar);
         r.params = c.model.slab;
-        RunOptions o;
-        o.recordEvents = true;
-        r.solver = solveExact(*r.a, r.params, o); // eventTolerance 0: to a few ulps
+        SlabEventLog events;
+        r.solver = solveExact(*r.a, r.params, {}, &events); // eventTolerance 0: to a few ulps
         r.ref = r.solver;
-        r.ref.events.clear();
-        const ReplayResult replay = replayInLongDouble(*r.a, r.params, r.solver);
+        const ReplayResult replay = replayInLongDouble(*r.a, r.params, events.events);
         if (!replay.ok || replay.outcome != r.solver.outcome)
             throw InternalError("work-precision reference for case " + c.id +
                                 ", A = " + std::to_string(amplitude) + " g: " + replay.failure);

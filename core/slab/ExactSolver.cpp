@@ -21,8 +21,9 @@ constexpr long kMaxSegments = 100'000'000;
 
 class ExactRun {
 public:
-    ExactRun(const Excitation1D& a, const SlabParams& p, const RunOptions& o)
-        : a_(a), p_(p), o_(o) {}
+    ExactRun(const Excitation1D& a, const SlabParams& p, const RunOptions& o,
+             SlabRecorder* recorder)
+        : a_(a), p_(p), o_(o), recorder_(recorder) {}
 
     // The run, with the evaluations the excitation made for its own root solves (the |a| = mu
     // crossings) added to the work counter: every closed-form evaluation is counted.
@@ -143,7 +144,7 @@ private:
                          ", velocity " + std::to_string(v_) + ")";
             return false;
         }
-        if (o_.recordEvents) r_.events.push_back({t_, kind, x_, v_, direction});
+        if (recorder_) recorder_->onEvent({t_, kind, x_, v_, direction});
         if (r_.work.events > o_.maxEvents) {
             finish(Outcome::Failed);
             r_.failure = "more than " + std::to_string(o_.maxEvents) + " events (chattering guard)";
@@ -172,6 +173,7 @@ private:
     const Excitation1D& a_;
     const SlabParams& p_;
     const RunOptions& o_;
+    SlabRecorder* recorder_; // null: nothing kept beyond the result
     SlabResult r_;
     double t_ = 0, x_ = 0, v_ = 0;
     // a(t_) when the evaluation that moved the slip to t_ gave it, else NaN: the stop search
@@ -400,9 +402,9 @@ bool ExactRun::collapsesBy(double tEnd, double xEnd, double vEnd) {
 } // namespace
 
 SlabResult solveExact(const Excitation1D& excitation, const SlabParams& params,
-                      const RunOptions& options) {
+                      const RunOptions& options, SlabRecorder* recorder) {
     clearUpperVectorState(); // see VectorState.h: a host process may leave AVX state dirty
-    SlabResult r = ExactRun(excitation, params, options).run();
+    SlabResult r = ExactRun(excitation, params, options, recorder).run();
     failIfNonFinite(r);
     return r;
 }

@@ -8,11 +8,13 @@
 //    holds at most one stop, and the slip displacement is monotone, so at most one collapse.
 
 #include "core/excitation/Excitation1D.h"
+#include "core/slab/SlabRecorder.h"
 #include "core/slab/SlabTypes.h"
 
 namespace kinstab {
 
+// recorder: what is kept beyond the result (core/slab/SlabRecorder.h); null: nothing.
 SlabResult solveExact(const Excitation1D& excitation, const SlabParams& params,
-                      const RunOptions& options = {});
+                      const RunOptions& options = {}, SlabRecorder* recorder = nullptr);
 
 } // namespace kinstab

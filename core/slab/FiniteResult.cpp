@@ -23,8 +23,12 @@ std::string nonFiniteField(const SlabResult& r) {
     if (!std::isfinite(r.tauEnd)) return named("tau_end", r.tauEnd);
     if (!std::isfinite(r.residualDelta)) return named("residual_delta", r.residualDelta);
     if (!std::isfinite(r.maxAbsDelta)) return named("max_abs_delta", r.maxAbsDelta);
-    for (std::size_t i = 0; i < r.events.size(); ++i) {
-        const SlabEvent& e = r.events[i];
+    return {};
+}
+
+std::string nonFiniteField(const std::vector<SlabEvent>& events) {
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        const SlabEvent& e = events[i];
         const std::string at = "event " + std::to_string(i) + " (" + eventKindName(e.kind) + ") ";
         if (!std::isfinite(e.tau)) return named(at + "tau", e.tau);
         if (!std::isfinite(e.delta)) return named(at + "delta", e.delta);
@@ -33,8 +37,9 @@ std::string nonFiniteField(const SlabResult& r) {
     return {};
 }
 
-void failIfNonFinite(SlabResult& r) {
-    const std::string field = nonFiniteField(r);
+void failIfNonFinite(SlabResult& r, const std::vector<SlabEvent>& events) {
+    std::string field = nonFiniteField(r);
+    if (field.empty()) field = nonFiniteField(events);
     if (field.empty()) return;
     r.failure = std::string(kInternalFailure) + "non-finite " + field + " (" +
                 outcomeName(r.outcome) + " run)";

@@ -105,7 +105,7 @@ template <class F> Real secant(F&& f, Real x1) {
 } // namespace
 
 ReplayResult replayInLongDouble(const EnvelopedSine& a, const SlabParams& params,
-                                const SlabResult& run) {
+                                const std::vector<SlabEvent>& events) {
     ReplayResult out;
     const Replay r(a, params);
     Real t0 = 0, x0 = 0, x = 0;
@@ -117,7 +117,7 @@ ReplayResult replayInLongDouble(const EnvelopedSine& a, const SlabParams& params
         out.maxShift = std::max(out.maxShift, shift);
         return shift <= 1e-6L * (1.0L + std::abs(tau));
     };
-    for (const SlabEvent& e : run.events) {
+    for (const SlabEvent& e : events) {
         Real tau = e.tau;
         switch (e.kind) {
         case EventKind::SlipOnset: {

@@ -12,6 +12,7 @@
 #include "core/slab/SlabTypes.h"
 
 #include <string>
+#include <vector>
 
 namespace kinstab {
 
@@ -24,8 +25,9 @@ struct ReplayResult {
     long double maxShift = 0;      // largest |long double - double| over the event times
 };
 
-// events: the run's recorded events (RunOptions::recordEvents) from solveExact(a, params).
+// events: the events of solveExact(a, params), as a SlabEventLog recorded them
+// (core/slab/SlabRecorder.h).
 ReplayResult replayInLongDouble(const EnvelopedSine& a, const SlabParams& params,
-                                const SlabResult& run);
+                                const std::vector<SlabEvent>& events);
 
 } // namespace kinstab

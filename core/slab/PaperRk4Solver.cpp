@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <vector>
 
 namespace kinstab {
 
@@ -23,13 +24,16 @@ struct Sample {
 
 class PaperRun {
 public:
+    // keepEvents: hold this attempt's events until it is known to succeed (a failed attempt
+    // restarts from the beginning, and its events are none of the run's).
     PaperRun(const Excitation1D& a, const SlabParams& p, double h, const RunOptions& o,
-             long maxSteps)
-        : a_(a), p_(p), h_(h), o_(o), maxSteps_(maxSteps) {}
+             long maxSteps, bool keepEvents)
+        : a_(a), p_(p), h_(h), o_(o), maxSteps_(maxSteps), keepEvents_(keepEvents) {}
 
     // nullopt: a failure to locate an event (the caller restarts with H/4).
     std::optional<SlabResult> run();
     const SolverWork& work() const { return r_.work; }
+    const std::vector<SlabEvent>& events() const { return events_; }
 
 private:
     double accel(double tau) {
@@ -63,7 +67,7 @@ private:
     std::optional<double> stickTime(double tPrev, double tNow);
     void record(EventKind kind, double tau, const State& y, int direction) {
         ++r_.work.events;
-        if (o_.recordEvents) r_.events.push_back({tau, kind, y[2] - y[0], y[3] - y[1], direction});
+        if (keepEvents_) events_.push_back({tau, kind, y[2] - y[0], y[3] - y[1], direction});
     }
 
     const Excitation1D& a_;
@@ -71,6 +75,8 @@ private:
     double h_;
     const RunOptions& o_;
     long maxSteps_;
+    bool keepEvents_;
+    std::vector<SlabEvent> events_;
     SlabResult r_;
     bool sliding_ = false;
     double direction_ = 0.0;
@@ -214,19 +220,23 @@ std::optional<SlabResult> PaperRun::run() {
 } // namespace
 
 SlabResult solvePaperRk4(const Excitation1D& excitation, const SlabParams& params,
-                         const PaperSettings& settings, const RunOptions& options) {
+                         const PaperSettings& settings, const RunOptions& options,
+                         SlabRecorder* recorder) {
     clearUpperVectorState(); // see VectorState.h: a host process may leave AVX state dirty
     SolverWork total;
     double h = settings.step;
     for (int failures = 0;; ++failures) {
-        PaperRun run(excitation, params, h, options, settings.maxSteps);
+        PaperRun run(excitation, params, h, options, settings.maxSteps, recorder != nullptr);
         std::optional<SlabResult> r = run.run();
         if (r) {
             r->work.accelEvaluations += total.accelEvaluations;
             r->work.rootIterations += total.rootIterations;
             r->work.steps += total.steps;
             r->work.restarts = failures;
-            failIfNonFinite(*r);
+            failIfNonFinite(*r, run.events());
+            if (recorder)
+                for (const SlabEvent& e : run.events())
+                    recorder->onEvent(e);
             return *r;
         }
         total.accelEvaluations += run.work().accelEvaluations;

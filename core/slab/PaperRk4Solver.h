@@ -7,6 +7,7 @@
 // after three failures.
 
 #include "core/excitation/Excitation1D.h"
+#include "core/slab/SlabRecorder.h"
 #include "core/slab/SlabTypes.h"
 
 namespace kinstab {
@@ -17,7 +18,10 @@ struct PaperSettings {
     long maxSteps = 50'000'000;
 };
 
+// recorder: what is kept beyond the result (core/slab/SlabRecorder.h); null: nothing. It hears
+// the events of the attempt that succeeds only, once that attempt has ended.
 SlabResult solvePaperRk4(const Excitation1D& excitation, const SlabParams& params,
-                         const PaperSettings& settings, const RunOptions& options = {});
+                         const PaperSettings& settings, const RunOptions& options = {},
+                         SlabRecorder* recorder = nullptr);
 
 } // namespace kinstab

@@ -1,16 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What a planar run keeps beyond its summary (PlanarResult), chosen by the caller with the
-// recorder it passes, as OpenSees recorders and Boost.Odeint observers are: the solver reports
-// each event and each accepted state to it and keeps nothing itself. Ready-made:
+// recorder it passes (core/slab/RunRecorder.h). Ready-made:
 //  - none (a null recorder): tau_c, the outcome and the extremes only, as a sweep needs;
 //  - PlanarEventLog: the events (onset, stick, reversal, collapse, lift-off, end);
 //  - PlanarPathLog: the path, every accepted step and event state;
 //  - PlanarRecorderPair: two of them at once.
 
+#include "core/slab/RunRecorder.h"
 #include "core/slab/SlabTypes.h"
-
-#include <vector>
 
 namespace kinstab {
 
@@ -28,42 +26,9 @@ struct PlanarSample {
     bool slipping = false;
 };
 
-class PlanarRecorder {
-public:
-    virtual ~PlanarRecorder() = default;
-    virtual void onEvent(const PlanarEvent& /*event*/) {}
-    virtual void onStep(const PlanarSample& /*sample*/) {}
-};
-
-class PlanarEventLog : public PlanarRecorder {
-public:
-    void onEvent(const PlanarEvent& e) override { events.push_back(e); }
-    std::vector<PlanarEvent> events;
-};
-
-class PlanarPathLog : public PlanarRecorder {
-public:
-    void onStep(const PlanarSample& s) override { path.push_back(s); }
-    std::vector<PlanarSample> path;
-};
-
-// Both of two recorders (either may be null), as the caller asks for events, the path or both.
-class PlanarRecorderPair : public PlanarRecorder {
-public:
-    PlanarRecorderPair(PlanarRecorder* first, PlanarRecorder* second)
-        : first_(first), second_(second) {}
-    void onEvent(const PlanarEvent& e) override {
-        if (first_) first_->onEvent(e);
-        if (second_) second_->onEvent(e);
-    }
-    void onStep(const PlanarSample& s) override {
-        if (first_) first_->onStep(s);
-        if (second_) second_->onStep(s);
-    }
-
-private:
-    PlanarRecorder* first_;
-    PlanarRecorder* second_;
-};
+using PlanarRecorder = RunRecorder<PlanarEvent, PlanarSample>;
+using PlanarEventLog = EventLog<PlanarEvent, PlanarSample>;
+using PlanarPathLog = PathLog<PlanarEvent, PlanarSample>;
+using PlanarRecorderPair = RecorderPair<PlanarEvent, PlanarSample>;
 
 } // namespace kinstab

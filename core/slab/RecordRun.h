@@ -14,11 +14,13 @@ namespace kinstab {
 class RecordSamples;
 
 // peak: the peak |a| (g) the motion is scaled to. Throws std::invalid_argument on a bad motion.
+// recorder: what is kept beyond the result (core/slab/SlabRecorder.h); null: nothing.
 SlabResult runRecord1D(const Slab1DCase& c, const Accelerogram& motion, double peak,
-                       const RunOptions& options = {});
+                       const RunOptions& options = {}, SlabRecorder* recorder = nullptr);
 // The same run on samples built once for c.tstar (core/excitation/RecordedMotion.h): what every
 // run of a critical search uses, bit for bit the run above.
 SlabResult runRecord1D(const Slab1DCase& c, std::shared_ptr<const RecordSamples> samples,
-                       double peak, const RunOptions& options = {});
+                       double peak, const RunOptions& options = {},
+                       SlabRecorder* recorder = nullptr);
 
 } // namespace kinstab

@@ -46,13 +46,13 @@ std::string validateCase(const Slab1DCase& c) {
 }
 
 SlabResult runSlab1D(const Slab1DCase& c, double amplitude, double frequencyHz,
-                     const RunOptions& options) {
+                     const RunOptions& options, SlabRecorder* recorder) {
     try {
         const EnvelopedSine a(c.envelope, amplitude, frequencyHz, c.tstar);
-        if (c.solver == SolverKind::Exact) return solveExact(a, c.slab, options);
+        if (c.solver == SolverKind::Exact) return solveExact(a, c.slab, options, recorder);
         PaperSettings settings;
         settings.step = 2.0 * std::numbers::pi / a.omega() / c.paperStepsPerPeriod;
-        return solvePaperRk4(a, c.slab, settings, options);
+        return solvePaperRk4(a, c.slab, settings, options, recorder);
     } catch (const InternalError& e) {
         // A failed point, not an exception: sweeps run this on worker threads.
         SlabResult failed;

@@ -4,6 +4,7 @@
 
 #include "core/excitation/Envelope.h"
 #include "core/slab/PaperRk4Solver.h"
+#include "core/slab/SlabRecorder.h"
 #include "core/slab/SlabTypes.h"
 
 #include <string>
@@ -34,9 +35,9 @@ InputProblem checkCase(const Slab1DCase& c);
 std::string validateCase(const Slab1DCase& c); // empty when fine
 
 // A result whose numbers are all finite, or a Failed one (see FiniteResult.h); never throws
-// for a valid case.
+// for a valid case. recorder: what is kept beyond it (core/slab/SlabRecorder.h); null: nothing.
 SlabResult runSlab1D(const Slab1DCase& c, double amplitude, double frequencyHz,
-                     const RunOptions& options = {});
+                     const RunOptions& options = {}, SlabRecorder* recorder = nullptr);
 
 // The case and point in words, for messages ("slab1d exact solver, A = 3 g, f = 30 Hz, ...").
 std::string caseName(const Slab1DCase& c, double amplitude, double frequencyHz);

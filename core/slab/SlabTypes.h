@@ -66,11 +66,10 @@ struct SlabResult {
     double maxAbsDelta = 0;
     double residualDelta = 0;
     SolverWork work;
-    std::vector<SlabEvent> events; // only when asked for
+    // The events, a history: what the caller's recorder keeps (core/slab/SlabRecorder.h).
 };
 
 struct RunOptions {
-    bool recordEvents = false;
     long maxEvents = 2'000'000; // Zeno guard: a run that needs more is reported as failed
     // Exact solver: stop and collapse times are located to this absolute tolerance in tau
     // (0: to a few ulps). Only the work-precision study loosens it.

@@ -174,15 +174,15 @@ py::dict recordRun(const Slab1DCase& c, const std::string& path, std::optional<d
         finite("history_step", *historyStep);
         if (!(*historyStep > 0.0)) badArgument("history_step", *historyStep, "must be > 0");
     }
-    in.events = events || historyStep;
+    SlabEventLog log; // the single run's events, and the history sampled from them
     RecordAnalysis a;
     std::optional<History> history;
     try {
         py::gil_scoped_release unlocked;
-        a = analyseRecord(in);
+        a = analyseRecord(in, nullptr, events || historyStep ? &log : nullptr);
         if (historyStep) {
             const RecordedMotion motion(a.motion, c.tstar, a.peak);
-            history = sampleHistory(motion, c.slab.mu, a.run.events, a.run.tauEnd, *historyStep);
+            history = sampleHistory(motion, c.slab.mu, log.events, a.run.tauEnd, *historyStep);
         }
     } catch (const RecordError& e) {
         badArgument("path='" + nulShown(path) + "': " + e.what());
@@ -204,7 +204,7 @@ py::dict recordRun(const Slab1DCase& c, const std::string& path, std::optional<d
     d["motion"] = a.motion;
     d["critical_peak"] = a.critical && a.critical->peak ? *a.critical->peak : std::nan("");
     d["work"] = workDict(a.run.work);
-    d["events"] = events ? py::object(slabEventArrays(a.run.events)) : py::none();
+    d["events"] = events ? py::object(slabEventArrays(log.events)) : py::none();
     d["history"] = history ? py::object(historyArrays(*history)) : py::none();
     return d;
 }

@@ -116,8 +116,8 @@ void bindRunResults(py::module_& m) {
     slab.def_property_readonly(
             "events",
             [](const SlabRun& r) -> py::object {
-                if (!r.keepEvents) return py::none();
-                return slabEventArrays(r.result.events);
+                if (!r.events) return py::none();
+                return slabEventArrays(*r.events);
             },
             "dict of arrays tau, kind (list of str), delta, velocity, direction; None unless "
             "asked for with events=True")

@@ -10,13 +10,14 @@
 #include <pybind11/pybind11.h>
 
 #include <optional>
+#include <vector>
 
 namespace kinstab::python {
 
 // Each keeps where it ran (amplitude, frequency, tau_ref) as RunPoint.
 struct SlabRun : RunPoint {
     SlabResult result;
-    bool keepEvents = false;
+    std::optional<std::vector<SlabEvent>> events; // when asked for
     std::optional<History> history;
 };
 

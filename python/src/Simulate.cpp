@@ -9,6 +9,7 @@
 #include "core/slab/History.h"
 #include "core/slab/PlanarCase.h"
 #include "core/slab/Slab1DCase.h"
+#include "core/slab/SlabRecorder.h"
 #include "python/src/Arguments.h"
 #include "python/src/Arrays.h"
 #include "python/src/Bindings.h"
@@ -41,19 +42,15 @@ SlabRun simulate(const Slab1DCase& c, Real amplitude, Real frequency, bool event
     run.tauRef = c.tauRef();
     run.amplitude = amplitude;
     run.frequency = frequency;
-    run.keepEvents = events;
-    RunOptions options;
-    options.recordEvents = events || history;
     {
         py::gil_scoped_release unlocked;
-        run.result = runSlab1D(c, amplitude, frequency, options);
-        if (history) {
-            const EnvelopedSine a(c.envelope, amplitude, frequency, c.tstar);
-            run.history =
-                sampleHistory(a, c.slab.mu, run.result.events, run.result.tauEnd, historyStep);
-        }
+        // The events, and the history sampled from them when asked for.
+        const EnvelopedSine a(c.envelope, amplitude, frequency, c.tstar);
+        SlabHistoryLog log(a, c.slab.mu);
+        run.result = runSlab1D(c, amplitude, frequency, {}, events || history ? &log : nullptr);
+        if (history) run.history = log.history(run.result.tauEnd, historyStep);
+        if (events) run.events = std::move(log.events);
     }
-    if (!events) run.result.events.clear();
     return run;
 }
 

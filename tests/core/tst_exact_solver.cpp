@@ -72,23 +72,23 @@ private slots:
         // Events alternate correctly, and the history rebuilt from them is continuous.
         const EnvelopedSine a(Envelope::fromPreset(EnvelopePreset::Moderate), 1.05, 1.0, 0.099);
         SlabParams p;
-        RunOptions o;
-        o.recordEvents = true;
-        const SlabResult r = solveExact(a, p, o);
-        QVERIFY(r.events.size() >= 3);
-        QCOMPARE(r.events.back().kind, EventKind::Collapse);
+        SlabEventLog log;
+        const SlabResult r = solveExact(a, p, {}, &log);
+        const std::vector<SlabEvent>& events = log.events;
+        QVERIFY(events.size() >= 3);
+        QCOMPARE(events.back().kind, EventKind::Collapse);
         int onsets = 0;
-        for (std::size_t i = 0; i < r.events.size(); ++i) {
-            const SlabEvent& e = r.events[i];
+        for (std::size_t i = 0; i < events.size(); ++i) {
+            const SlabEvent& e = events[i];
             if (e.kind == EventKind::SlipOnset || e.kind == EventKind::Reversal) ++onsets;
-            if (i > 0) QVERIFY(e.tau >= r.events[i - 1].tau);
+            if (i > 0) QVERIFY(e.tau >= events[i - 1].tau);
             if (e.kind == EventKind::Stick)
                 QCOMPARE_LE(std::abs(std::abs(a.accel(e.tau))), 0.6 + 1e-12);
             if (e.kind == EventKind::SlipOnset)
                 QCOMPARE_LE(std::abs(std::abs(a.accel(e.tau)) - 0.6), 1e-12);
         }
         QCOMPARE(onsets, r.slipIntervals);
-        const History h = sampleHistory(a, p.mu, r.events, r.tauEnd, 0.01);
+        const History h = sampleHistory(a, p.mu, events, r.tauEnd, 0.01);
         for (std::size_t i = 1; i < h.samples.size(); ++i) {
             const double dt = h.samples[i].tau - h.samples[i - 1].tau;
             QCOMPARE_LE(std::abs(h.samples[i].delta - h.samples[i - 1].delta), 2.0 * dt + 1e-12);

@@ -22,10 +22,9 @@ struct Replayed {
 Replayed replayed(EnvelopePreset preset, double amplitude, double frequency) {
     const EnvelopedSine a(Envelope::fromPreset(preset), amplitude, frequency, 0.099);
     SlabParams p; // mu 0.6, limit 1: the paper's defaults
-    RunOptions o;
-    o.recordEvents = true;
-    Replayed r{solveExact(a, p, o), {}};
-    r.replay = replayInLongDouble(a, p, r.solver);
+    SlabEventLog events;
+    Replayed r{solveExact(a, p, {}, &events), {}};
+    r.replay = replayInLongDouble(a, p, events.events);
     return r;
 }
 } // namespace

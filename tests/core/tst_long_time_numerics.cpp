@@ -37,15 +37,15 @@ private slots:
         // Fast envelope, A = 3 g, f = 30 Hz, mu = 0.05: the slab slips until tau ~ 3720, past
         // 709.78 / ((beta - alpha) t*) = 3603. Before, a stick event there had tau = NaN and the
         // run ended "stable" with residual and end time NaN.
-        RunOptions o;
-        o.recordEvents = true;
-        const SlabResult r = runSlab1D(fastCase(0.05), 3.0, 30.0, o);
+        SlabEventLog log;
+        const SlabResult r = runSlab1D(fastCase(0.05), 3.0, 30.0, {}, &log);
         QCOMPARE(outcomeName(r.outcome), outcomeName(Outcome::Stable));
         QVERIFY2(nonFiniteField(r).empty(), nonFiniteField(r).c_str());
         QVERIFY(r.tauEnd > 3603.0);
         QCOMPARE_LT(std::abs(r.residualDelta), 1.0);
-        for (std::size_t i = 1; i < r.events.size(); ++i)
-            QVERIFY(r.events[i].tau >= r.events[i - 1].tau);
+        QVERIFY2(nonFiniteField(log.events).empty(), nonFiniteField(log.events).c_str());
+        for (std::size_t i = 1; i < log.events.size(); ++i)
+            QVERIFY(log.events[i].tau >= log.events[i - 1].tau);
     }
     void noFalseCollapse_data() {
         QTest::addColumn<double>("A");
@@ -155,10 +155,13 @@ private slots:
         stable.residualDelta = std::numeric_limits<double>::quiet_NaN();
         QVERIFY_THROWS_EXCEPTION(InternalError, slabResultJson(stable, 27.78));
         stable.residualDelta = 0.25;
-        stable.events.push_back(
-            {std::numeric_limits<double>::infinity(), EventKind::Stick, 0, 0, 0});
-        QVERIFY_THROWS_EXCEPTION(InternalError, eventsJson(stable.events));
-        QVERIFY(QString::fromStdString(nonFiniteField(stable)).contains("event 0 (stick) tau"));
+        const std::vector<SlabEvent> events{
+            {std::numeric_limits<double>::infinity(), EventKind::Stick, 0, 0, 0}};
+        QVERIFY_THROWS_EXCEPTION(InternalError, eventsJson(events));
+        QVERIFY(QString::fromStdString(nonFiniteField(events)).contains("event 0 (stick) tau"));
+        failIfNonFinite(stable, events);
+        QVERIFY(isInternalFailure(stable));
+        QVERIFY(QString::fromStdString(stable.failure).contains("event 0 (stick) tau"));
     }
 
 private:

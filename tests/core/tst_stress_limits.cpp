@@ -60,16 +60,16 @@ private slots:
         p.mu = 0.0;
         p.limit = 1e6;
         p.duration = T;
-        RunOptions o;
-        o.recordEvents = true;
-        const SlabResult r = solveExact(a, p, o);
-        checkDefined(r);
+        SlabEventLog log;
+        const SlabResult r = solveExact(a, p, {}, &log);
+        const std::vector<SlabEvent>& events = log.events;
+        checkDefined(r, 1'000'000, events);
         QCOMPARE(outcomeName(r.outcome), std::string("stable"));
-        QCOMPARE(r.events.back().kind, EventKind::DurationCap);
+        QCOMPARE(events.back().kind, EventKind::DurationCap);
         const testing::Integrals want = testing::integrateAccel(a, T, 4000);
         const double scale = std::max(1.0, std::abs(want.second));
         QCOMPARE_LE(std::abs(r.residualDelta + want.second), 1e-11 * scale);
-        QCOMPARE_LE(std::abs(r.events.back().velocity + want.first), 1e-11 * std::max(1.0, A));
+        QCOMPARE_LE(std::abs(events.back().velocity + want.first), 1e-11 * std::max(1.0, A));
     }
 
     // mu above the peak: never slips, delta stays exactly 0 (docs/theory.md §6.6 case 7); mu just
@@ -149,18 +149,18 @@ private slots:
         const double k = -0.5 * second;
         SlabParams p;
         p.mu = A - d;
-        RunOptions o;
-        o.recordEvents = true;
-        const SlabResult r = solveExact(a, p, o);
-        checkDefined(r);
+        SlabEventLog log;
+        const SlabResult r = solveExact(a, p, {}, &log);
+        const std::vector<SlabEvent>& events = log.events;
+        checkDefined(r, 1'000'000, events);
         QCOMPARE(outcomeName(r.outcome), std::string("stable"));
         QCOMPARE(r.slipIntervals, 1);
-        QVERIFY(r.events.size() >= 2);
-        QCOMPARE(r.events[0].kind, EventKind::SlipOnset);
-        QCOMPARE(r.events[1].kind, EventKind::Stick);
+        QVERIFY(events.size() >= 2);
+        QCOMPARE(events[0].kind, EventKind::SlipOnset);
+        QCOMPARE(events[1].kind, EventKind::Stick);
         const double rounding = 4.0 * 2.2e-16 * A / (2.0 * d);
         const double tol = 0.1 * std::sqrt(d) + 10.0 * rounding;
-        const double duration = r.events[1].tau - r.events[0].tau;
+        const double duration = events[1].tau - events[0].tau;
         QCOMPARE_LE(std::abs(duration / (3.0 * std::sqrt(d / k)) - 1.0), tol);
         const double want = 2.25 * d * d / k;
         // The slab slides against a: the residual has the sign opposite to a(m).
@@ -186,12 +186,12 @@ private slots:
         SlabParams p;
         p.mu = mu;
         p.limit = 1e3; // no collapse: follow the whole record
-        RunOptions o;
-        o.recordEvents = true;
-        const SlabResult r = solveExact(a, p, o);
-        checkDefined(r);
+        SlabEventLog log;
+        const SlabResult r = solveExact(a, p, {}, &log);
+        const std::vector<SlabEvent>& events = log.events;
+        checkDefined(r, 1'000'000, events);
         int reversals = 0;
-        for (const SlabEvent& e : r.events) {
+        for (const SlabEvent& e : events) {
             if (e.kind == EventKind::Reversal) {
                 ++reversals;
                 QCOMPARE_GT(std::abs(a.accel(e.tau)), mu);
@@ -225,25 +225,25 @@ private slots:
         QFETCH(double, cap);
         const EnvelopedSine a = moderate(1.0, 1.0);
         SlabParams p;
-        RunOptions o;
-        o.recordEvents = true;
-        const SlabResult full = solveExact(a, p, o);
-        checkDefined(full);
+        SlabEventLog fullLog;
+        const SlabResult full = solveExact(a, p, {}, &fullLog);
+        checkDefined(full, 1'000'000, fullLog.events);
         QCOMPARE(outcomeName(full.outcome), std::string("collapsed"));
         p.duration = cap;
-        const SlabResult r = solveExact(a, p, o);
-        checkDefined(r);
+        SlabEventLog log;
+        const SlabResult r = solveExact(a, p, {}, &log);
+        checkDefined(r, 1'000'000, log.events);
         if (cap > full.tauC) {
             QCOMPARE(outcomeName(r.outcome), std::string("collapsed"));
             QCOMPARE(r.tauC, full.tauC);
             return;
         }
         QCOMPARE(outcomeName(r.outcome), std::string("stable"));
-        QCOMPARE(r.events.back().kind, EventKind::DurationCap);
+        QCOMPARE(log.events.back().kind, EventKind::DurationCap);
         QCOMPARE(r.tauEnd, cap);
-        const HistorySample want = stateAt(a, p.mu, full.events, cap);
+        const HistorySample want = stateAt(a, p.mu, fullLog.events, cap);
         QCOMPARE_LE(std::abs(r.residualDelta - want.delta), 1e-12);
-        QCOMPARE_LE(std::abs(r.events.back().velocity - want.velocity), 1e-12);
+        QCOMPARE_LE(std::abs(log.events.back().velocity - want.velocity), 1e-12);
     }
 
     // A non-decaying excitation (alpha = 0) runs to its cap in bounded time.

@@ -39,7 +39,7 @@ private slots:
         const QString page1 = flat(pdfText(pdf, 1, 1));
 
         // Independent of the report: the record's critical peak straight from core.
-        RecordAnalysisInput in{p.slab, *p.record, p.critical, a.codes, true, false};
+        RecordAnalysisInput in{p.slab, *p.record, p.critical, a.codes, true};
         const RecordAnalysis ref = analyseRecord(in);
         QVERIFY(ref.critical && ref.critical->peak);
         const QString peak = QString::number(*ref.critical->peak, 'f', 3); // accelG: 0.001 g

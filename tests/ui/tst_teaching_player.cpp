@@ -32,9 +32,11 @@ TeachingParams paperCase(double a, double f, EnvelopePreset e = EnvelopePreset::
 }
 
 std::vector<SlabEvent> solverEvents(const TeachingParams& p) {
-    if (p.model == TeachingModel::Slab1D)
-        return runSlab1D(p.toCase(), p.amplitude, p.frequencyHz, RunOptions{.recordEvents = true})
-            .events;
+    if (p.model == TeachingModel::Slab1D) {
+        SlabEventLog log;
+        runSlab1D(p.toCase(), p.amplitude, p.frequencyHz, {}, &log);
+        return log.events;
+    }
     std::vector<SlabEvent> ev;
     PlanarEventLog log;
     runPlanar(p.toPlanarCase(), p.amplitude, p.frequencyHz, &log);
@@ -150,7 +152,7 @@ private slots:
         view.setParams(paperCase(1.0, 1.0));
         const auto& ev = view.run().events();
         QVERIFY(ev.size() > 3);
-        EventLog* log = view.eventLog();
+        ui::EventLog* log = view.eventLog(); // not kinstab::EventLog (core/slab/RunRecorder.h)
         const QModelIndex idx = log->logModel()->index(2, 0);
         log->scrollTo(idx);
         QTest::mouseClick(log->viewport(), Qt::LeftButton, {}, log->visualRect(idx).center());

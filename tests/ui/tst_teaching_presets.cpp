@@ -115,10 +115,10 @@ private slots:
         QCOMPARE(view.parameterPanel()->spinBox(ParameterPanel::Quantity::Frequency)->value(),
                  frequency);
         // The run shown is the solver's for these settings.
-        const SlabResult direct =
-            runSlab1D(p.toCase(), amplitude, frequency, RunOptions{.recordEvents = true});
+        SlabEventLog directEvents;
+        const SlabResult direct = runSlab1D(p.toCase(), amplitude, frequency, {}, &directEvents);
         QCOMPARE(view.run().result().outcome, direct.outcome);
-        QCOMPARE(view.run().events().size(), direct.events.size());
+        QCOMPARE(view.run().events().size(), directEvents.events.size());
     }
 
     void unknownPresetIsRefused() {
@@ -213,10 +213,11 @@ private slots:
             break;
         }
         QVERIFY(view.currentPresetId().isEmpty()); // no longer the figure's settings
+        SlabEventLog directEvents;
         const SlabResult direct =
-            runSlab1D(p.toCase(), p.amplitude, p.frequencyHz, RunOptions{.recordEvents = true});
+            runSlab1D(p.toCase(), p.amplitude, p.frequencyHz, {}, &directEvents);
         QCOMPARE(view.run().result().outcome, direct.outcome);
-        QCOMPARE(view.run().events().size(), direct.events.size());
+        QCOMPARE(view.run().events().size(), directEvents.events.size());
         if (quantity == int(ParameterPanel::Quantity::Amplitude))
             QCOMPARE(view.run().result().outcome,
                      value < 0.96 ? Outcome::Stable : Outcome::Collapsed);

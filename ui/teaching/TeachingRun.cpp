@@ -121,7 +121,9 @@ void TeachingRun::runSlab1D(const TeachingParams& p) {
     const Slab1DCase c = p.toCase();
     tauRef_ = c.tauRef();
     accel_ = std::make_unique<EnvelopedSine>(c.envelope, p.amplitude, p.frequencyHz, c.tstar);
-    result_ = kinstab::runSlab1D(c, p.amplitude, p.frequencyHz, RunOptions{.recordEvents = true});
+    SlabEventLog events;
+    result_ = kinstab::runSlab1D(c, p.amplitude, p.frequencyHz, {}, &events);
+    events_ = std::move(events.events);
 }
 
 // The planar solver's events and path, in the 1-DOF shapes the view shows: delta is dx (across
@@ -140,7 +142,7 @@ void TeachingRun::runPlanar(const TeachingParams& p) {
     result_ = std::move(r.slab);
     exitSide_ = r.exitSide;
     path_ = std::move(path.path);
-    result_.events.clear();
+    events_.clear();
     for (const PlanarEvent& e : events.events) {
         // A slip starts from rest against the base acceleration (u' = -a_h at u = 0), so its
         // direction across the walls is that of -a_x; later events carry their own velocity.
@@ -149,7 +151,7 @@ void TeachingRun::runPlanar(const TeachingParams& p) {
         const int dir = e.kind == EventKind::Stick || e.kind == EventKind::Stable ? 0
                         : fromRest ? (ax < 0) - (ax > 0)
                                    : (e.ux > 0) - (e.ux < 0);
-        result_.events.push_back({e.tau, e.kind, e.dx, e.ux, dir});
+        events_.push_back({e.tau, e.kind, e.dx, e.ux, dir});
     }
 }
 
@@ -159,8 +161,8 @@ double TeachingRun::gammaC() const {
 
 std::vector<double> TeachingRun::eventTimes() const {
     std::vector<double> t;
-    t.reserve(result_.events.size());
-    for (const SlabEvent& e : result_.events)
+    t.reserve(events_.size());
+    for (const SlabEvent& e : events_)
         t.push_back(e.tau);
     return t;
 }
@@ -169,7 +171,7 @@ TeachingFrame TeachingRun::frameAt(double tau) const {
     TeachingFrame f;
     f.tau = std::clamp(tau, 0.0, displayEnd_);
     if (!accel_) return f;
-    const auto& ev = result_.events;
+    const auto& ev = events_;
     const bool collapsed = result_.outcome == Outcome::Collapsed;
     // After collapse the relative motion is frozen at tau_c; only the free end falls.
     const double tRel = collapsed ? std::min(f.tau, result_.tauC) : f.tau;
@@ -206,7 +208,7 @@ void TeachingRun::sampleTrace() {
     std::vector<double> times;
     for (double t = 0.0; t < displayEnd_; t += step)
         times.push_back(t);
-    for (const SlabEvent& e : result_.events)
+    for (const SlabEvent& e : events_)
         times.push_back(e.tau);
     times.push_back(displayEnd_);
     std::sort(times.begin(), times.end());

@@ -78,7 +78,7 @@ public:
 
     const TeachingParams& params() const { return params_; }
     const SlabResult& result() const { return result_; }
-    const std::vector<SlabEvent>& events() const { return result_.events; }
+    const std::vector<SlabEvent>& events() const { return events_; }
     bool planar() const { return params_.model == TeachingModel::Planar; }
     ExitSide exitSide() const { return exitSide_; } // planar collapse: across or along the walls
     const std::string& error() const { return error_; } // invalid input, or a failed run
@@ -105,6 +105,7 @@ private:
     std::vector<PlanarSample> path_;        // planar: the solver's path (steps and events)
     ExitSide exitSide_ = ExitSide::None;
     SlabResult result_;
+    std::vector<SlabEvent> events_; // the run's; planar: in the 1-DOF shape (runPlanar)
     std::string error_;
     double tstar_ = 0.099;
     double tauRef_ = 1;

@@ -121,7 +121,7 @@ void TeachingView::updateOutcome() {
     }
     const SlabResult& s = r.result();
     const QString timing =
-        tr("%1 events, run %2 ms").arg(s.events.size()).arg(r.runSeconds() * 1e3, 0, 'f', 2);
+        tr("%1 events, run %2 ms").arg(r.events().size()).arg(r.runSeconds() * 1e3, 0, 'f', 2);
     const QString where = !r.planar()                       ? QString()
                           : r.exitSide() == ExitSide::Along ? tr(" along the walls")
                                                             : tr(" across the walls");
