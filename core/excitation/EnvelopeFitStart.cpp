@@ -10,7 +10,9 @@ namespace kinstab {
 namespace {
 
 // The rates' span: from 0.05 / (last peak's time), where exp(-g t) is 1 - g t to 5 % over the
-// record, to 20 / (first peak's time), where it is below 3e-9 at every peak; at most 40 rates.
+// record, to 20 / (first peak's time), where it is below 3e-9 at every peak, in factors of 4: at
+// most 12 rates (a span of 4^11 = 4e6; a wider span loses its top, where the beta -> infinity end
+// stands in).
 // Beyond either end the pairs differ from the ends' own by less than the grid's step (and the
 // refinement's box reaches further).
 struct Rates {
@@ -19,15 +21,15 @@ struct Rates {
     double at(int k) const { return std::ldexp(first, 2 * k); }
 };
 
-Rates ratesFor(const std::vector<PeakPoint>& p) {
+Rates ratesFor(const FitPeaks& p) {
     double first = std::numeric_limits<double>::infinity(), last = 0.0;
-    for (const PeakPoint& q : p) {
-        if (q.time > 0.0) first = std::min(first, q.time);
-        last = std::max(last, q.time);
+    for (double t : p.time) {
+        if (t > 0.0) first = std::min(first, t);
+        last = std::max(last, t);
     }
     const double lo = 0.05 / last, hi = 20.0 / first;
     const int count = static_cast<int>(std::ceil(0.5 * std::log2(hi / lo))) + 1;
-    return {lo, std::clamp(count, 2, 40)};
+    return {lo, std::clamp(count, 2, 12)};
 }
 
 // Values below 1e-150 count as 0: they add nothing a sum of peaks (>= 1e-150 g^2 apart from 0)
@@ -37,20 +39,20 @@ double flushed(double v) {
     return v < 1e-150 ? 0.0 : v;
 }
 
-// Row k: exp(-g_k t_q). g_{k+1} = 2 g_k, so a row is the square of the one before; every 8th is
-// formed afresh, which bounds the squarings' growth of the relative error at 2^7 ulp.
-std::vector<double> decayRows(const std::vector<PeakPoint>& p, const Rates& r) {
-    const std::size_t n = p.size();
+// Row k: exp(-g_k t_q). g_{k+1} = 4 g_k, so a row is the one before to the 4th power; each
+// squaring doubles the relative error, so row k is within 4^k ulp (< 1e-10 for k < 13), far finer
+// than the grid needs; only row 0 calls exp.
+std::vector<double> decayRows(const FitPeaks& p, const Rates& r) {
+    const std::size_t n = p.time.size();
     std::vector<double> rows(n * static_cast<std::size_t>(r.count));
-    for (int k = 0; k < r.count; ++k) {
+    for (std::size_t q = 0; q < n; ++q)
+        rows[q] = flushed(std::exp(std::max(-r.at(0) * p.time[q], -700.0)));
+    for (int k = 1; k < r.count; ++k) {
         double* row = rows.data() + n * static_cast<std::size_t>(k);
-        if (k % 4 == 0) {
-            for (std::size_t q = 0; q < n; ++q)
-                row[q] = flushed(std::exp(std::max(-r.at(k) * p[q].time, -700.0)));
-        } else {
-            const double* before = row - n;
-            for (std::size_t q = 0; q < n; ++q)
-                row[q] = flushed(before[q] * before[q] * (before[q] * before[q]));
+        const double* before = row - n;
+        for (std::size_t q = 0; q < n; ++q) {
+            const double square = flushed(before[q] * before[q]);
+            row[q] = flushed(square * square);
         }
     }
     return rows;
@@ -82,8 +84,8 @@ double projectedSse(double ee, double ep, double pp) {
     return ee > 0.0 && ep > 0.0 ? pp - ep * ep / ee : pp;
 }
 
-void keep(EnvelopeStart& best, double sse, double x, double y) {
-    if (sse < best.sse) best = {x, y, sse};
+void keep(EnvelopeStart& best, double sse, double x, double z) {
+    if (sse < best.sse) best = {x, z, sse};
 }
 
 // The columns (rates alpha) whose best is below both neighbours', best first, at most `count`,
@@ -106,15 +108,14 @@ std::vector<EnvelopeStart> localMinima(const std::vector<EnvelopeStart>& column,
 
 } // namespace
 
-std::vector<EnvelopeStart> envelopeStarts(const std::vector<PeakPoint>& p, double pp,
-                                          std::size_t starts) {
+std::vector<EnvelopeStart> envelopeStarts(const FitPeaks& p, std::size_t starts) {
     const Rates r = ratesFor(p);
-    const std::size_t n = p.size(), count = static_cast<std::size_t>(r.count);
+    const std::size_t n = p.time.size(), count = static_cast<std::size_t>(r.count);
+    const double pp = p.sumSquares;
     const std::vector<double> rows = decayRows(p, r);
     const auto row = [&](std::size_t k) { return rows.data() + n * k; };
-    std::vector<double> value(n), timed(n), gram(count * count), projection(count);
-    for (std::size_t q = 0; q < n; ++q)
-        value[q] = p[q].value;
+    const std::vector<double>& value = p.value;
+    std::vector<double> timed(n), gram(count * count), projection(count);
     for (std::size_t k = 0; k < count; ++k) {
         projection[k] = dot(row(k), value.data(), n);
         std::size_t l = k;
@@ -124,7 +125,7 @@ std::vector<EnvelopeStart> envelopeStarts(const std::vector<PeakPoint>& p, doubl
             gram[k * count + l] = dot(row(k), row(l), n);
     }
     std::vector<EnvelopeStart> column(count);
-    const double yNear = std::log(0.05), yFar = std::log(r.at(r.count));
+    const double zNear = zOfRatio(0.05), lnFar = std::log(r.at(r.count));
     for (std::size_t k = 0; k < count; ++k) {
         EnvelopeStart& best = column[k];
         best.sse = std::numeric_limits<double>::infinity();
@@ -132,16 +133,16 @@ std::vector<EnvelopeStart> envelopeStarts(const std::vector<PeakPoint>& p, doubl
         for (std::size_t l = k + 1; l < count; ++l) {
             const double ee = gram[k * count + k] - 2.0 * gram[k * count + l] + gram[l * count + l];
             keep(best, projectedSse(ee, projection[k] - projection[l], pp), x,
-                 std::log(std::ldexp(1.0, 2 * static_cast<int>(l - k)) - 1.0));
+                 zOfRatio(std::ldexp(1.0, 2 * static_cast<int>(l - k)) - 1.0));
         }
         // The valley's ends: beta -> alpha (e / (beta - alpha) -> t exp(-alpha t)) and beta -> inf.
         for (std::size_t q = 0; q < n; ++q)
-            timed[q] = p[q].time * row(k)[q];
+            timed[q] = p.time[q] * row(k)[q];
         keep(best,
              projectedSse(dot(timed.data(), timed.data(), n), dot(timed.data(), value.data(), n),
                           pp),
-             x, yNear);
-        keep(best, projectedSse(gram[k * count + k], projection[k], pp), x, yFar - x);
+             x, zNear);
+        keep(best, projectedSse(gram[k * count + k], projection[k], pp), x, lnFar - x);
     }
     return localMinima(column, starts);
 }
