@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -151,7 +152,16 @@ FitPoint refine(const FitPeaks& p, FitPoint cur) {
 
 } // namespace
 
+namespace {
+std::atomic<long> fitsBegun{0};
+} // namespace
+
+long envelopeFitsBegun() {
+    return fitsBegun.load(std::memory_order_relaxed);
+}
+
 EnvelopeFit fitEnvelope(const Accelerogram& motion) {
+    fitsBegun.fetch_add(1, std::memory_order_relaxed);
     const std::vector<PeakPoint> peaks = halfCyclePeaks(motion);
     if (peaks.size() < 3)
         throw std::invalid_argument("the motion has " + std::to_string(peaks.size()) +

@@ -6,10 +6,16 @@
 //  - peaks lying exactly on an envelope give that envelope back (SSE 0 there);
 //  - peaks on c t exp(-alpha t), the valley's end beta -> alpha, give the fit at the bound
 //    beta / alpha - 1 = 1e-3 with alpha within the bound's shift;
-//  - fewer than 3 half-cycle peaks is refused.
+//  - fewer than 3 half-cycle peaks is refused;
+//  - no fit where nothing uses it: a record's critical search (154 runs on RSN77) fits nothing,
+//    a record run with its search fits once (its envelope_fit and gamma_c's tau_ref), a study
+//    case on the record fits nothing and one on its fitted sine once.
 
+#include "core/check/RecordAnalysis.h"
 #include "core/excitation/EnvelopeFit.h"
 #include "core/records/RecordReader.h"
+#include "core/study/CaseCritical.h"
+#include "core/sweep/CriticalRecordScale.h"
 
 #include <QDir>
 #include <QtTest>
@@ -80,8 +86,7 @@ OldFit oldGridFit(const std::vector<PeakPoint>& p) {
 
 // A motion whose half-cycle peaks lie exactly on env(t): |a| = env at every sample, the sign
 // flipping every `half` samples, so each half cycle's peak is one of its samples' env values.
-template <class Env>
-Accelerogram squareWave(Env env, double dt, int samples, int half) {
+template <class Env> Accelerogram squareWave(Env env, double dt, int samples, int half) {
     Accelerogram m;
     m.dt = dt;
     for (int i = 0; i < samples; ++i)
@@ -98,6 +103,7 @@ private slots:
     void peaksOnAnEnvelopeGiveItBack();
     void theValleysEndStopsAtTheBound();
     void tooFewPeaksRefused();
+    void fitsOnlyWhereUsed();
 };
 
 void TestEnvelopeFit::notWorseThanTheOldGridOnEveryShippedRecord() {
@@ -108,15 +114,16 @@ void TestEnvelopeFit::notWorseThanTheOldGridOnEveryShippedRecord() {
         const std::vector<PeakPoint> p = halfCyclePeaks(m);
         const EnvelopeFit fit = fitEnvelope(m);
         const OldFit old = oldGridFit(p);
-        const long double now = sseAt(p, fit.alpha, fit.beta), before = sseAt(p, old.alpha, old.beta);
+        const long double now = sseAt(p, fit.alpha, fit.beta),
+                          before = sseAt(p, old.alpha, old.beta);
         qInfo("%s: alpha %.6g beta %.6g SSE %.10Lg (old grid: alpha %.6g beta %.6g SSE %.10Lg)",
               qPrintable(name), fit.alpha, fit.beta, now, old.alpha, old.beta, before);
         QVERIFY2(now <= before, qPrintable(name));
         QVERIFY(fit.beta > fit.alpha);
         // rms is the fit's own: sqrt(SSE / peaks), the same SSE to rounding.
-        QCOMPARE_LE(std::abs(fit.rms * fit.rms * static_cast<double>(p.size()) -
-                             static_cast<double>(now)),
-                    1e-9 * static_cast<double>(now));
+        QCOMPARE_LE(
+            std::abs(fit.rms * fit.rms * static_cast<double>(p.size()) - static_cast<double>(now)),
+            1e-9 * static_cast<double>(now));
     }
 }
 
@@ -152,6 +159,34 @@ void TestEnvelopeFit::tooFewPeaksRefused() {
     m.dt = 0.01;
     m.samples = {0.0, 0.1, 0.2, -0.1, -0.3, 0.0}; // two half cycles
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, fitEnvelope(m));
+}
+
+void TestEnvelopeFit::fitsOnlyWhereUsed() {
+    const std::string file = (kRecords + QStringLiteral("RSN77_SFERN_PUL164.AT2")).toStdString();
+    const Accelerogram motion = readRecord(file);
+    Slab1DCase slab;
+    slab.slab.mu = 0.6;
+    const CriticalSearch search; // the defaults: scan, then bisect
+    long before = envelopeFitsBegun();
+    const RecordCriticalScale crit = criticalRecordScale(slab, motion, search);
+    QCOMPARE_GT(crit.runs, 20);
+    QCOMPARE(envelopeFitsBegun(), before);
+
+    RecordAnalysisInput in;
+    in.slab = slab;
+    in.record.file = file;
+    in.search = search;
+    before = envelopeFitsBegun();
+    const RecordAnalysis a = analyseRecord(in);
+    QVERIFY(a.critical && a.critical->runs > 20);
+    QVERIFY(a.fit && a.tauRef);
+    QCOMPARE(envelopeFitsBegun(), before + 1);
+
+    before = envelopeFitsBegun();
+    QVERIFY(caseCritical(slab, motion, StudyMotion::Record, search).runs > 20);
+    QCOMPARE(envelopeFitsBegun(), before);
+    QVERIFY(caseCritical(slab, motion, StudyMotion::FittedSine, search).runs > 20);
+    QCOMPARE(envelopeFitsBegun(), before + 1);
 }
 
 QTEST_APPLESS_MAIN(TestEnvelopeFit)
