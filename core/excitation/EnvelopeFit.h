@@ -31,7 +31,11 @@ struct PeakPoint {
 
 // Local maxima of |a| between sign changes of a: one per half cycle.
 std::vector<PeakPoint> halfCyclePeaks(const Accelerogram& motion);
-// Throws std::invalid_argument when the motion has fewer than 3 half-cycle peaks.
+// Throws std::invalid_argument when the motion has fewer than 3 half-cycle peaks. The method:
+// docs/theory.md §7.3 (a coarse grid of rate pairs, then damped Newton on the reduced objective).
 EnvelopeFit fitEnvelope(const Accelerogram& motion);
+// How many fits this process has begun: the tests' observable that a path fits only where its
+// output shows or uses the fit (a critical search's runs and a study's record cases do not).
+long envelopeFitsBegun();
 
 } // namespace kinstab

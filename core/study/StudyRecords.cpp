@@ -26,8 +26,9 @@ bool moves(const std::vector<double>& samples) {
     return std::any_of(samples.begin(), samples.end(), [](double x) { return x != 0.0; });
 }
 
-// A motion that is zero throughout has no critical scale: refused before any case runs.
-void requireMotion(const StudySpec& s, const StudyRecord& r, const Accelerogram& ground) {
+// A motion that is zero throughout has no critical scale: refused before any case runs. The
+// levels' motions are kept for the cases (r.levelMotions).
+void requireMotion(const StudySpec& s, StudyRecord& r, const Accelerogram& ground) {
     for (const auto& f : s.floors) {
         const bool zero =
             f ? !moves(floorMotion(ground, {f->period, f->damping, std::nullopt}).samples)
@@ -35,9 +36,15 @@ void requireMotion(const StudySpec& s, const StudyRecord& r, const Accelerogram&
         if (zero) throw RecordError(r.file, 0, "the motion is zero throughout");
     }
     if (s.levels.empty()) return;
-    for (const Accelerogram& m :
-         floorMotions(s.building->model, ground, {s.building->settings.damping, std::nullopt}))
+    std::vector<Accelerogram> levels =
+        floorMotions(s.building->model, ground, {s.building->settings.damping, std::nullopt});
+    for (const Accelerogram& m : levels)
         if (!moves(m.samples)) throw RecordError(r.file, 0, "the motion is zero throughout");
+    // Only the study's levels are kept (a tall building's others would multiply the memory).
+    for (std::size_t i = 0; i < levels.size(); ++i)
+        if (std::find(s.levels.begin(), s.levels.end(), static_cast<int>(i + 1)) == s.levels.end())
+            levels[i].samples = std::vector<double>();
+    r.levelMotions = std::make_shared<const std::vector<Accelerogram>>(std::move(levels));
 }
 
 } // namespace

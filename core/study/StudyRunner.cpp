@@ -34,7 +34,17 @@ std::vector<Accelerogram> levelMotions(const StudySpec& s, const Accelerogram& g
 }
 
 // The motion under the slab: the ground record, through the floor filter, or the case's level.
+// A level's motion is the one built when the record was read, negated for the inverted polarity:
+// the building is linear and rounding is symmetric in sign, so that is bit for bit the motion
+// under the inverted ground.
 Accelerogram caseMotion(const StudySpec& s, const StudyCase& c, const Accelerogram& ground) {
+    if (c.level > 0 && c.record->levelMotions) {
+        Accelerogram m = (*c.record->levelMotions)[static_cast<std::size_t>(c.level - 1)];
+        if (c.inverted)
+            for (double& a : m.samples)
+                a = -a;
+        return m;
+    }
     if (c.level > 0) return levelMotions(s, ground)[static_cast<std::size_t>(c.level - 1)];
     if (c.floor) return floorMotion(ground, {c.floor->period, c.floor->damping, std::nullopt});
     return ground;

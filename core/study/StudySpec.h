@@ -62,6 +62,9 @@ struct StudyRecord {
     // the ground motion parsed from those same bytes, which every case of the record uses.
     std::string sha256;
     std::shared_ptr<const Accelerogram> ground;
+    // With a building: every level's motion under ground, built once when the record is read
+    // and shared by every case at a level (issue 34: each case built all of them for its one).
+    std::shared_ptr<const std::vector<Accelerogram>> levelMotions;
 };
 
 struct FloorFilterChoice {
