@@ -43,6 +43,18 @@ private slots:
         QCOMPARE_LE(std::abs(tauC - r.solver.tauC), 1e-12 * r.solver.tauC);
         QVERIFY(r.replay.maxShift < 1e-11L);
     }
+    void largestHalleyShiftAgrees() {
+        // Of the 257 x 257 benchmark surface (moderate, mu 0.6), the point where the stop and
+        // crossing searches' Halley steps (docs/theory.md §6.3) moved tau_c most: from
+        // 41.56617818055752 (Newton's steps) to 41.56617818055604, 3.6e-14 relative. The replay
+        // says which is nearer; the solver must stay within a few double roundings of it.
+        const Replayed r = replayed(EnvelopePreset::Moderate, 1.4765625, 1.734375);
+        QVERIFY2(r.replay.ok, r.replay.failure.c_str());
+        QCOMPARE(outcomeName(r.replay.outcome), outcomeName(Outcome::Collapsed));
+        const double tauC = static_cast<double>(r.replay.tauC);
+        qInfo("solver %.17g replay %.17g", r.solver.tauC, tauC);
+        QCOMPARE_LE(std::abs(tauC - r.solver.tauC), 1e-13 * r.solver.tauC);
+    }
     void highFrequencyRoundingFound() {
         // Moderate, f = 20 Hz, A = 100 g, mu 0.6: about 1650 slips and reversals, stable. A
         // 40-digit replay of this run gives |double residual - true residual| = 2.2e-10.
