@@ -153,12 +153,12 @@ private slots:
             QVERIFY(previous < from && from < to); // increasing, disjoint, each non-empty
             previous = to;
             // Both bisected to 1e-4 relative: the ends agree to twice that.
-            QVERIFY(std::abs(from - want[i].toArray()[0].toDouble()) < 2e-4 * from);
-            QVERIFY(std::abs(to - want[i].toArray()[1].toDouble()) < 2e-4 * to);
+            QCOMPARE_LE(std::abs(from - want[i].toArray()[0].toDouble()), 2e-4 * from);
+            QCOMPARE_LE(std::abs(to - want[i].toArray()[1].toDouble()), 2e-4 * to);
         }
         QCOMPARE(got.last().toArray()[1].toDouble(), 5.0); // open to the maximum
         QCOMPARE(j["critical_amplitude_g"].toDouble(), got[0].toArray()[0].toDouble());
-        QVERIFY(std::abs(j["critical_amplitude_g"].toDouble() / 0.25 - 1.1721) < 1e-3);
+        QCOMPARE_LE(std::abs(j["critical_amplitude_g"].toDouble() / 0.25 - 1.1721), 1e-3);
         QCOMPARE(j["critical_run_limit_reached"].toBool(), false);
         QVERIFY(j["critical_runs"].toInt() < 1000); // against about 20,000 for the brute force
     }

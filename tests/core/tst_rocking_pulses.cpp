@@ -174,7 +174,7 @@ private slots:
         QCOMPARE_LT(std::abs(iv.intervals[0].second - 6.3181), 1e-3);
         QCOMPARE_LT(std::abs(iv.intervals[1].first - 7.1681), 1e-3);
         QCOMPARE(iv.intervals[1].second, 10.0); // open to the maximum
-        QVERIFY(std::abs(*iv.critical() - iv.intervals[0].first) == 0.0);
+        QCOMPARE_EQ(*iv.critical(), iv.intervals[0].first);
     }
     void makrisKonstantinidisOneCosine() {
         // Makris & Konstantinidis 2003: p = 2 rad/s, alpha = 15 deg, Housner's restitution,

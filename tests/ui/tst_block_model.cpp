@@ -208,7 +208,7 @@ private slots:
         QCOMPARE(before.shape, PulseShape::Rectangular);
         QCOMPARE(before.equations, RockingEquations::Linearised);
         QCOMPARE(before.points, 33);
-        QVERIFY(std::abs(before.block.halfWidth - 0.25 * metresPerShown()) < 1e-12);
+        QCOMPARE_LE(std::abs(before.block.halfWidth - 0.25 * metresPerShown()), 1e-12);
         QCOMPARE(*before.mu, 0.7);
         QCOMPARE(w->saveProjectAs(path), QString());
         w->newProject();

@@ -27,7 +27,7 @@
 using namespace kinstab;
 using namespace kinstab::ui;
 
-class TstBlockScreenshots : public QObject {
+class TestBlockScreenshots : public QObject {
     Q_OBJECT
 private:
     QTemporaryDir tmp_;
@@ -117,5 +117,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TstBlockScreenshots)
+QTEST_MAIN(TestBlockScreenshots)
 #include "tst_block_screenshots.moc"

@@ -83,7 +83,7 @@ private slots:
         v.player()->stepToNextEvent();
         QCOMPARE(v.player()->tau(), v.run().eventTimes().front());
         QCOMPARE(v.run().eventTimes().front(), v.run().result().impactTimes.front());
-        QVERIFY(std::abs(v.displayedState().theta) < 1e-9); // at an impact theta = 0
+        QCOMPARE_LE(std::abs(v.displayedState().theta), 1e-9); // at an impact theta = 0
     }
 
     void scrubShowsCorePath_data() {
@@ -101,7 +101,7 @@ private slots:
         QVERIFY(v.applyPreset(id));
         v.scrubber()->setValue(scrub);
         const double t = v.player()->tau();
-        QVERIFY(std::abs(t - v.run().end() * scrub / BlockTeachingView::kScrubSteps) < 1e-12);
+        QCOMPARE_LE(std::abs(t - v.run().end() * scrub / BlockTeachingView::kScrubSteps), 1e-12);
         // The reference: core's run of the same case recorded here.
         const BlockCase& c = findBlockPreset(id)->blockCase;
         std::vector<RockingSample> path;
@@ -118,8 +118,8 @@ private slots:
         const double u = (t - a.t) / (b.t - a.t);
         const RockingSample shown = v.displayedState();
         QCOMPARE(shown.t, t);
-        QVERIFY(std::abs(shown.theta - (a.theta + u * (b.theta - a.theta))) < 1e-12);
-        QVERIFY(std::abs(shown.sliding - (a.sliding + u * (b.sliding - a.sliding))) < 1e-12);
+        QCOMPARE_LE(std::abs(shown.theta - (a.theta + u * (b.theta - a.theta))), 1e-12);
+        QCOMPARE_LE(std::abs(shown.sliding - (a.sliding + u * (b.sliding - a.sliding))), 1e-12);
         QCOMPARE(shown.mode, a.mode);
         // Something moves at that time: the comparison is not of two zeros.
         QVERIFY(std::abs(shown.theta) + std::abs(shown.sliding) > 1e-6);
