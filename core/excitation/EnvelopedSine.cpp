@@ -238,9 +238,18 @@ double EnvelopedSine::humpRoot(const Hump& h, double target, bool rising) const 
     const auto offsetAt = [&](double e) {
         return std::asin(std::min(1.0, target / (scale_ * e))) / omega_;
     };
+    // log e about the half-period's middle c to second order: lambda = e'/e there, and
+    // rho = (log e)'' = e''/e - lambda^2 from the same m = expm1(-(q - p) c) = -d / (lambda + q).
+    const double c = lo + 0.5 * halfPeriod_, d = q_ - p_, m = -d / (h.logSlope + q_);
+    const double rho = (d * (p_ + q_) + q_ * q_ * m) / m - h.logSlope * h.logSlope;
+    const auto envelopeNear = [&](double t) {
+        const double u = t - c, v = h.m - c;
+        return h.envelope * std::exp(h.logSlope * (t - h.m) + 0.5 * rho * (u * u - v * v));
+    };
     const double first = offsetAt(h.envelope);
     const double guess = rising ? lo + first : hi - first;
-    const double offset = offsetAt(h.envelope * std::exp(h.logSlope * (guess - h.m)));
+    const double second = offsetAt(envelopeNear(guess));
+    const double offset = offsetAt(envelopeNear(rising ? lo + second : hi - second));
     return rising
                ? safeguardedHalley(fdf, lo, h.m, -target, h.peakValue - target, 200, lo + offset).x
                : safeguardedHalley(fdf, h.m, hi, h.peakValue - target, -target, 200, hi - offset).x;

@@ -6,6 +6,7 @@
 #include "core/numerics/VectorState.h"
 #include "core/slab/FiniteResult.h"
 #include "core/slab/SegmentCuts.h"
+#include "core/slab/StopSample.h"
 
 #include <algorithm>
 #include <cmath>
@@ -55,8 +56,10 @@ private:
     // does not know a' and a'' (a record), d3f is NaN and the search takes Newton's steps.
     void stopFunction(double tau, Derivatives& d) {
         ++r_.work.accelEvaluations;
-        AccelAt at;
-        d.f = s_ * slipVelocity(tau, a_.velocityChangeAndSlopes(t_, tau, at));
+        AccelAt& at = lastStop_.at;
+        lastStop_.tau = tau;
+        lastStop_.v = slipVelocity(tau, a_.velocityChangeAndSlopes(t_, tau, at));
+        d.f = s_ * lastStop_.v;
         d.df = s_ * (-s_ * p_.mu - at.a);
         const bool slopes = !std::isnan(at.da) && !std::isnan(at.d2a);
         d.d2f = slopes ? -s_ * at.da : 0.0;
@@ -92,6 +95,15 @@ private:
         e.x = slipDisplacement(tau, dx);
         e.v = slipVelocity(tau, dv);
         return e;
+    }
+    // The state at the stop, with a there: from the stop search's last evaluation when the stop
+    // is near it (core/slab/StopSample.h; its displacement from the memo's exponentials), else
+    // from a new evaluation.
+    EndState stopState(double tStop) {
+        const StopSample& l = lastStop_;
+        if (!l.reaches(tStop)) return stateAt(tStop);
+        const double x = l.displacementAt(tStop, displacementAt(l.tau), s_, p_.mu);
+        return {tStop, x, 0.0, l.accelAt(tStop)};
     }
     // slipSlope(tau) from a(tau) when an evaluation already made gave it (NaN: not known).
     double slipSlope(double tau, double knownAccel) {
@@ -163,7 +175,7 @@ private:
     // so by the collapse search) the steps are Newton's, else Halley's.
     double rootOf(auto&& fdf, double lo, double hi, double flo, double fhi, double dflo,
                   double dfhi) {
-        const double start = hermiteRootGuess(lo, hi, flo, fhi, dflo, dfhi);
+        const double start = hermiteRootGuess(lo, hi, flo, fhi, dflo, dfhi, 1e-6);
         const RootResult root =
             safeguardedHalley(fdf, lo, hi, flo, fhi, 200, start, o_.eventTolerance);
         r_.work.rootIterations += root.iterations;
@@ -178,7 +190,8 @@ private:
     // a(t_) when the evaluation that moved the slip to t_ gave it, else NaN: the stop search
     // from t_ takes the velocity's slope at t_ from it instead of evaluating a again.
     double aT_ = std::numeric_limits<double>::quiet_NaN();
-    int s_ = 0; // 0 sticking, +1/-1 slipping with that sign of relative velocity
+    StopSample lastStop_; // the stop search's last evaluation
+    int s_ = 0;           // 0 sticking, +1/-1 slipping with that sign of relative velocity
 };
 
 void ExactRun::runEvents() {
@@ -323,13 +336,14 @@ ExactRun::Step ExactRun::slipThrough(double hi, AtStop atStop, const EndState* k
         const bool stops = s_ * vHi <= 0.0 && !(atStop == AtStop::Reverse && v_ == 0.0);
         if (!stops) return slipTo(atHi);
         // s v <= 0 already at t_ only through rounding right after a grazing onset: stop there.
+        lastStop_ = StopSample{};
         const double tStop =
             (s_ * v_ <= 0.0)
                 ? t_
                 : rootOf([&](double tau, Derivatives& d) { stopFunction(tau, d); }, t_, hi, s_ * v_,
                          s_ * vHi, slipSlope(t_, aT_), slipSlope(hi, atHi.a));
         // The state at the stop, with a there (whether it sticks, and the next slip's slope).
-        const EndState stop = stateAt(tStop);
+        const EndState stop = stopState(tStop);
         if (collapsesBy(tStop, stop.x, 0.0)) return Step::Done;
         moveTo(tStop, stop.x, 0.0, stop.a);
         if (atStop == AtStop::Reverse || (atStop == AtStop::Decide && std::abs(stop.a) > p_.mu)) {
