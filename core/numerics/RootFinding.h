@@ -86,10 +86,8 @@ RootResult safeguardedNewton(FDF&& fdf, double lo, double hi, double flo, double
 // A first guess for a root on [lo, hi] from the values and slopes at both ends: the root of
 // their cubic Hermite interpolant (fourth-order accurate where the secant is second-order).
 // f(lo) and f(hi) must differ in sign.
-// tolerance: in units of the bracket's width; a start for Halley's steps, which go from 1e-3 to
-// an ulp in two, needs far less than the default.
 inline double hermiteRootGuess(double lo, double hi, double flo, double fhi, double dflo,
-                               double dfhi, double tolerance = 1e-12) {
+                               double dfhi) {
     const double h = hi - lo, dlo = h * dflo, dhi = h * dfhi;
     // p(u) = c0 + c1 u + c2 u^2 + c3 u^3 on [0, 1], p(0) = flo, p(1) = fhi.
     const double c0 = flo, c1 = dlo, c2 = 3.0 * (fhi - flo) - 2.0 * dlo - dhi,
@@ -99,7 +97,7 @@ inline double hermiteRootGuess(double lo, double hi, double flo, double fhi, dou
         df = c1 + u * (2.0 * c2 + u * 3.0 * c3);
     };
     const double secant = flo / (flo - fhi);
-    const RootResult u = safeguardedNewton(cubic, 0.0, 1.0, flo, fhi, 60, secant, tolerance);
+    const RootResult u = safeguardedNewton(cubic, 0.0, 1.0, flo, fhi, 60, secant, 1e-12);
     return lo + h * (std::isfinite(u.x) ? u.x : secant);
 }
 

@@ -175,7 +175,7 @@ private:
     // so by the collapse search) the steps are Newton's, else Halley's.
     double rootOf(auto&& fdf, double lo, double hi, double flo, double fhi, double dflo,
                   double dfhi) {
-        const double start = hermiteRootGuess(lo, hi, flo, fhi, dflo, dfhi, 1e-6);
+        const double start = hermiteRootGuess(lo, hi, flo, fhi, dflo, dfhi);
         const RootResult root =
             safeguardedHalley(fdf, lo, hi, flo, fhi, 200, start, o_.eventTolerance);
         r_.work.rootIterations += root.iterations;
