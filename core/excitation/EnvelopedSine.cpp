@@ -231,10 +231,10 @@ double EnvelopedSine::humpRoot(const Hump& h, double target, bool rising) const 
     };
     const double lo = static_cast<double>(h.k) * halfPeriod_, hi = lo + halfPeriod_;
     // First guess: the envelope frozen at its value at m, |a| = level where
-    // |sin(omega (tau - lo))| = level / (scale e(m)); then the envelope at that guess from its
-    // log-slope (e(t) ~ e(m) exp(lambda (t - m)), no closed-form evaluation) and the same step
-    // again. The start is then within about 1e-6 of the root instead of 1e-3, and one Halley
-    // step, whose error a''' tells, usually ends the solve (docs/theory.md §6.3).
+    // |sin(omega (tau - lo))| = level / (scale e(m)); then twice the same step with the envelope
+    // at the last guess from a second-order model of log e (no closed-form evaluation). The start
+    // is then close enough that one Halley step, whose error a''' tells, usually ends the solve
+    // (docs/theory.md §6.3).
     const auto offsetAt = [&](double e) {
         return std::asin(std::min(1.0, target / (scale_ * e))) / omega_;
     };
