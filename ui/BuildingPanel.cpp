@@ -49,12 +49,34 @@ BuildingPanel::BuildingPanel(QWidget* parent)
       m_estimate(new QCheckBox(tr("Estimate by each code's formula"), this)),
       m_estimates(new QLabel(this)), m_system(new QComboBox(this)), m_systemNote(new QLabel(this)),
       m_occupancy(new QComboBox(this)) {
+    buildNameRow();
+    buildSizeFields();
+    buildPeriodRows();
+    buildUseRows();
+
+    connect(m_estimate, &QCheckBox::toggled, this, [this] {
+        m_period->setEnabled(!m_estimate->isChecked());
+        updateEstimate();
+        emit changed();
+    });
+    for (QComboBox* c : {m_system, m_occupancy})
+        connect(c, &QComboBox::currentIndexChanged, this, &InputPanel::changed);
+    connect(m_name, &TextField::edited, this, &InputPanel::changed);
+    connect(this, &InputPanel::changed, this, &BuildingPanel::updateEstimate);
+    setBuilding(Building{});
+}
+
+// The form's rows, top to bottom: the name; N, h_n and D; the period; the system and use.
+void BuildingPanel::buildNameRow() {
     m_name->setToolTip(tr("A name for the building, printed on exports and reports."));
     m_name->setObjectName(QStringLiteral("buildingName"));
     m_name->lineEdit()->setToolTip(m_name->toolTip());
     auto* nameLabel = new QLabel(tr("&Name:"), this);
     nameLabel->setBuddy(m_name->lineEdit());
     form()->addRow(nameLabel, m_name);
+}
+
+void BuildingPanel::buildSizeFields() {
     m_stories =
         addField("stories", tr("&Stories:"), QString(),
                  tr("Number of stories above the base, N. The top floor's force ratio is what "
@@ -75,6 +97,9 @@ BuildingPanel::BuildingPanel(QWidget* parent)
                               "(UBC) or L (ATC 3-06). Enters T = 0.05 h_n/√D."));
     m_dimension->setCheck(
         [this](double v) { return rangeCheck(0, maxPlanDimension(m_unit), false)(v); });
+}
+
+void BuildingPanel::buildPeriodRows() {
     m_estimate->setToolTip(tr("Leave the period to each code's own formula instead of entering a "
                               "computed or measured fundamental period."));
     form()->addRow(QString(), m_estimate);
@@ -84,6 +109,9 @@ BuildingPanel::BuildingPanel(QWidget* parent)
     m_period->setCheck(rangeCheck(kMinPeriodS, kMaxPeriodS));
     m_estimates->setWordWrap(true);
     form()->addRow(QString(), m_estimates);
+}
+
+void BuildingPanel::buildUseRows() {
     for (const auto& entry : systems)
         m_system->addItem(tr(entry.second));
     m_system->setToolTip(tr("Lateral-force-resisting system: it chooses each code's period "
@@ -97,17 +125,6 @@ BuildingPanel::BuildingPanel(QWidget* parent)
     m_occupancy->setToolTip(tr("Use of the building: each code's importance factor follows from it "
                                "unless a code's own input overrides it."));
     form()->addRow(tr("&Occupancy:"), m_occupancy);
-
-    connect(m_estimate, &QCheckBox::toggled, this, [this] {
-        m_period->setEnabled(!m_estimate->isChecked());
-        updateEstimate();
-        emit changed();
-    });
-    for (QComboBox* c : {m_system, m_occupancy})
-        connect(c, &QComboBox::currentIndexChanged, this, &InputPanel::changed);
-    connect(m_name, &TextField::edited, this, &InputPanel::changed);
-    connect(this, &InputPanel::changed, this, &BuildingPanel::updateEstimate);
-    setBuilding(Building{});
 }
 
 Building BuildingPanel::building() const {

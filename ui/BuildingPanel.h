@@ -29,6 +29,10 @@ protected:
     QStringList extraProblems() const override; // the name's (ui/TextField.h)
 
 private:
+    void buildNameRow();
+    void buildSizeFields(); // stories, height, plan dimension
+    void buildPeriodRows(); // estimate by formula, period, the formulas' periods
+    void buildUseRows();    // system and occupancy
     void updateEstimate();
 
     Building m_kept;                      // story weights and heights from the file

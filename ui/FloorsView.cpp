@@ -65,9 +65,31 @@ FloorsView::FloorsView(std::function<Project()> source, QWidget* parent)
       m_cancel(new QPushButton(tr("Cancel"), this)), m_pick(new QSpinBox(this)),
       m_status(new QLabel(this)), m_verdicts(new QLabel(this)), m_profile(chartView(this)),
       m_critical(chartView(this)), m_level(chartView(this)) {
+    setUpFields();
+    QLayout* bar = buildRecordBar();
+    auto* top = new QSplitter(Qt::Horizontal, this);
+    top->addWidget(m_profile);
+    top->addWidget(m_critical);
+    auto* pickBar = new QHBoxLayout;
+    pickBar->addWidget(new QLabel(tr("Show"), this));
+    pickBar->addWidget(m_pick);
+    pickBar->addWidget(m_status, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(bar);
+    layout->addWidget(top, 3);
+    layout->addLayout(pickBar);
+    layout->addWidget(m_level, 2);
+    layout->addWidget(m_verdicts);
+
+    connect(m_run, &QPushButton::clicked, this, &FloorsView::run);
+    connect(m_cancel, &QPushButton::clicked, this, &FloorsView::cancel);
+    connect(m_pick, &QSpinBox::valueChanged, this, &FloorsView::pickLevel);
+}
+
+// The record and the building's options, as a first start shows them.
+void FloorsView::setUpFields() {
     m_record->setText(QStringLiteral(":/records/RSN77_SFERN_PUL164.AT2"));
     m_record->setToolTip(tr("The ground record (as recorded; the building filters it)."));
-    auto* browse = new QPushButton(tr("Record…"), this);
     m_stiffness->addItems({QStringLiteral("uniform"), QStringLiteral("weight")});
     m_stiffness->setToolTip(tr("Storey stiffness: equal, or proportional to the weight carried"));
     m_damping->setRange(0.0, 0.5);
@@ -83,7 +105,11 @@ FloorsView::FloorsView(std::function<Project()> source, QWidget* parent)
     m_status->setWordWrap(true);
     m_verdicts->setWordWrap(true);
     m_verdicts->setTextFormat(Qt::PlainText);
+}
 
+// Ground record, stiffness, damping, the slab's level, Run and Cancel in one row.
+QLayout* FloorsView::buildRecordBar() {
+    auto* browse = new QPushButton(tr("Record…"), this);
     auto* bar = new QHBoxLayout;
     bar->addWidget(new QLabel(tr("Ground record:"), this));
     bar->addWidget(m_record, 2);
@@ -96,28 +122,12 @@ FloorsView::FloorsView(std::function<Project()> source, QWidget* parent)
     bar->addWidget(m_slabLevel);
     bar->addWidget(m_run);
     bar->addWidget(m_cancel);
-    auto* top = new QSplitter(Qt::Horizontal, this);
-    top->addWidget(m_profile);
-    top->addWidget(m_critical);
-    auto* pickBar = new QHBoxLayout;
-    pickBar->addWidget(new QLabel(tr("Show"), this));
-    pickBar->addWidget(m_pick);
-    pickBar->addWidget(m_status, 1);
-    auto* layout = new QVBoxLayout(this);
-    layout->addLayout(bar);
-    layout->addWidget(top, 3);
-    layout->addLayout(pickBar);
-    layout->addWidget(m_level, 2);
-    layout->addWidget(m_verdicts);
-
     connect(browse, &QPushButton::clicked, this, [this] {
         const QString f = QFileDialog::getOpenFileName(
             this, tr("Ground record"), inOpenProjectFolder(), RecordPreview::fileDialogFilter());
         if (!f.isEmpty()) m_record->setText(f);
     });
-    connect(m_run, &QPushButton::clicked, this, &FloorsView::run);
-    connect(m_cancel, &QPushButton::clicked, this, &FloorsView::cancel);
-    connect(m_pick, &QSpinBox::valueChanged, this, &FloorsView::pickLevel);
+    return bar;
 }
 
 FloorsView::~FloorsView() = default; // m_job cancels and waits

@@ -20,6 +20,7 @@ class QChartView;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
+class QLayout;
 class QLineEdit;
 class QPushButton;
 class QSpinBox;
@@ -51,6 +52,8 @@ protected:
     void showEvent(QShowEvent* e) override;
 
 private:
+    void setUpFields();
+    QLayout* buildRecordBar();
     struct Outcome;
     void applyProject(const Project& p);
     void onFinished(std::shared_ptr<Outcome> o);

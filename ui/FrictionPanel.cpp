@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// FrictionPanel (ui/FrictionPanel.h): the tab, the tests read, the calibration and its table; the
+// charts in FrictionPanelCharts.cpp.
 #include "ui/FrictionPanel.h"
 
 #include "core/friction/TripletCsv.h"
@@ -14,13 +16,10 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QLineSeries>
 #include <QPushButton>
-#include <QScatterSeries>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
-#include <QValueAxis>
 
 #include <algorithm>
 #include <cmath>
@@ -39,6 +38,7 @@ double shownDecayRate(double cPerInch, double beta, const ShownUnits& u) {
     return cPerInch / (u.length * std::pow(u.force * u.length, beta));
 }
 
+// f_m's unit goes in squared: in "%1²" QString::arg reads ² as a digit, placeholder %12.
 QStringList tableHeader(const ShownUnits& u) {
     return {QObject::tr("Configuration"),
             QObject::tr("CP %1").arg(u.p),
@@ -48,7 +48,7 @@ QStringList tableHeader(const ShownUnits& u) {
             QObject::tr("c 1/%1·(%2·%1)^β").arg(u.l, u.f),
             QObject::tr("b"),
             QObject::tr("β"),
-            QObject::tr("f_m %1²").arg(u.f),
+            QObject::tr("f_m %1").arg(u.f + QStringLiteral("²")),
             QObject::tr("Outlier (Grubbs 95 %)")};
 }
 
@@ -62,6 +62,32 @@ FrictionPanel::FrictionPanel(QWidget* parent) : QWidget(parent) {
 
 void FrictionPanel::buildUi() {
     auto* open = new QPushButton(tr("Open CSV…"));
+    QLayout* controls = buildControls(open);
+    QLayout* muRow = buildMuRow();
+    status_ = new QLabel;
+    status_->setWordWrap(true);
+    QWidget* results = buildResults();
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(controls);
+    layout->addLayout(muRow);
+    layout->addWidget(results, 1);
+    layout->addWidget(status_);
+
+    connect(open, &QPushButton::clicked, this, &FrictionPanel::openFile);
+    connect(configuration_, &QComboBox::currentTextChanged, this, &FrictionPanel::refresh);
+    connect(slopeKind_, &QComboBox::currentIndexChanged, this, &FrictionPanel::refresh);
+    connect(area_, &QDoubleSpinBox::valueChanged, this, [this](double shown) {
+        areaIn2_ = shown * shownUnits(units_).area;
+        recalibrate();
+    });
+    connect(useMu_, &QPushButton::clicked, this, [this] {
+        if (const auto mu = currentMu()) emit useMu(*mu);
+    });
+}
+
+// Open, the configuration, the bearing area and the slope's fit in one row.
+QLayout* FrictionPanel::buildControls(QPushButton* open) {
     configuration_ = new QComboBox;
     slopeKind_ = new QComboBox;
     slopeKind_->addItems({tr("least squares with intercept"), tr("through the origin")});
@@ -71,12 +97,6 @@ void FrictionPanel::buildUi() {
     area_->setSuffix(QStringLiteral(" in²"));
     area_->setSpecialValueText(tr("not set"));
     area_->setToolTip(tr("Bearing area A_b: tau_inf = V_inf / A_b (not given in Furgerson 1980)"));
-    useMu_ = new QPushButton(tr("Use this μ"));
-    useMu_->setObjectName("useMu");
-    muLabel_ = new QLabel;
-    status_ = new QLabel;
-    status_->setWordWrap(true);
-
     auto* controls = new QHBoxLayout;
     controls->addWidget(open);
     controls->addWidget(new QLabel(tr("Configuration")));
@@ -85,12 +105,23 @@ void FrictionPanel::buildUi() {
     controls->addWidget(area_);
     controls->addWidget(slopeKind_);
     controls->addStretch(1);
-    // The fitted μ and its button on a line of their own: beside the controls above they made
-    // the row wider than the tab at 1280 × 800 and the button was cut at the right.
+    return controls;
+}
+
+// The fitted μ and its button on a line of their own: beside the controls above they made the
+// row wider than the tab at 1280 × 800 and the button was cut at the right.
+QLayout* FrictionPanel::buildMuRow() {
+    useMu_ = new QPushButton(tr("Use this μ"));
+    useMu_->setObjectName("useMu");
+    muLabel_ = new QLabel;
     auto* muRow = new QHBoxLayout;
     muRow->addWidget(muLabel_, 1);
     muRow->addWidget(useMu_);
+    return muRow;
+}
 
+// The two charts side by side above the table of fits.
+QWidget* FrictionPanel::buildResults() {
     curves_ = makeChartView(tr("Shear force after fracture"));
     coulomb_ = makeChartView(tr("Asymptotic friction law"));
     table_ = new QTableWidget(0, 10);
@@ -116,23 +147,7 @@ void FrictionPanel::buildUi() {
                              4 * table_->verticalHeader()->defaultSectionSize() +
                              2 * table_->frameWidth());
     split->setChildrenCollapsible(false);
-
-    auto* layout = new QVBoxLayout(this);
-    layout->addLayout(controls);
-    layout->addLayout(muRow);
-    layout->addWidget(split, 1);
-    layout->addWidget(status_);
-
-    connect(open, &QPushButton::clicked, this, &FrictionPanel::openFile);
-    connect(configuration_, &QComboBox::currentTextChanged, this, &FrictionPanel::refresh);
-    connect(slopeKind_, &QComboBox::currentIndexChanged, this, &FrictionPanel::refresh);
-    connect(area_, &QDoubleSpinBox::valueChanged, this, [this](double shown) {
-        areaIn2_ = shown * shownUnits(units_).area;
-        recalibrate();
-    });
-    connect(useMu_, &QPushButton::clicked, this, [this] {
-        if (const auto mu = currentMu()) emit useMu(*mu);
-    });
+    return split;
 }
 
 bool FrictionPanel::loadCsv(const QString& path, QString* error) {
@@ -234,97 +249,6 @@ void FrictionPanel::refresh() {
     const auto mu = currentMu();
     useMu_->setEnabled(mu.has_value());
     muLabel_->setText(mu ? tr("μ∞ = %1").arg(*mu, 0, 'f', 3) : tr("μ∞: set the bearing area A_b"));
-}
-
-void FrictionPanel::fillCurveChart() {
-    // Figs. 18-20: the composite test curve (points) and the fitted decay law (line) per CP.
-    const ShownUnits u = shownUnits(units_);
-    QList<QAbstractSeries*> series;
-    double vMax = 1.0, dMax = 0.0;
-    int k = 0;
-    for (const GroupCalibration& g : calibration_.groups) {
-        if (QString::fromStdString(g.configuration) != configuration_->currentText()) continue;
-        const TripletCurve& c = g.composite;
-        const Eigen::VectorXd dense =
-            Eigen::VectorXd::LinSpaced(121, c.delta(0), c.delta(c.delta.size() - 1));
-        const Eigen::VectorXd fitted = evaluateDecay(g.fit, c, dense);
-        QList<QPointF> line, points;
-        for (Eigen::Index i = 0; i < dense.size(); ++i)
-            line.append({u.length * dense(i), u.force * fitted(i)});
-        for (Eigen::Index i = 0; i < c.delta.size(); ++i)
-            points.append({u.length * c.delta(i), u.force * c.shear(i)});
-        auto* l = new QLineSeries;
-        l->replace(line);
-        l->setName(tr("CP %1 %2").arg(g.cpPsi * u.pressure, 0, 'f', 0).arg(u.p));
-        l->setPen(QPen(cpColor(k), 2));
-        auto* s = new QScatterSeries;
-        s->replace(points);
-        s->setName(tr("CP %1 test").arg(g.cpPsi * u.pressure, 0, 'f', 0));
-        s->setProperty("hideInLegend", true);
-        s->setColor(cpColor(k));
-        s->setMarkerSize(7);
-        series << s << l;
-        vMax = std::max(vMax, u.force * c.shear.maxCoeff());
-        dMax = std::max(dMax, u.length * c.delta.maxCoeff());
-        ++k;
-    }
-    curves_->chart()->setTitle(tr("%1: V(δ) after fracture, composite tests and fitted law")
-                                   .arg(configuration_->currentText()));
-    resetChart(curves_->chart(), series,
-               axis(tr("δ (%1)").arg(u.l), 0.0, dMax > 0 ? dMax : 0.4 * u.length),
-               axis(tr("V (%1)").arg(u.f), 0.0, 1.05 * vMax));
-}
-
-void FrictionPanel::fillCoulombChart() {
-    // Fig. 21: V_inf (or tau_inf with A_b) against CP, with the least-squares line for CP <= limit.
-    const ShownUnits u = shownUnits(units_);
-    const bool withArea = areaIn2_ > 0.0;
-    // kips -> psi over A_b, then into the shown pressure (or force) unit.
-    const double scale = withArea ? u.pressure * 1000.0 / bearingAreaIn2() : u.force;
-    const bool intercept = slopeKind_->currentIndex() == 0;
-    QList<QAbstractSeries*> series;
-    double yMax = 1.0, cpMax = 100.0 * u.pressure;
-    int k = 0;
-    for (const ConfigurationCalibration& c : calibration_.configurations) {
-        QList<QPointF> used, excluded, line;
-        for (const CoulombPoint& p : c.points) {
-            (p.cpPsi <= calibration_.options.maxCpPsi ? used : excluded)
-                .append({u.pressure * p.cpPsi, scale * p.vInfKips});
-            yMax = std::max(yMax, scale * p.vInfKips);
-            cpMax = std::max(cpMax, u.pressure * p.cpPsi);
-        }
-        auto* s = new QScatterSeries;
-        s->replace(used);
-        s->setName(QString::fromStdString(c.configuration));
-        s->setColor(cpColor(k));
-        series << s;
-        if (!excluded.isEmpty()) {
-            auto* x = new QScatterSeries;
-            x->replace(excluded);
-            x->setName(tr("%1 (excluded)").arg(QString::fromStdString(c.configuration)));
-            x->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
-            x->setColor(cpColor(k).lighter(160));
-            series << x;
-        }
-        if (c.coulomb) {
-            const double slope =
-                intercept ? c.coulomb->slopeWithIntercept : c.coulomb->slopeThroughOrigin;
-            const double v0 = intercept ? c.coulomb->interceptKips : 0.0;
-            const double top = calibration_.options.maxCpPsi;
-            line << QPointF(0.0, scale * v0)
-                 << QPointF(u.pressure * top, scale * (v0 + slope * top));
-            auto* l = new QLineSeries;
-            l->replace(line);
-            l->setName(tr("%1 fit").arg(QString::fromStdString(c.configuration)));
-            l->setPen(QPen(cpColor(k), 2, Qt::DashLine));
-            series << l;
-        }
-        ++k;
-    }
-    coulomb_->chart()->setTitle(withArea ? tr("τ∞ = V∞ / A_b against confining pressure")
-                                         : tr("V∞ against confining pressure"));
-    resetChart(coulomb_->chart(), series, axis(tr("CP (%1)").arg(u.p), 0.0, 1.05 * cpMax),
-               axis(withArea ? tr("τ∞ (%1)").arg(u.p) : tr("V∞ (%1)").arg(u.f), 0.0, 1.1 * yMax));
 }
 
 void FrictionPanel::fillTable() {

@@ -17,6 +17,7 @@ class QChartView;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
+class QLayout;
 class QPushButton;
 class QTableWidget;
 class QChart;
@@ -51,6 +52,9 @@ signals:
 
 private:
     void buildUi();
+    QLayout* buildControls(QPushButton* open);
+    QLayout* buildMuRow();
+    QWidget* buildResults();
     void recalibrate();
     void refresh();
     void fillCurveChart();

@@ -157,6 +157,7 @@ private:
     void buildTabDocks();
     void buildActions();
     void buildFileMenu();
+    void addExportActions(QMenu* file); // File → Export surface, chart, report
     // Undo/redo and the unsaved-changes guard (MainWindowEdits.cpp).
     void buildEditMenu();
     enum class Unsaved { Proceed, Keep, Cancel };

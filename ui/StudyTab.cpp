@@ -1,17 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// StudyTab (ui/StudyTab.h): its construction, the fields' setters and the export. The rest:
+// StudyTabFile (the study file and the fields), StudyTabRun (the run and its results),
+// StudyTabProject (the project's study), StudyTables (the set and case tables).
 #include "ui/StudyTab.h"
-#include "ui/StudyTabOutcome.h"
 
-#include "core/base/TextInput.h"
 #include "core/io/AtomicFile.h"
-#include "core/io/StudyFileWriter.h"
-#include "core/io/StudySpecJson.h"
-#include "core/study/CpuAffinity.h"
 #include "core/study/FragilityText.h"
-#include "core/study/StudyRecordMetrics.h"
-#include "core/study/StudyRecords.h"
-#include "core/study/StudyRunner.h"
-#include "ui/FragilityChart.h"
 #include "ui/ProjectFolder.h"
 #include "ui/RiskPanel.h"
 #include "ui/StaleFrame.h"
@@ -22,14 +16,10 @@
 #include <QChart>
 #include <QChartView>
 #include <QComboBox>
-#include <QDir>
 #include <QDoubleSpinBox>
-#include <QFile>
 #include <QFileDialog>
-#include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
-#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QProgressBar>
@@ -39,10 +29,6 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
-
-#include <algorithm>
-#include <set>
-#include <sstream>
 
 namespace kinstab::ui {
 
@@ -55,38 +41,6 @@ QDoubleSpinBox* spin(double lo, double hi, double value, int decimals, const QSt
     s->setValue(value);
     s->setSuffix(suffix);
     return s;
-}
-
-std::vector<std::string> patternList(const QString& text) {
-    std::vector<std::string> a;
-    for (const QString& p : text.split(',', Qt::SkipEmptyParts))
-        a.push_back(p.trimmed().toStdString());
-    return a;
-}
-
-QString joined(const std::vector<double>& values) {
-    QStringList out;
-    for (double v : values)
-        out << QString::fromStdString(formatDouble(v));
-    return out.join(", ");
-}
-
-// A LIST field's text with its items trimmed and joined by ", ": "0.4,0.6" and "0.4, 0.6" are
-// one list, and must not mark results stale.
-std::string listText(const QLineEdit* field) {
-    QStringList items;
-    for (const QString& item : field->text().split(',', Qt::SkipEmptyParts))
-        items << item.trimmed();
-    return items.join(", ").toStdString();
-}
-
-// The floor periods of the study's floor filters, each once ("" when the ground drives all).
-QString floorPeriods(const StudySpec& s) {
-    std::vector<double> periods;
-    for (const auto& f : s.floors)
-        if (f && std::find(periods.begin(), periods.end(), f->period) == periods.end())
-            periods.push_back(f->period);
-    return joined(periods);
 }
 
 } // namespace
@@ -267,151 +221,8 @@ void StudyTab::setSearch(double maxG, double scanStepG) {
     m_step->setValue(scanStepG);
 }
 
-// A block study (its "block" instead of the slab) has no μ or t*: the fields say so and stay
-// out of the file (core/io/StudyFileWriter keeps the block).
-void StudyTab::showBlockStudy(bool block) {
-    for (QLineEdit* e : {m_mu, m_tstar}) {
-        e->setEnabled(!block);
-        if (block) e->clear();
-        e->setPlaceholderText(block ? tr("a block study: the study file's \"block\" sets it")
-                                    : QString());
-    }
-}
-
-std::string StudyTab::studyJson() const {
-    StudyFileFields f;
-    f.folder = m_folder->text().toStdString();
-    f.include = patternList(m_include->text());
-    f.exclude = patternList(m_exclude->text());
-    const QStringList fields{m_folder->text(), m_include->text(), m_exclude->text()};
-    if (fields == m_openedRecordFields) f.openedRecords = m_openedRecords;
-    f.measure = m_measure->currentText().toStdString();
-    f.saPeriodS = m_saPeriod->value();
-    // LIST text ("0.4,0.6" or "0.3:0.8:0.1") is what the study file's lists accept too.
-    f.mu = listText(m_mu);
-    f.tstar = listText(m_tstar);
-    if (!m_floors->text().trimmed().isEmpty()) f.floorPeriods = listText(m_floors);
-    f.maxG = m_maxG->value();
-    f.scanStepG = m_step->value();
-    return studyFileText(m_base, f);
-}
-
-bool StudyTab::openStudy(const QString& path) {
-    StudySpec spec;
-    nlohmann::json j;
-    try {
-        spec = loadStudy(path.toStdString());
-        QFile f(path);
-        if (!f.open(QIODevice::ReadOnly)) throw StudyError(f.errorString().toStdString());
-        j = nlohmann::json::parse(f.readAll().toStdString()); // loadStudy has validated it
-    } catch (const std::exception& e) {
-        m_status->setText(tr("Cannot open the study %1: %2").arg(path, e.what()));
-        return false;
-    }
-    std::set<QString> folders;
-    QStringList names;
-    for (const StudyRecord& r : spec.records) {
-        folders.insert(QFileInfo(QString::fromStdString(r.file)).absolutePath());
-        names << QFileInfo(QString::fromStdString(r.file)).fileName();
-    }
-    if (folders.size() != 1) {
-        m_status->setText(tr("Cannot open the study %1: its records lie in %2 folders; this tab "
-                             "shows one folder (run it with kinstab-cli study)")
-                              .arg(path)
-                              .arg(folders.size()));
-        return false;
-    }
-    m_base = j;
-    setRecordsFolder(*folders.begin(), names.join(", "), QString());
-    m_openedRecords = nlohmann::json::array();
-    for (const StudyRecord& r : spec.records)
-        m_openedRecords.push_back({{"path", r.file}});
-    m_openedRecordFields = {m_folder->text(), m_include->text(), m_exclude->text()};
-    const bool sa = spec.intensity.kind == IntensityMeasure::Kind::Sa;
-    m_measure->setCurrentText(sa ? "sa" : "pga");
-    if (sa) m_saPeriod->setValue(spec.intensity.period);
-    setLists(joined(spec.mu), joined(spec.tstar), floorPeriods(spec));
-    showBlockStudy(spec.block.has_value());
-    setSearch(spec.search.to, spec.search.scanStep);
-    m_studyFile = path;
-    m_openedText = studyJson();
-    m_status->setText(tr("Opened %1: %2 records.").arg(path).arg(spec.records.size()));
-    return true;
-}
-
-bool StudyTab::isRunning() const {
-    return m_job.isRunning();
-}
-
 QString StudyTab::message() const {
     return m_status->text();
-}
-
-void StudyTab::run() {
-    if (isRunning()) return;
-    const std::string json = studyJson();
-    startJob(
-        [json](JobContext& job) {
-            job.control.onProgress = [&job](std::size_t done, std::size_t total) {
-                job.done = done;
-                job.total = total;
-            };
-            StudyOutcome o = runStudyJob(json, &job.control);
-            o.spec = json;
-            return o;
-        },
-        tr("Running the study…"));
-}
-
-void StudyTab::startJob(std::function<StudyOutcome(JobContext&)> job, const QString& status) {
-    m_job.start<StudyOutcome>(std::move(job), [this](StudyOutcome o) { onDelivered(o); });
-    m_status->setText(status);
-    m_progress->setValue(0);
-    m_run->setEnabled(false);
-    m_cancel->setEnabled(true);
-}
-
-void StudyTab::cancel() {
-    m_job.cancel();
-}
-
-void StudyTab::onDelivered(const StudyOutcome& o) {
-    if (!o.error.empty()) {
-        m_status->setText(tr("Cannot run the study: %1").arg(QString::fromStdString(o.error)));
-    } else if (!o.notice.isEmpty()) {
-        m_status->setText(o.notice);
-    } else if (o.cancelled) {
-        m_status->setText(tr("Cancelled: nothing is shown of a partial study."));
-    } else {
-        showResults(o);
-    }
-}
-
-void StudyTab::showResults(const StudyOutcome& o) {
-    m_rows = o.rows;
-    m_parsed = o.parsed;
-    m_fragility = o.fragility;
-    m_metrics = o.metrics;
-    m_resultsSpec = o.spec;
-    m_resultsFile = o.file;
-    fillFragilityChart(m_chart->chart(), m_fragility);
-    fillTable();
-    m_risk->setRows(m_parsed);
-    m_export->setEnabled(true);
-    const int done = static_cast<int>(m_parsed.size());
-    if (done > 0) { // read back, not run: the bar shows the study complete all the same
-        m_progress->setRange(0, done);
-        m_progress->setValue(done);
-    }
-    QString text = tr("%1 cases, %2 parameter sets.").arg(m_parsed.size()).arg(m_fragility.size());
-    if (!o.file.isEmpty()) text += tr(" Read from %1.").arg(o.file);
-    m_status->setText(text);
-    updateStaleness();
-}
-
-void StudyTab::fillTable() {
-    fillStudySetTable(m_sets, m_fragility);
-    fillStudyCaseTable(m_table, m_parsed, m_metrics);
 }
 
 bool StudyTab::exportRows(const QString& path) {
@@ -430,28 +241,6 @@ bool StudyTab::save(const QString& path, const std::string& text) {
         m_status->setText(tr("Cannot export: %1").arg(e.what()));
         return false;
     }
-}
-
-StudyOutcome runStudyJob(const std::string& json, SweepControl* control) {
-    StudyOutcome o;
-    try {
-        StudySpec spec = studyFromJsonText(json, "");
-        loadStudyRecords(spec); // each record read once, for every case of the study
-        StudyRunOptions options;
-        options.threads = allowedCpuCount();
-        options.control = control;
-        runStudy(spec, options, [&o](const std::string& rows) { o.rows += rows; });
-        o.cancelled = control->isCancelled();
-        if (o.cancelled) return o;
-        std::istringstream in(o.rows);
-        for (std::string line; std::getline(in, line);)
-            o.parsed.push_back(parseStudyRow(line));
-        o.fragility = studyFragility(o.parsed, {});
-        o.metrics = studyRecordMetrics(spec);
-    } catch (const StudyError& e) {
-        o.error = e.what();
-    }
-    return o;
 }
 
 } // namespace kinstab::ui

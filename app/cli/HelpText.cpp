@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Long for a reason (over 400 lines with its header): it is one table, every command's help text
+// beside the others, with the flag blocks several commands share. Split per command, the shared
+// blocks would have to live in a third place and the man page's list would be read from many.
 #include "app/cli/HelpText.h"
 
 #include <algorithm>

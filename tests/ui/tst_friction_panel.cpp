@@ -66,6 +66,9 @@ void TestFrictionPanel::decayRateFollowsTheUnits() {
     QVERIFY(table->horizontalHeaderItem(5)->text().contains("1/in·(kip·in)^β"));
     panel.setUnitSystem(kinstab::ui::UnitSystem::SI);
     QVERIFY(table->horizontalHeaderItem(5)->text().contains("1/mm·(kN·mm)^β"));
+    // f_m is a sum of squared shear residuals, shown as fit.fm · force²: its unit is kN² ("%1²"
+    // once showed "f_m kN", the ² taken for a digit of the placeholder).
+    QCOMPARE(table->horizontalHeaderItem(8)->text(), QStringLiteral("f_m kN²"));
     QCOMPARE(table->rowCount(), 14);
     for (int row = 0; row < table->rowCount(); ++row) {
         const DecayFit& fit = panel.calibration().groups[static_cast<std::size_t>(row)].fit;

@@ -19,6 +19,19 @@ constexpr int kA = 0, kF = 1, kMu = 2, kD = 3;
 ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     auto* grid = new QGridLayout(this);
     grid->setContentsMargins(0, 0, 0, 0);
+    buildChoices(grid);
+    buildNumberRows(grid);
+    buildPlanarRows(grid);
+    grid->setColumnStretch(1, 1);
+    setParams(TeachingParams{});
+    connect(model_, &QComboBox::currentIndexChanged, this, &ParameterPanel::changed);
+    connect(envelope_, &QComboBox::currentIndexChanged, this, &ParameterPanel::changed);
+    connect(scale_, &QComboBox::currentIndexChanged, this, &ParameterPanel::changed);
+    connect(limit_, &QDoubleSpinBox::valueChanged, this, &ParameterPanel::changed);
+}
+
+// Rows 0-2: the model, the envelope and the γc scaling.
+void ParameterPanel::buildChoices(QGridLayout* grid) {
     envelope_ = new QComboBox(this);
     envelope_->addItem(tr("fast rising"), int(EnvelopePreset::Fast));
     envelope_->addItem(tr("moderately rising"), int(EnvelopePreset::Moderate));
@@ -37,6 +50,16 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     grid->addWidget(envelope_, 1, 1, 1, 2);
     grid->addWidget(new QLabel(tr("Scaling"), this), 2, 0);
     grid->addWidget(scale_, 2, 1, 1, 2);
+    // The panel has a fixed width (TeachingView's side column): combo boxes as wide as their
+    // longest entry made the grid wider than it, and the value column on the right was cut.
+    for (QComboBox* c : {model_, envelope_, scale_}) {
+        c->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        c->setMinimumContentsLength(10);
+    }
+}
+
+// Rows 3-7: A, f, μ and the wall width as slider and box, and the bearing length.
+void ParameterPanel::buildNumberRows(QGridLayout* grid) {
     rows_[kA] = addRow(grid, kA, tr("A"), 0.0, 3.0, 0.005, 3, tr(" g"));
     rows_[kF] = addRow(grid, kF, tr("f"), 0.05, 5.0, 0.005, 3, tr(" Hz"));
     rows_[kMu] = addRow(grid, kMu, tr("μ"), 0.05, 1.5, 0.01, 2, QString());
@@ -49,6 +72,10 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     grid->addWidget(new QLabel(tr("bearing"), this), 7, 0);
     grid->addWidget(limit_, 7, 1);
     grid->addWidget(new QLabel(tr("× d/2"), this), 7, 2);
+}
+
+// Rows 8-11: the planar model's own inputs and the t* line.
+void ParameterPanel::buildPlanarRows(QGridLayout* grid) {
     fy_ = addSpin(grid, 8, tr("f_y"), 0.05, 20.0, 0.05, 3, tr(" Hz"),
                   tr("Planar: frequency along the walls"), &TeachingParams::fyHz);
     ayRatio_ = addSpin(grid, 9, tr("A_y/A_x"), 0.0, 2.0, 0.05, 2, QString(),
@@ -61,18 +88,6 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     tstarLabel_ = new QLabel(this);
     tstarLabel_->setWordWrap(true);
     grid->addWidget(tstarLabel_, 11, 0, 1, 3);
-    // The panel has a fixed width (TeachingView's side column): combo boxes as wide as their
-    // longest entry made the grid wider than it, and the value column on the right was cut.
-    for (QComboBox* c : {model_, envelope_, scale_}) {
-        c->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-        c->setMinimumContentsLength(10);
-    }
-    grid->setColumnStretch(1, 1);
-    setParams(TeachingParams{});
-    connect(model_, &QComboBox::currentIndexChanged, this, &ParameterPanel::changed);
-    connect(envelope_, &QComboBox::currentIndexChanged, this, &ParameterPanel::changed);
-    connect(scale_, &QComboBox::currentIndexChanged, this, &ParameterPanel::changed);
-    connect(limit_, &QDoubleSpinBox::valueChanged, this, &ParameterPanel::changed);
 }
 
 ParameterPanel::Row ParameterPanel::addRow(QGridLayout* grid, int quantity, const QString& label,

@@ -41,6 +41,9 @@ private:
         QDoubleSpinBox* spin;
         double step;
     };
+    void buildChoices(QGridLayout* grid);
+    void buildNumberRows(QGridLayout* grid);
+    void buildPlanarRows(QGridLayout* grid);
     Row addRow(QGridLayout* grid, int quantity, const QString& label, double lo, double hi,
                double step, int decimals, const QString& suffix);
     QDoubleSpinBox* addSpin(QGridLayout* grid, int row, const QString& label, double lo, double hi,
