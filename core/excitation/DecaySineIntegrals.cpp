@@ -88,21 +88,20 @@ const DecaySineIntegrals::Point& DecaySineIntegrals::endAt(Memo& m, double t) co
 // phi_k(w) = sum_n w^n / (n + k)!. The p - q difference is
 // exp(z_q t0) h^k [expm1(d t0) phi_k(w_p) + (w_p - w_q) sum_{n>=1} D_n / (n + k)!],
 // D_n = (w_p^n - w_q^n) / (w_p - w_q) = w_p D_{n-1} + w_q^{n-1}: no cancellation anywhere.
-// The end value follows the same way from exp(w) = 1 + w phi_1(w):
-// exp(z_p t1) - exp(z_q t1) = exp(z_q t0) [expm1(d t0) exp(w_p) + (w_p - w_q) sum D_n / n!].
-DecaySineIntegrals::Complex DecaySineIntegrals::shortSpan(const Point& o, double h, int k,
-                                                          Complex* end) const {
+// One loop forms the sums of k = 1 and, when asked, of k = 2 (both integrals from one series).
+DecaySineIntegrals::Series DecaySineIntegrals::series(double h, bool second) const {
     // Plain real arithmetic: std::complex's operator* may go through __muldc3 (NaN rules).
     const double pr = zp_.real() * h, pi = zp_.imag() * h; // w_p
     const double qr = zq_.real() * h, qi = zq_.imag() * h; // w_q
     const double r = zqAbs_ * h;                           // |w_p| <= |w_q| = r <= 1/4
-    double coef = (k == 1) ? 1.0 : 0.5;                    // 1/(n + k)!
-    double phiR = coef, phiI = 0.0, divR = 0.0, divI = 0.0;
-    double expDivR = 0.0, expDivI = 0.0, fact = 1.0; // sum D_n / n!, with 1/n! in fact
+    Series sum; // phi_k starts at 1/k!, the other sums at 0
+    sum.phi[0] = {1.0, 0.0};
+    sum.phi[1] = {0.5, 0.0};
+    double coef = 1.0, coef2 = 0.5, fact = 1.0; // 1/(n + 1)!, 1/(n + 2)!, 1/n!
     double rPow = 1.0;
     double wpR = 1.0, wpI = 0.0, wqR = 1.0, wqI = 0.0, dR = 0.0, dI = 0.0;
     for (int n = 1; n < kSeriesTerms; ++n) {
-        coef /= (n + k);
+        coef /= (n + 1);
         // D_n = w_p D_{n-1} + w_q^{n-1} (D_1 = 1, from D_0 = 0 and w_q^0 = 1)
         const double nr = pr * dR - pi * dI + wqR, ni = pr * dI + pi * dR + wqI;
         dR = nr;
@@ -113,41 +112,69 @@ DecaySineIntegrals::Complex DecaySineIntegrals::shortSpan(const Point& o, double
         const double pR = wpR * pr - wpI * pi, pI = wpR * pi + wpI * pr;
         wpR = pR;
         wpI = pI;
-        phiR += wpR * coef;
-        phiI += wpI * coef;
-        divR += dR * coef;
-        divI += dI * coef;
+        sum.phi[0] += Complex(wpR * coef, wpI * coef);
+        sum.div[0] += Complex(dR * coef, dI * coef);
+        if (second) {
+            coef2 /= (n + 2);
+            sum.phi[1] += Complex(wpR * coef2, wpI * coef2);
+            sum.div[1] += Complex(dR * coef2, dI * coef2);
+        }
         fact /= n;
-        expDivR += dR * fact;
-        expDivI += dI * fact;
+        sum.expDiv += Complex(dR * fact, dI * fact);
         // |w_p^n| <= r^n and |D_n| <= n r^(n-1): stop once the terms fall below the rounding
-        // of the sums (phi ~ 1/k!, the divided sum ~ 1/(k+1)!).
+        // of the sums (phi ~ 1/k!, the divided sum ~ 1/(k+1)!; k = 1's terms are the larger).
         rPow *= r;
         if (n * rPow * coef < 1e-18 * r) break;
     }
-    const double hk = (k == 1) ? h : h * h;
-    const double dh = d_ * h;
-    // exp(z_q t0) expm1(d t0) is exp(z_p t0) - exp(z_q t0). Far from the origin (d t0 >= 1) it
-    // is taken as that difference (no cancellation: |exp(z_q t0)| <= |exp(z_p t0)| / e), never
-    // as the product: expm1(d t0) overflows once d t0 > 709.78 while exp(z_q t0) underflows,
-    // and inf x 0 is NaN.
-    if (!o.near) {
-        const Complex lead = o.ep - o.eq;
-        if (end) {
-            // exp(w_p) = 1 + w_p phi_1(w_p); valid for k = 1 only (phi is phi_1 then).
-            const double epR = 1.0 + pr * phiR - pi * phiI, epI = pr * phiI + pi * phiR;
-            *end = mul(lead, epR, epI) + mul(o.eq, dh * expDivR, dh * expDivI);
-        }
-        return (mul(lead, phiR, phiI) + mul(o.eq, dh * divR, dh * divI)) * hk;
-    }
+    // exp(w_p) = 1 + w_p phi_1(w_p).
+    const Complex phi = sum.phi[0];
+    sum.expP = {1.0 + pr * phi.real() - pi * phi.imag(), pr * phi.imag() + pi * phi.real()};
+    return sum;
+}
+
+// The increment h^k [lead phi + exp(z_q t0) d h div] of one k, lead = exp(z_p t0) - exp(z_q t0).
+// Far from the origin (d t0 >= 1) lead is taken as that difference (no cancellation:
+// |exp(z_q t0)| <= |exp(z_p t0)| / e), never as exp(z_q t0) expm1(d t0): expm1 overflows once
+// d t0 > 709.78 while exp(z_q t0) underflows, and inf x 0 is NaN.
+DecaySineIntegrals::Complex DecaySineIntegrals::increment(const Point& o, double dh, double hk,
+                                                          Complex phi, Complex div) const {
+    if (!o.near)
+        return (mul(o.ep - o.eq, phi.real(), phi.imag()) +
+                mul(o.eq, dh * div.real(), dh * div.imag())) *
+               hk;
     const double e = o.em1;
-    const double bR = e * phiR + dh * divR, bI = e * phiI + dh * divI;
-    if (end) {
-        const double epR = 1.0 + pr * phiR - pi * phiI, epI = pr * phiI + pi * phiR;
-        const double cR = e * epR + dh * expDivR, cI = e * epI + dh * expDivI;
-        *end = mul(o.eq, cR, cI);
-    }
-    return mul(o.eq, bR, bI) * hk;
+    return mul(o.eq, e * phi.real() + dh * div.real(), e * phi.imag() + dh * div.imag()) * hk;
+}
+
+// The first integral over a short span from o.t; with second, also the second; with end,
+// exp(z_p t1) - exp(z_q t1) = exp(z_q t0) [expm1(d t0) exp(w_p) + (w_p - w_q) sum D_n / n!], and
+// with endQ exp(z_q t1) = exp(z_q t0) exp(w_q), exp(w_q) = exp(w_p) - (w_p - w_q) sum D_n / n!.
+DecaySineIntegrals::Complex DecaySineIntegrals::shortSpan(const Point& o, double h, Complex* second,
+                                                          Complex* end, Complex* endQ) const {
+    const Series sum = series(h, second != nullptr);
+    const double dh = d_ * h;
+    const Complex ep = sum.expP, ed = sum.expDiv;
+    if (endQ) *endQ = mul(o.eq, ep.real() - dh * ed.real(), ep.imag() - dh * ed.imag());
+    if (end)
+        *end = o.near ? mul(o.eq, o.em1 * ep.real() + dh * ed.real(),
+                            o.em1 * ep.imag() + dh * ed.imag())
+                      : mul(o.ep - o.eq, ep.real(), ep.imag()) +
+                            mul(o.eq, dh * ed.real(), dh * ed.imag());
+    if (second) *second = increment(o, dh, h * h, sum.phi[1], sum.div[1]);
+    return increment(o, dh, h, sum.phi[0], sum.div[0]);
+}
+
+// g = Im(diff); z_p exp(z_p t) - z_q exp(z_q t) = z_p diff + d eq and
+// z_p^2 exp(z_p t) - z_q^2 exp(z_q t) = z_p^2 diff + d (z_p + z_q) eq: no difference of the two
+// exponentials is formed.
+ShapeAt DecaySineIntegrals::shapeFrom(Complex diff, Complex eq) const {
+    const double zr = zp_.real(), zi = zp_.imag();
+    const double d1I = zr * diff.imag() + zi * diff.real() + d_ * eq.imag();
+    // z_p^2 = (zr^2 - zi^2) + 2 i zr zi; z_p + z_q = -(p + q) + 2 i w.
+    const double sR = zr * zr - zi * zi, sI = 2.0 * zr * zi;
+    const double tR = -d_ * (p_ + q_), tI = 2.0 * d_ * omega_;
+    const double d2I = sR * diff.imag() + sI * diff.real() + tR * eq.imag() + tI * eq.real();
+    return {diff.imag(), d1I, d2I};
 }
 
 double DecaySineIntegrals::first(double t0, double h, double* valueAtEnd) const {
@@ -155,7 +182,7 @@ double DecaySineIntegrals::first(double t0, double h, double* valueAtEnd) const 
     const Point& o = origin(m, t0);
     if (zqAbs_ * h <= kShortSpan) {
         Complex end;
-        const double v = shortSpan(o, h, 1, valueAtEnd ? &end : nullptr).imag();
+        const double v = shortSpan(o, h, nullptr, valueAtEnd ? &end : nullptr).imag();
         if (valueAtEnd) *valueAtEnd = end.imag();
         return v;
     }
@@ -164,18 +191,47 @@ double DecaySineIntegrals::first(double t0, double h, double* valueAtEnd) const 
     return (p.p1 - o.p1).imag();
 }
 
+double DecaySineIntegrals::firstWithShape(double t0, double h, ShapeAt& end) const {
+    Memo& m = memo();
+    const Point& o = origin(m, t0);
+    if (zqAbs_ * h <= kShortSpan) {
+        Complex diff, eq;
+        const double v = shortSpan(o, h, nullptr, &diff, &eq).imag();
+        end = shapeFrom(diff, eq);
+        return v;
+    }
+    const Point& p = endAt(m, t0 + h);
+    end = shapeFrom(p.near ? p.eq * p.em1 : p.ep - p.eq, p.eq);
+    return (p.p1 - o.p1).imag();
+}
+
 double DecaySineIntegrals::second(double t0, double h) const {
     Memo& m = memo();
     const Point& o = origin(m, t0);
-    if (zqAbs_ * h <= kShortSpan) return shortSpan(o, h, 2).imag();
+    if (zqAbs_ * h <= kShortSpan) {
+        Complex second;
+        shortSpan(o, h, &second);
+        return second.imag();
+    }
     return (endAt(m, t0 + h).p2 - o.p2 - o.p1 * h).imag();
 }
 
-// The two integrals over the same span: the memo keeps the origin's and the end's exponentials,
-// so the second call reuses what the first computed (same arithmetic as each alone).
+// The two integrals over the same span: a short span forms both from one series; a long one
+// takes both from the same two points (the memo keeps the origin's and the end's exponentials).
 double DecaySineIntegrals::both(double t0, double h, double& secondOut, double* valueAtEnd) const {
-    secondOut = second(t0, h);
-    return first(t0, h, valueAtEnd);
+    Memo& m = memo();
+    const Point& o = origin(m, t0);
+    if (zqAbs_ * h <= kShortSpan) {
+        Complex second, end;
+        const double v = shortSpan(o, h, &second, valueAtEnd ? &end : nullptr).imag();
+        secondOut = second.imag();
+        if (valueAtEnd) *valueAtEnd = end.imag();
+        return v;
+    }
+    const Point& p = endAt(m, t0 + h);
+    if (valueAtEnd) *valueAtEnd = (p.near ? p.eq * p.em1 : p.ep - p.eq).imag();
+    secondOut = (p.p2 - o.p2 - o.p1 * h).imag(); // second()'s and first()'s arithmetic
+    return (p.p1 - o.p1).imag();
 }
 
 } // namespace kinstab

@@ -14,12 +14,20 @@
 
 namespace kinstab {
 
+// g and its first two derivatives at one time.
+struct ShapeAt {
+    double g = 0, dg = 0, d2g = 0;
+};
+
 class DecaySineIntegrals {
 public:
     DecaySineIntegrals(double p, double q, double omega);
 
     // int_{t0}^{t0+h} g(s) ds; with valueAtEnd, also g(t0 + h) from the same exponentials.
     double first(double t0, double h, double* valueAtEnd = nullptr) const;
+    // first(t0, h), with g, g' and g'' at t0 + h from the same exponentials (g as first() gives
+    // it): the stop search's Halley steps (docs/theory.md §6.3).
+    double firstWithShape(double t0, double h, ShapeAt& end) const;
     // int_{t0}^{t0+h} (t0 + h - s) g(s) ds  (the second integral of g from t0)
     double second(double t0, double h) const;
     // first(t0, h), with second(t0, h) in secondOut, from one set of exponentials; with
@@ -44,9 +52,19 @@ private:
     Memo& memo() const;
     const Point& origin(Memo& m, double t0) const;
     const Point& endAt(Memo& m, double t) const; // pointAt(t), kept as a possible next origin
-    // Increment over a short span from o.t: k = 1 gives first(), k = 2 second(); for k = 1
-    // and end != nullptr also exp(z_p (t0+h)) - exp(z_q (t0+h)).
-    Complex shortSpan(const Point& o, double h, int k, Complex* end = nullptr) const;
+    // The phi-series' sums over a short span h: phi_k and the divided sums of k = 1 (and of
+    // k = 2 with second), sum D_n / n! and exp(w_p).
+    struct Series {
+        Complex phi[2], div[2], expDiv, expP;
+    };
+    Series series(double h, bool second) const;
+    Complex increment(const Point& o, double dh, double hk, Complex phi, Complex div) const;
+    // The first integral over a short span from o.t; with second also the second, with end
+    // exp(z_p (t0+h)) - exp(z_q (t0+h)), and with endQ exp(z_q (t0+h)).
+    Complex shortSpan(const Point& o, double h, Complex* second = nullptr, Complex* end = nullptr,
+                      Complex* endQ = nullptr) const;
+    // g, g', g'' from diff = exp(z_p t) - exp(z_q t) and eq = exp(z_q t).
+    ShapeAt shapeFrom(Complex diff, Complex eq) const;
 
     double p_, q_, d_, omega_;
     double zqAbs_; // |z_q|: spans with |z_q| h <= 1/2 are short

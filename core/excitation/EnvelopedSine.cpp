@@ -5,6 +5,7 @@
 #include "core/base/InternalError.h"
 #include "core/base/TextInput.h"
 #include "core/excitation/FrequencyRange.h"
+#include "core/numerics/HalleyRoot.h"
 #include "core/numerics/RootFinding.h"
 
 #include <array>
@@ -76,6 +77,23 @@ void EnvelopedSine::accelAndSlope(double tau, double& a, double& da) const {
     da = scale_ * (de * s + omega_ * e * c);
 }
 
+// With e^(k) = e^{-p tau} E_k (E_0 = -m, E_1 = d + q m, E_2 = -d (p + q) - q^2 m,
+// E_3 = d (p^2 + p q + q^2) + q^3 m; m = expm1(-(q - p) tau), as envelopeAndSlope) and Leibniz's
+// rule on e sin(omega tau). a and a' are accelAndSlope's, bit for bit.
+void EnvelopedSine::accelDerivatives(double tau, double out[4]) const {
+    const double ep = std::exp(-p_ * tau);
+    const double m = std::expm1(-(q_ - p_) * tau);
+    const double d = q_ - p_;
+    const double e = -ep * m, de = ep * (d + q_ * m);
+    const double d2e = ep * (-d * (p_ + q_) - q_ * q_ * m);
+    const double d3e = ep * (d * (p_ * p_ + p_ * q_ + q_ * q_) + q_ * q_ * q_ * m);
+    const double s = std::sin(omega_ * tau), c = std::cos(omega_ * tau), w = omega_;
+    out[0] = scale_ * e * s;
+    out[1] = scale_ * (de * s + w * e * c);
+    out[2] = scale_ * ((d2e - w * w * e) * s + 2.0 * w * de * c);
+    out[3] = scale_ * ((d3e - 3.0 * w * w * de) * s + w * (3.0 * d2e - w * w * e) * c);
+}
+
 double EnvelopedSine::velocityChange(double t0, double t1) const {
     return scale_ * integrals_.first(t0, t1 - t0);
 }
@@ -84,6 +102,13 @@ double EnvelopedSine::velocityChangeAndAccel(double t0, double t1, double& accel
     double shape = 0.0;
     const double dv = scale_ * integrals_.first(t0, t1 - t0, &shape);
     accelAtT1 = scale_ * shape;
+    return dv;
+}
+
+double EnvelopedSine::velocityChangeAndSlopes(double t0, double t1, AccelAt& at) const {
+    ShapeAt g;
+    const double dv = scale_ * integrals_.firstWithShape(t0, t1 - t0, g);
+    at = {scale_ * g.g, scale_ * g.dg, scale_ * g.d2g};
     return dv;
 }
 
@@ -198,27 +223,36 @@ std::optional<EnvelopedSine::Hump> EnvelopedSine::findHumpAbove(long k, double t
 }
 
 double EnvelopedSine::humpRoot(const Hump& h, double target, bool rising) const {
-    auto fdf = [&](double t, double& f, double& df) {
+    auto fdf = [&](double t, Derivatives& d) {
         ++evaluationCount();
-        accelAndSlope(t, f, df);
-        f = h.sign * f - target;
-        df = h.sign * df;
+        double a[4];
+        accelDerivatives(t, a);
+        d = {h.sign * a[0] - target, h.sign * a[1], h.sign * a[2], h.sign * a[3]};
     };
     const double lo = static_cast<double>(h.k) * halfPeriod_, hi = lo + halfPeriod_;
     // First guess: the envelope frozen at its value at m, |a| = level where
-    // |sin(omega (tau - lo))| = level / (scale e(m)); then the envelope at that guess from its
-    // log-slope (e(t) ~ e(m) exp(lambda (t - m)), no closed-form evaluation) and the same step
-    // again. The start is then within about 1e-6 of the root instead of 1e-3, and Newton needs
-    // one evaluation fewer (docs/theory.md §6.3).
+    // |sin(omega (tau - lo))| = level / (scale e(m)); then twice the same step with the envelope
+    // at the last guess from a second-order model of log e (no closed-form evaluation). The start
+    // is then close enough that one Halley step, whose error a''' tells, usually ends the solve
+    // (docs/theory.md §6.3).
     const auto offsetAt = [&](double e) {
         return std::asin(std::min(1.0, target / (scale_ * e))) / omega_;
     };
+    // log e about the half-period's middle c to second order: lambda = e'/e there, and
+    // rho = (log e)'' = e''/e - lambda^2 from the same m = expm1(-(q - p) c) = -d / (lambda + q).
+    const double c = lo + 0.5 * halfPeriod_, d = q_ - p_, m = -d / (h.logSlope + q_);
+    const double rho = (d * (p_ + q_) + q_ * q_ * m) / m - h.logSlope * h.logSlope;
+    const auto envelopeNear = [&](double t) {
+        const double u = t - c, v = h.m - c;
+        return h.envelope * std::exp(h.logSlope * (t - h.m) + 0.5 * rho * (u * u - v * v));
+    };
     const double first = offsetAt(h.envelope);
     const double guess = rising ? lo + first : hi - first;
-    const double offset = offsetAt(h.envelope * std::exp(h.logSlope * (guess - h.m)));
+    const double second = offsetAt(envelopeNear(guess));
+    const double offset = offsetAt(envelopeNear(rising ? lo + second : hi - second));
     return rising
-               ? safeguardedNewton(fdf, lo, h.m, -target, h.peakValue - target, 200, lo + offset).x
-               : safeguardedNewton(fdf, h.m, hi, h.peakValue - target, -target, 200, hi - offset).x;
+               ? safeguardedHalley(fdf, lo, h.m, -target, h.peakValue - target, 200, lo + offset).x
+               : safeguardedHalley(fdf, h.m, hi, h.peakValue - target, -target, 200, hi - offset).x;
 }
 
 Crossings EnvelopedSine::crossings(double level, double segmentStart, double segmentEnd) const {

@@ -24,6 +24,7 @@ public:
     double accelSlope(double tau) const override;
     double velocityChange(double t0, double t1) const override;
     double velocityChangeAndAccel(double t0, double t1, double& accelAtT1) const override;
+    double velocityChangeAndSlopes(double t0, double t1, AccelAt& at) const override;
     double displacementChange(double t0, double t1) const override;
     double velocityAndDisplacementChange(double t0, double t1, double& dx) const override;
     double changesAndAccel(double t0, double t1, double& dx, double& accelAtT1) const override;
@@ -60,6 +61,8 @@ private:
     double boundEnvelopeAt(double tau) const; // envelopeAt, remembered for the bounds
     void logSlopes(double tau, double& r1, double& r2) const; // e'/e and e''/e
     void accelAndSlope(double tau, double& a, double& da) const;
+    // a and its first three derivatives at tau: a crossing's Halley steps.
+    void accelDerivatives(double tau, double out[4]) const;
     double computeSMax() const;
     long halfPeriodIndex(double segmentStart) const; // as segmentEnd() cuts the time line
     // Half-period k's hump where |a| > target: a point m inside it (|a(m)| > target) and

@@ -25,6 +25,13 @@ struct Crossings {
     void add(double tau) { t[static_cast<std::size_t>(n++)] = tau; }
 };
 
+// a and its first two derivatives at one time; the derivatives NaN where not known.
+struct AccelAt {
+    double a = 0;
+    double da = std::numeric_limits<double>::quiet_NaN();
+    double d2a = std::numeric_limits<double>::quiet_NaN();
+};
+
 class Excitation1D {
 public:
     virtual ~Excitation1D() = default;
@@ -37,6 +44,13 @@ public:
     virtual double velocityChangeAndAccel(double t0, double t1, double& accelAtT1) const {
         accelAtT1 = accel(t1);
         return velocityChange(t0, t1);
+    }
+    // velocityChange(t0, t1) with a, a' and a'' at t1 from one evaluation: a stop search takes
+    // Halley's steps where a closed form gives the two slopes (docs/theory.md §6.3), Newton's
+    // where they are not known (NaN, as here).
+    virtual double velocityChangeAndSlopes(double t0, double t1, AccelAt& at) const {
+        at = AccelAt{};
+        return velocityChangeAndAccel(t0, t1, at.a);
     }
     // Integral over [t0, t1] of (integral of a over [t0, s]) ds.
     virtual double displacementChange(double t0, double t1) const = 0;

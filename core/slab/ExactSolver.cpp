@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/ExactSolver.h"
 
+#include "core/numerics/HalleyRoot.h"
 #include "core/numerics/RootFinding.h"
 #include "core/numerics/VectorState.h"
 #include "core/slab/FiniteResult.h"
+#include "core/slab/SegmentCuts.h"
+#include "core/slab/StopSample.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,17 +42,29 @@ private:
     void runEvents();
 
     // Slip state relative to (t_, x_, v_) with slip sign s_.
-    // With accelAtTau, also a(tau), from the same closed-form evaluation.
     // The slip state at tau from the base motion's changes dv, dx since t_.
     double slipVelocity(double tau, double dv) const { return v_ - s_ * p_.mu * (tau - t_) - dv; }
     double slipDisplacement(double tau, double dx) const {
         const double h = tau - t_;
         return x_ + v_ * h - 0.5 * s_ * p_.mu * h * h - dx;
     }
-    double velocityAt(double tau, double* accelAtTau = nullptr) {
+    double velocityAt(double tau) {
         ++r_.work.accelEvaluations;
-        return slipVelocity(tau, accelAtTau ? a_.velocityChangeAndAccel(t_, tau, *accelAtTau)
-                                            : a_.velocityChange(t_, tau));
+        return slipVelocity(tau, a_.velocityChange(t_, tau));
+    }
+    // The stop search's function s v and its first three derivatives at tau from one closed-form
+    // evaluation: (s v)' = -mu - s a, (s v)'' = -s a', (s v)''' = -s a''. Where the excitation
+    // does not know a' and a'' (a record), d3f is NaN and the search takes Newton's steps.
+    void stopFunction(double tau, Derivatives& d) {
+        ++r_.work.accelEvaluations;
+        AccelAt& at = lastStop_.at;
+        lastStop_.tau = tau;
+        lastStop_.v = slipVelocity(tau, a_.velocityChangeAndSlopes(t_, tau, at));
+        d.f = s_ * lastStop_.v;
+        d.df = s_ * (-s_ * p_.mu - at.a);
+        const bool slopes = !std::isnan(at.da) && !std::isnan(at.d2a);
+        d.d2f = slopes ? -s_ * at.da : 0.0;
+        d.d3f = slopes ? -s_ * at.d2a : std::numeric_limits<double>::quiet_NaN();
     }
     double displacementAt(double tau) {
         ++r_.work.accelEvaluations;
@@ -82,27 +97,24 @@ private:
         e.v = slipVelocity(tau, dv);
         return e;
     }
+    // The state at the stop, with a there: from the stop search's last evaluation when the stop
+    // is near it (core/slab/StopSample.h; its displacement from the memo's exponentials), else
+    // from a new evaluation.
+    EndState stopState(double tStop) {
+        const StopSample& l = lastStop_;
+        if (!l.reaches(tStop)) return stateAt(tStop);
+        const double x = l.displacementAt(tStop, displacementAt(l.tau), s_, p_.mu);
+        return {tStop, x, 0.0, l.accelAt(tStop)};
+    }
     // slipSlope(tau) from a(tau) when an evaluation already made gave it (NaN: not known).
     double slipSlope(double tau, double knownAccel) {
         return std::isnan(knownAccel) ? slipSlope(tau) : -p_.mu - s_ * knownAccel;
     }
-    struct Cut {
-        double tau = 0;
-        int kind = 0; // +1: a crosses mu, -1: a crosses -mu, 0: segment end
-    };
     // Sign of a where |a| > mu, else 0.
     int excessAt(double tau) {
         ++r_.work.accelEvaluations;
         const double a = a_.accel(tau);
         return std::abs(a) > p_.mu ? (a > 0.0 ? 1 : -1) : 0;
-    }
-    // The excess state on the other side of a cut (the same map both ways); nullopt when the
-    // cut does not fit the state (rounding).
-    static std::optional<int> crossCut(int state, int kind) {
-        if (kind == 0) return state;
-        if (state == 0) return kind;
-        if (state == kind) return 0;
-        return std::nullopt;
     }
     // How a stop is resolved: the piece knows whether |a| > mu all along it (Reverse) or not
     // (Stick); or a(tau) at the stop decides (Decide, for a slip with no cuts yet).
@@ -159,13 +171,14 @@ private:
         return Step::Done;
     }
     // dflo, dfhi: the slopes at the ends. The functions are monotone on the bracket; starting
-    // from the root of their Hermite cubic saves the first Newton steps from the midpoint or
-    // the secant point (every call costs closed-form integrals).
+    // from the root of their Hermite cubic saves the first steps from the midpoint or the secant
+    // point (every call costs closed-form integrals). fdf fills Derivatives: with d3f NaN (left
+    // so by the collapse search) the steps are Newton's, else Halley's.
     double rootOf(auto&& fdf, double lo, double hi, double flo, double fhi, double dflo,
                   double dfhi) {
         const double start = hermiteRootGuess(lo, hi, flo, fhi, dflo, dfhi);
         const RootResult root =
-            safeguardedNewton(fdf, lo, hi, flo, fhi, 200, start, o_.eventTolerance);
+            safeguardedHalley(fdf, lo, hi, flo, fhi, 200, start, o_.eventTolerance);
         r_.work.rootIterations += root.iterations;
         return std::clamp(root.x, lo, hi);
     }
@@ -179,7 +192,8 @@ private:
     // a(t_) when the evaluation that moved the slip to t_ gave it, else NaN: the stop search
     // from t_ takes the velocity's slope at t_ from it instead of evaluating a again.
     double aT_ = std::numeric_limits<double>::quiet_NaN();
-    int s_ = 0; // 0 sticking, +1/-1 slipping with that sign of relative velocity
+    StopSample lastStop_; // the stop search's last evaluation
+    int s_ = 0;           // 0 sticking, +1/-1 slipping with that sign of relative velocity
 };
 
 void ExactRun::runEvents() {
@@ -288,41 +302,18 @@ ExactRun::Step ExactRun::slipAgainst(double hi) {
     return slipThrough(hi, AtStop::Stick, r_.work.events == events ? &atHi : nullptr);
 }
 
-// Cut [lo, hi] at every crossing of |a| = mu, then each piece has a fixed sign of
-// |a| - mu and of a +- mu. That sign flips at every cut, so a is evaluated once per segment
-// (in its longest piece) and carried through the cuts; a cut that contradicts the carried
-// state (only through rounding) falls back to evaluating a in the piece.
+// Cut [lo, hi] at every crossing of |a| = mu (core/slab/SegmentCuts.h), then each piece has a
+// fixed sign of |a| - mu and of a +- mu, carried through the cuts.
 ExactRun::Step ExactRun::cutIntoPieces(double lo, double hi) {
-    Crossings up = a_.crossings(p_.mu, lo, hi);
-    Crossings down = p_.mu > 0.0 ? a_.crossings(-p_.mu, lo, hi) : Crossings{};
-    std::array<Cut, 10> cuts{};
-    std::size_t n = 0;
-    cuts[n++] = {lo, 0};
-    for (int i = 0; i < up.n; ++i)
-        cuts[n++] = {up.t[static_cast<std::size_t>(i)], 1};
-    for (int i = 0; i < down.n; ++i)
-        cuts[n++] = {down.t[static_cast<std::size_t>(i)], -1};
-    // At most eight crossings: insertion sort (std::sort trips a GCC 12 bounds warning here).
-    for (std::size_t i = 2; i < n; ++i)
-        for (std::size_t j = i; j > 1 && cuts[j - 1].tau > cuts[j].tau; --j)
-            std::swap(cuts[j - 1], cuts[j]);
-    cuts[n++] = {hi, 0};
-    // The sign of a where |a| > mu, 0 where |a| <= mu: at the longest piece, then back to lo.
-    std::size_t longest = 0;
-    for (std::size_t i = 1; i + 1 < n; ++i)
-        if (cuts[i + 1].tau - cuts[i].tau > cuts[longest + 1].tau - cuts[longest].tau) longest = i;
-    int state = excessAt(0.5 * (cuts[longest].tau + cuts[longest + 1].tau));
-    for (std::size_t i = longest; i > 0; --i) {
-        const auto before = crossCut(state, cuts[i].kind);
-        state = before ? *before : excessAt(0.5 * (cuts[i - 1].tau + cuts[i].tau));
-    }
-    for (std::size_t i = 0; i + 1 < n; ++i) {
+    const SegmentCuts c = segmentCuts(a_, p_.mu, lo, hi);
+    int state = firstPieceExcess(c, [&](double tau) { return excessAt(tau); });
+    for (std::size_t i = 0; i + 1 < c.n; ++i) {
         if (i > 0) {
-            const auto next = crossCut(state, cuts[i].kind);
-            state = next ? *next : excessAt(0.5 * (cuts[i].tau + cuts[i + 1].tau));
+            const auto next = crossCut(state, c.cut[i].kind);
+            state = next ? *next : excessAt(0.5 * (c.cut[i].tau + c.cut[i + 1].tau));
         }
-        if (cuts[i + 1].tau <= cuts[i].tau) continue;
-        if (piece(cuts[i].tau, cuts[i + 1].tau, state) == Step::Done) return Step::Done;
+        if (c.cut[i + 1].tau <= c.cut[i].tau) continue;
+        if (piece(c.cut[i].tau, c.cut[i + 1].tau, state) == Step::Done) return Step::Done;
     }
     return Step::Continue;
 }
@@ -347,17 +338,14 @@ ExactRun::Step ExactRun::slipThrough(double hi, AtStop atStop, const EndState* k
         const bool stops = s_ * vHi <= 0.0 && !(atStop == AtStop::Reverse && v_ == 0.0);
         if (!stops) return slipTo(atHi);
         // s v <= 0 already at t_ only through rounding right after a grazing onset: stop there.
-        const double tStop = (s_ * v_ <= 0.0) ? t_
-                                              : rootOf(
-                                                    [&](double tau, double& f, double& df) {
-                                                        double a = 0.0;
-                                                        f = s_ * velocityAt(tau, &a);
-                                                        df = s_ * (-s_ * p_.mu - a);
-                                                    },
-                                                    t_, hi, s_ * v_, s_ * vHi, slipSlope(t_, aT_),
-                                                    slipSlope(hi, atHi.a));
+        lastStop_ = StopSample{};
+        const double tStop =
+            (s_ * v_ <= 0.0)
+                ? t_
+                : rootOf([&](double tau, Derivatives& d) { stopFunction(tau, d); }, t_, hi, s_ * v_,
+                         s_ * vHi, slipSlope(t_, aT_), slipSlope(hi, atHi.a));
         // The state at the stop, with a there (whether it sticks, and the next slip's slope).
-        const EndState stop = stateAt(tStop);
+        const EndState stop = stopState(tStop);
         if (collapsesBy(tStop, stop.x, 0.0)) return Step::Done;
         moveTo(tStop, stop.x, 0.0, stop.a);
         if (atStop == AtStop::Reverse || (atStop == AtStop::Decide && std::abs(stop.a) > p_.mu)) {
@@ -387,10 +375,10 @@ ExactRun::Step ExactRun::slipTo(const EndState& end) {
 bool ExactRun::collapsesBy(double tEnd, double xEnd, double vEnd) {
     if (!(s_ * xEnd > p_.limit)) return false;
     const double tC = rootOf(
-        [&](double tau, double& f, double& df) {
+        [&](double tau, Derivatives& d) {
             double x = 0.0;
-            df = s_ * velocityAndDisplacementAt(tau, x);
-            f = s_ * x - p_.limit;
+            d.df = s_ * velocityAndDisplacementAt(tau, x);
+            d.f = s_ * x - p_.limit;
         },
         t_, tEnd, s_ * x_ - p_.limit, s_ * xEnd - p_.limit, s_ * v_, s_ * vEnd);
     moveTo(tC, s_ * p_.limit, velocityAt(tC));

@@ -48,6 +48,11 @@ public:
         accelAtT1 = -accelAtT1;
         return dv;
     }
+    double velocityChangeAndSlopes(double t0, double t1, AccelAt& at) const override {
+        const double dv = -a_.velocityChangeAndSlopes(t0, t1, at);
+        at = {-at.a, -at.da, -at.d2a};
+        return dv;
+    }
     double velocityAndDisplacementChange(double t0, double t1, double& dx) const override {
         const double dv = -a_.velocityAndDisplacementChange(t0, t1, dx);
         dx = -dx;

@@ -43,6 +43,20 @@ private slots:
         const double dv = a.velocityChangeAndAccel(t0, t1, end);
         QCOMPARE(dv, a.velocityChange(t0, t1));
         QCOMPARE_LE(std::abs(end - a.accel(t1)), 1e-14);
+        // Both integrals at once (one series on a short span) against the quadrature too.
+        double dx = 0.0;
+        QCOMPARE_LE(std::abs(a.velocityAndDisplacementChange(t0, t1, dx) - want.first), 1e-13 * h);
+        QCOMPARE_LE(std::abs(dx - want.second), 1e-13 * h * h);
+        // a, a' and a'' at t1 from the integral's exponentials (the stop search's Halley steps):
+        // a and a' against accel() and accelSlope(), a'' against the central difference of
+        // accelSlope() (step 1e-5: truncation ~1e-10 |a''''|, rounding ~1e-11 |a'|).
+        AccelAt at;
+        QCOMPARE(a.velocityChangeAndSlopes(t0, t1, at), a.velocityChange(t0, t1));
+        QCOMPARE_LE(std::abs(at.a - a.accel(t1)), 1e-14);
+        QCOMPARE_LE(std::abs(at.da - a.accelSlope(t1)), 1e-13);
+        const double step = 1e-5;
+        const double d2a = (a.accelSlope(t1 + step) - a.accelSlope(t1 - step)) / (2.0 * step);
+        QCOMPARE_LE(std::abs(at.d2a - d2a), 1e-8);
     }
 };
 
