@@ -8,6 +8,9 @@
 //               --paper-steps 4 --events
 // (JSON numbers round-trip their doubles; the history CSV has 12 significant digits). The seed's
 // tau_c = 40.5402 is also Furgerson 1980 ch. V's collapse at A = 1.00 g, 1 Hz (tst_exact_solver).
+// The exact solver's root solves changed after that build (issue 34, Halley's steps), which moves
+// its event times by a few ulps: its values are compared to 1e-13 relative, the paper solver's
+// (unchanged) bit for bit.
 
 #include "core/excitation/EnvelopedSine.h"
 #include "core/slab/FiniteResult.h"
@@ -62,6 +65,9 @@ void compareSummaries(const SlabResult& kept, const SlabResult& bare) {
     QCOMPARE(kept.work.restarts, bare.work.restarts);
 }
 
+// The exact solver's values: equal to the seed's within a few ulps (see the header).
+#define QCOMPARE_SEED(a, b) QCOMPARE_LE(std::abs((a) - (b)), 1e-13 * std::abs(b))
+
 } // namespace
 
 class TestSlabRecorder : public QObject {
@@ -83,24 +89,24 @@ private slots:
         SlabEventLog log;
         const SlabResult r = runSlab1D(seedCase(), 1.0, 1.0, {}, &log);
         QCOMPARE(outcomeName(r.outcome), std::string("collapsed"));
-        QCOMPARE_BITS(r.tauC, 40.540203379474136);
+        QCOMPARE_SEED(r.tauC, 40.540203379474136);
         // Six slips, each started by an onset, the first five ended by a stick, then collapse.
         QCOMPARE(log.events.size(), std::size_t(12));
         for (std::size_t i = 0; i + 1 < log.events.size(); ++i)
             QCOMPARE(eventKindName(log.events[i].kind),
                      eventKindName(i % 2 == 0 ? EventKind::SlipOnset : EventKind::Stick));
         const SlabEvent& first = log.events.front();
-        QCOMPARE_BITS(first.tau, 12.161947615969051);
+        QCOMPARE_SEED(first.tau, 12.161947615969051);
         QCOMPARE(first.direction, -1);
         const SlabEvent& stick = log.events[1];
-        QCOMPARE_BITS(stick.tau, 13.93774192394643);
-        QCOMPARE_BITS(stick.delta, -0.03458618392504874);
+        QCOMPARE_SEED(stick.tau, 13.93774192394643);
+        QCOMPARE_SEED(stick.delta, -0.03458618392504874);
         QCOMPARE(stick.direction, 0);
         const SlabEvent& last = log.events.back();
         QCOMPARE(last.kind, EventKind::Collapse);
         QCOMPARE_BITS(last.tau, r.tauC);
         QCOMPARE_BITS(last.delta, 1.0);
-        QCOMPARE_BITS(last.velocity, 0.3964149416193818);
+        QCOMPARE_SEED(last.velocity, 0.3964149416193818);
         QCOMPARE(last.direction, 1);
     }
 
