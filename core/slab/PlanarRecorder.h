@@ -27,8 +27,8 @@ struct PlanarSample {
 };
 
 using PlanarRecorder = RunRecorder<PlanarEvent, PlanarSample>;
-using PlanarEventLog = EventLog<PlanarEvent, PlanarSample>;
-using PlanarPathLog = PathLog<PlanarEvent, PlanarSample>;
+using PlanarEventLog = RunEventLog<PlanarEvent, PlanarSample>;
+using PlanarPathLog = RunPathLog<PlanarEvent, PlanarSample>;
 using PlanarRecorderPair = RecorderPair<PlanarEvent, PlanarSample>;
 
 } // namespace kinstab

@@ -19,14 +19,14 @@ public:
 };
 
 // The events, in the order they happened.
-template <class Event, class Sample> class EventLog : public RunRecorder<Event, Sample> {
+template <class Event, class Sample> class RunEventLog : public RunRecorder<Event, Sample> {
 public:
     void onEvent(const Event& e) override { events.push_back(e); }
     std::vector<Event> events;
 };
 
 // The path: every state the solver reported.
-template <class Event, class Sample> class PathLog : public RunRecorder<Event, Sample> {
+template <class Event, class Sample> class RunPathLog : public RunRecorder<Event, Sample> {
 public:
     void onStep(const Sample& s) override { path.push_back(s); }
     std::vector<Sample> path;

@@ -21,7 +21,7 @@
 namespace kinstab {
 
 using SlabRecorder = RunRecorder<SlabEvent, HistorySample>;
-using SlabEventLog = EventLog<SlabEvent, HistorySample>;
+using SlabEventLog = RunEventLog<SlabEvent, HistorySample>;
 
 // The events, and the history sampled from them on demand. The history's end and step are the
 // caller's, chosen once the run is known (a stable run is often shown past its end, and the

@@ -95,8 +95,10 @@ private slots:
                  w->fullAssessment() == nullptr);
         // Then the project's whole assessment, as kinstab-cli check gives it: the enveloped
         // sine's checks and the record's, with their basis (core/assessment).
+        // (It may already be in: the record's envelope fit takes 0.05 ms since issue 34. Both
+        // are set on this thread, so a null here means the signal is still to come.)
         QSignalSpy assessed(w.get(), &MainWindow::assessmentFinished);
-        QVERIFY(assessed.wait(120000));
+        QVERIFY(w->fullAssessment() || assessed.wait(120000));
         QVERIFY(w->fullAssessment());
         AnalysisControl control;
         const Assessment cli = runAssessment(w->project(), std::nullopt, control).assessment;

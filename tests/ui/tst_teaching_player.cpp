@@ -152,7 +152,7 @@ private slots:
         view.setParams(paperCase(1.0, 1.0));
         const auto& ev = view.run().events();
         QVERIFY(ev.size() > 3);
-        ui::EventLog* log = view.eventLog(); // not kinstab::EventLog (core/slab/RunRecorder.h)
+        EventLog* log = view.eventLog();
         const QModelIndex idx = log->logModel()->index(2, 0);
         log->scrollTo(idx);
         QTest::mouseClick(log->viewport(), Qt::LeftButton, {}, log->visualRect(idx).center());
