@@ -5,6 +5,7 @@
 #include "ui/StudyTab.h"
 
 #include "core/io/AtomicFile.h"
+#include "core/io/JsonText.h"
 #include "core/study/FragilityText.h"
 #include "ui/ProjectFolder.h"
 #include "ui/RiskPanel.h"
@@ -230,7 +231,8 @@ bool StudyTab::exportRows(const QString& path) {
 }
 
 bool StudyTab::exportFragility(const QString& path) {
-    return save(path, fragilityJson(m_fragility, {}).dump(2) + "\n");
+    // As kinstab-cli fragility writes it (its defaults are the fit's: core/study/Fragility.h).
+    return save(path, jsonText(fragilityJson(m_fragility, {}), 2) + "\n");
 }
 
 bool StudyTab::save(const QString& path, const std::string& text) {

@@ -132,6 +132,17 @@ private slots:
         QFile f(out);
         QVERIFY(f.open(QIODevice::ReadOnly));
         QCOMPARE(f.readAll(), QByteArray::fromStdString(tab.rows()));
+        // The exported fragility is what kinstab-cli fragility makes of those rows, byte for
+        // byte (the same bootstrap defaults, the same version stamp).
+        const QString frag = dir.filePath("fragility.json");
+        QVERIFY(tab.exportFragility(frag));
+        QFile g(frag);
+        QVERIFY(g.open(QIODevice::ReadOnly));
+        QProcess fit;
+        fit.start(KINSTAB_CLI, {"fragility", "--results", out});
+        QVERIFY(fit.waitForFinished(120000));
+        QCOMPARE(fit.exitCode(), 0);
+        QCOMPARE(g.readAll(), fit.readAllStandardOutput());
     }
     void cancelShowsNothingPartial() {
         StudyTab tab;
