@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Over 400 lines with its header for a reason: every check is composed, named and worded here,
+// so that the ids, the verdict words and the governing rule are read together; what each check
+// needs is gathered apart (RunAssessment, BlockCheck, RiskCheck).
 #include "core/assessment/Assessment.h"
 
 #include "core/base/SignificantDigits.h"

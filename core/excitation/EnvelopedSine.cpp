@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Over 400 lines with its header for a reason: one excitation's closed forms (value, slopes,
+// integrals, bounds, the hump search) share one memo of exponentials, and the header states each
+// formula.
 #include "core/excitation/EnvelopedSine.h"
 
 #include "core/base/InputLimits.h"
