@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Long (400 lines, 420 with its header) for a reason: one run's state machine (stick, slip and
+// Over 400 lines (with its header) for a reason: one run's state machine (stick, slip and
 // the events between them), whose methods share the run's state; what stands alone is apart
 // (core/slab/SegmentCuts, StopSample).
 #include "core/slab/ExactSolver.h"
