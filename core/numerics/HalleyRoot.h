@@ -88,14 +88,9 @@ RootResult safeguardedHalley(FDF&& fdf, double lo, double hi, double flo, double
         } else {
             dx = f / df;
             x -= dx;
-            // As safeguardedNewton: two Newton steps in a row show the rate.
-            const double ratio = std::abs(dx) / lastNewton;
-            predictedError = ratio > 0.0 && ratio < 0.01 ? ratio * ratio * std::abs(dx) : inf;
-            lastNewton = std::abs(dx);
+            predictedError = rootstop::newtonPredictedError(dx, lastNewton); // as safeguardedNewton
         }
-        const double tol = std::max(absTolerance, 4.0 * std::numeric_limits<double>::epsilon() *
-                                                      std::max({std::abs(a), std::abs(b), 1e-300}));
-        if (std::abs(b - a) <= tol || std::abs(dx) <= 0.25 * tol || predictedError <= 0.25 * tol) {
+        if (rootstop::converged(a, b, dx, predictedError, absTolerance)) {
             r.x = x;
             r.converged = true;
             return r;

@@ -17,6 +17,29 @@ struct RootResult {
     bool converged = false;
 };
 
+namespace rootstop {
+
+// Once Newton converges quadratically (a step under 1/100 of the one before), the error left
+// after a step is about (step / previous step)^2 x step. Two Newton steps in a row are needed
+// to see the rate (lastNewton is inf after the start or a bisection, and then the ratio is 0,
+// not small). Updates lastNewton to this step.
+inline double newtonPredictedError(double dx, double& lastNewton) {
+    const double ratio = std::abs(dx) / lastNewton;
+    lastNewton = std::abs(dx);
+    return ratio > 0.0 && ratio < 0.01 ? ratio * ratio * std::abs(dx)
+                                       : std::numeric_limits<double>::infinity();
+}
+
+// Done when the bracket [a, b], the last step dx or the predicted error is below the tolerance
+// (absTolerance, or a few ulps of the bracket's ends).
+inline bool converged(double a, double b, double dx, double predictedError, double absTolerance) {
+    const double tol = std::max(absTolerance, 4.0 * std::numeric_limits<double>::epsilon() *
+                                                  std::max({std::abs(a), std::abs(b), 1e-300}));
+    return std::abs(b - a) <= tol || std::abs(dx) <= 0.25 * tol || predictedError <= 0.25 * tol;
+}
+
+} // namespace rootstop
+
 // Root of f on [lo, hi] where f(lo) and f(hi) differ in sign (or one is zero).
 // fdf(x, f, df) evaluates the function and its derivative. Stops when the bracket is a few
 // ulps wide, so the answer is as exact as double arithmetic allows.
@@ -63,16 +86,9 @@ RootResult safeguardedNewton(FDF&& fdf, double lo, double hi, double flo, double
         } else {
             dx = f / df;
             x -= dx;
-            // Two Newton steps in a row are needed to see the rate (lastNewton is inf after
-            // the start or a bisection, and then the ratio is 0, not small).
-            const double ratio = std::abs(dx) / lastNewton;
-            predictedError = ratio > 0.0 && ratio < 0.01 ? ratio * ratio * std::abs(dx)
-                                                         : std::numeric_limits<double>::infinity();
-            lastNewton = std::abs(dx);
+            predictedError = rootstop::newtonPredictedError(dx, lastNewton);
         }
-        const double tol = std::max(absTolerance, 4.0 * std::numeric_limits<double>::epsilon() *
-                                                      std::max({std::abs(a), std::abs(b), 1e-300}));
-        if (std::abs(b - a) <= tol || std::abs(dx) <= 0.25 * tol || predictedError <= 0.25 * tol) {
+        if (rootstop::converged(a, b, dx, predictedError, absTolerance)) {
             r.x = x;
             r.converged = true;
             return r;
