@@ -56,14 +56,9 @@ RootResult safeguardedHalley(FDF&& fdf, double lo, double hi, double flo, double
                              double start = std::numeric_limits<double>::quiet_NaN(),
                              double absTolerance = 0.0) {
     constexpr double inf = std::numeric_limits<double>::infinity();
+    if (const auto done = rootstop::withoutStep(lo, hi, flo, fhi)) return *done;
     RootResult r;
-    if (flo == 0.0) return {lo, 0, true};
-    if (fhi == 0.0) return {hi, 0, true};
-    if ((flo > 0.0) == (fhi > 0.0)) return r; // no bracket
-    double a = lo, b = hi;                    // f(a) < 0 < f(b)
-    if (flo > 0.0) std::swap(a, b);
-    double x = 0.5 * (lo + hi);
-    if (start > std::min(lo, hi) && start < std::max(lo, hi)) x = start;
+    auto [a, b, x] = rootstop::opening(lo, hi, flo, start);
     double dxOld = std::abs(hi - lo), dx = dxOld, lastNewton = inf, predictedError = inf;
     Derivatives d;
     fdf(x, d);

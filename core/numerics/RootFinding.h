@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
 namespace kinstab {
 
@@ -18,6 +19,26 @@ struct RootResult {
 };
 
 namespace rootstop {
+
+// The answer without a step: an end that is a root, or no sign change (not converged).
+inline std::optional<RootResult> withoutStep(double lo, double hi, double flo, double fhi) {
+    if (flo == 0.0) return RootResult{lo, 0, true};
+    if (fhi == 0.0) return RootResult{hi, 0, true};
+    if ((flo > 0.0) == (fhi > 0.0)) return RootResult{}; // no bracket
+    return std::nullopt;
+}
+
+// The bracket oriented so that f(a) < 0 < f(b), and the first point: start when it lies
+// inside, else the midpoint.
+struct Opening {
+    double a, b, x;
+};
+inline Opening opening(double lo, double hi, double flo, double start) {
+    Opening o{lo, hi, 0.5 * (lo + hi)};
+    if (flo > 0.0) std::swap(o.a, o.b);
+    if (start > std::min(lo, hi) && start < std::max(lo, hi)) o.x = start;
+    return o;
+}
 
 // Once Newton converges quadratically (a step under 1/100 of the one before), the error left
 // after a step is about (step / previous step)^2 x step. Two Newton steps in a row are needed
@@ -55,15 +76,9 @@ RootResult safeguardedNewton(FDF&& fdf, double lo, double hi, double flo, double
                              int maxIterations = 200,
                              double start = std::numeric_limits<double>::quiet_NaN(),
                              double absTolerance = 0.0) {
+    if (const auto done = rootstop::withoutStep(lo, hi, flo, fhi)) return *done;
     RootResult r;
-    if (flo == 0.0) return {lo, 0, true};
-    if (fhi == 0.0) return {hi, 0, true};
-    if ((flo > 0.0) == (fhi > 0.0)) return r; // no bracket
-    // Orient so that f(a) < 0 < f(b).
-    double a = lo, b = hi;
-    if (flo > 0.0) std::swap(a, b);
-    double x = 0.5 * (lo + hi);
-    if (start > std::min(lo, hi) && start < std::max(lo, hi)) x = start;
+    auto [a, b, x] = rootstop::opening(lo, hi, flo, start);
     double dxOld = std::abs(hi - lo);
     double dx = dxOld;
     double lastNewton = std::numeric_limits<double>::infinity();
