@@ -1,41 +1,68 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// m x = b for a small fixed-size m by Gaussian elimination with partial pivoting, in place (b
-// becomes x). In the planar solver's Newton steps Eigen's general LU of the 5x5 matrix took 13 %
-// of the run (perf); this plain loop takes 9 % of its instructions (callgrind).
+// m x = b for a small fixed-size m by Gaussian elimination with partial pivoting. In the planar
+// solver's Newton steps Eigen's general LU of the 5x5 matrix took 13 % of the run (perf); this
+// plain loop takes 9 % of its instructions (callgrind). SmallLu keeps the elimination so that
+// further right-hand sides reuse it (the later Newton iterations of a Radau step: the
+// elimination was two thirds of each solve); solveInPlace factors and solves at once, with the
+// same operations in the same order.
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cmath>
 #include <utility>
 
 namespace kinstab {
 
+template <int N> class SmallLu {
+public:
+    // False when a pivot is zero or not finite (m singular to working precision).
+    bool factor(Eigen::Matrix<double, N, N> m) {
+        for (int k = 0; k < N; ++k) {
+            int p = k;
+            for (int i = k + 1; i < N; ++i)
+                if (std::abs(m(i, k)) > std::abs(m(p, k))) p = i;
+            if (!(std::abs(m(p, k)) > 0.0) || !std::isfinite(m(p, k))) return false;
+            pivot_[k] = p;
+            if (p != k) m.row(p).swap(m.row(k));
+            const double inv = 1.0 / m(k, k);
+            for (int i = k + 1; i < N; ++i) {
+                // Kept by step and row position at that step: the solve replays the elimination.
+                const double f = multiplier_[k][i] = m(i, k) * inv;
+                for (int j = k + 1; j < N; ++j)
+                    m(i, j) -= f * m(k, j);
+            }
+        }
+        u_ = m;
+        return true;
+    }
+    // b becomes x; only after factor() returned true.
+    void solve(Eigen::Matrix<double, N, 1>& b) const {
+        for (int k = 0; k < N; ++k) {
+            if (pivot_[k] != k) std::swap(b[pivot_[k]], b[k]);
+            for (int i = k + 1; i < N; ++i)
+                b[i] -= multiplier_[k][i] * b[k];
+        }
+        for (int k = N - 1; k >= 0; --k) {
+            double s = b[k];
+            for (int j = k + 1; j < N; ++j)
+                s -= u_(k, j) * b[j];
+            b[k] = s / u_(k, k);
+        }
+    }
+
+private:
+    Eigen::Matrix<double, N, N> u_; // upper triangle: U
+    std::array<std::array<double, N>, N> multiplier_{};
+    std::array<int, N> pivot_{};
+};
+
 // Returns false when a pivot is zero or not finite (m singular to working precision).
 template <int N> bool solveInPlace(Eigen::Matrix<double, N, N>& m, Eigen::Matrix<double, N, 1>& b) {
-    for (int k = 0; k < N; ++k) {
-        int p = k;
-        for (int i = k + 1; i < N; ++i)
-            if (std::abs(m(i, k)) > std::abs(m(p, k))) p = i;
-        if (!(std::abs(m(p, k)) > 0.0) || !std::isfinite(m(p, k))) return false;
-        if (p != k) {
-            m.row(p).swap(m.row(k));
-            std::swap(b[p], b[k]);
-        }
-        const double inv = 1.0 / m(k, k);
-        for (int i = k + 1; i < N; ++i) {
-            const double f = m(i, k) * inv;
-            for (int j = k + 1; j < N; ++j)
-                m(i, j) -= f * m(k, j);
-            b[i] -= f * b[k];
-        }
-    }
-    for (int k = N - 1; k >= 0; --k) {
-        double s = b[k];
-        for (int j = k + 1; j < N; ++j)
-            s -= m(k, j) * b[j];
-        b[k] = s / m(k, k);
-    }
+    SmallLu<N> lu;
+    if (!lu.factor(m)) return false;
+    lu.solve(b);
     return true;
 }
 

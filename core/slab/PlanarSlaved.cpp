@@ -56,7 +56,7 @@ PlanarRun::Step PlanarRun::slaved(double end) {
         const double t0 = t_, pieceEnd = std::min(end, nextCut(t0)),
                      hh = std::min(h, pieceEnd - t0);
         if (++r_.slab.work.steps > o_.maxSteps) return fail("step limit reached");
-        const auto st = dop853Step<3>(f, t0, z, f0, hh);
+        const auto st = dop853Step<3, 0, 1>(f, t0, z, f0, hh);
         const double err = dop853ErrorNorm<3>(st, z, absTol, o_.relTol);
         if (!(err <= 1.0)) {
             ++r_.slab.work.restarts;
@@ -85,13 +85,13 @@ PlanarRun::Step PlanarRun::slavedStop(double t0, double hh, const Vec3& z, const
                                   : locateEvent(
                                         kSlavedStop,
                                         [&](double t, double& yk, double& dyk) {
-                                            const Vec3 zz = dop853Step<3>(f, t0, z, f0, t - t0).y;
+                                            const Vec3 zz = dop853Step<3, 0, 1>(f, t0, z, f0, t - t0).y;
                                             yk = zz[0];
                                             dyk = f(t, zz)[0];
                                         },
                                         t0, t0 + hh, kSlavedStop.value(z[0]),
                                         kSlavedStop.value(zEnd[0]), r_.slab.work.rootIterations);
-    const Vec3 zs = ts == t0 ? z : Vec3(dop853Step<3>(f, t0, z, f0, ts - t0).y);
+    const Vec3 zs = ts == t0 ? z : Vec3(dop853Step<3, 0, 1>(f, t0, z, f0, ts - t0).y);
     Vec4 y;
     y << zs[1], zs[2], 0.0, 0.0;
     moveTo(ts, y);

@@ -47,7 +47,7 @@ PlanarRun::Approach PlanarRun::approachStop(double end) {
             fail("step limit reached");
             return Approach::Done;
         }
-        const auto st = dop853Step<5>(f, l.s, l.z, l.fz, h);
+        const auto st = dop853Step<5, 0, 3>(f, l.s, l.z, l.fz, h);
         const double err = dop853ErrorNorm<5>(st, l.z, absTol, o_.relTol);
         const double tauNew = l.tEntry + st.y[2];
         const double dNew = dissipationRate(tauNew, st.y[0] / norm2(st.y[0], st.y[1]),
@@ -105,7 +105,7 @@ Vec4 PlanarRun::fromLog(const Vec5& z, double s) const {
 
 // The step from l's start to sTarget, re-taken: the step's dense output.
 Vec5 PlanarRun::logRestep(const LogState& l, double sTarget) {
-    return dop853Step<5>([&](double ss, const Vec5& zz) { return rhsS(ss, zz); }, l.s, l.z, l.fz,
+    return dop853Step<5, 0, 3>([&](double ss, const Vec5& zz) { return rhsS(ss, zz); }, l.s, l.z, l.fz,
                          sTarget - l.s)
         .y;
 }

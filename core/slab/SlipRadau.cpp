@@ -81,35 +81,54 @@ double errorNorm(const SlabModel2D& m, double t0, const OdeVec<4>& y0, const Ode
     return err;
 }
 
-// Newton's correction: solves (I - h A (x) J) dz = rhs, the stage Jacobians J_j = -c_j p_j p_j^T
-// being of rank one (c_j = mu n_j / |u_j|, p_j the unit normal to u_j: Slip's rate, normal). The
-// 10x10 matrix is then I + sum_j w_j q_j^T (q_j: p_j in block j; w_j: h A_ij c_j p_j in block i),
-// and by the Sherman-Morrison-Woodbury identity dz = rhs - W M^-1 Q^T rhs with the 5x5
+// Newton's matrix I - h A (x) J, the stage Jacobians J_j = -c_j p_j p_j^T being of rank one
+// (c_j = mu n_j / |u_j|, p_j the unit normal to u_j: Slip's rate, normal). The 10x10 matrix is
+// then I + sum_j w_j q_j^T (q_j: p_j in block j; w_j: h A_ij c_j p_j in block i), and by the
+// Sherman-Morrison-Woodbury identity its solution is dz = rhs - W M^-1 Q^T rhs with the 5x5
 // M = I + Q^T W, M_jk = delta_jk + h A_jk c_k p_j.p_k: the same solution as a 10x10 LU, at a
 // fraction of its cost (with three stages the 6x6 LU had been a tenth of the planar solver's
-// time). M is solved by core/numerics/SmallLinearSolve.h.
-// hA = h A, formed once per step. p_j.p_k is symmetric: formed once per pair.
-Stages newtonCorrection(const std::array<Slip, kS>& s, const StageMatrix& hA, const Stages& rhs) {
-    Eigen::Matrix<double, kS, kS> m;
-    Eigen::Matrix<double, kS, 1> qb;
-    std::array<std::array<double, kS>, kS> dot;
+// time). M is factored by core/numerics/SmallLinearSolve.h. hA = h A, formed once per step.
+struct NewtonMatrix {
+    std::array<Vec2d, kS> normal;
+    StageMatrix hAc; // h A_ik c_k
+    SmallLu<kS> lu;
+    bool ok = false; // M regular
+};
+NewtonMatrix newtonMatrix(const std::array<Slip, kS>& s, const StageMatrix& hA) {
+    NewtonMatrix n;
+    std::array<std::array<double, kS>, kS> dot; // symmetric: formed once per pair
     for (int j = 0; j < kS; ++j) {
-        qb[j] = s[j].normal.dot(rhs.segment<2>(2 * j));
+        n.normal[j] = s[j].normal;
         for (int k = j; k < kS; ++k)
             dot[j][k] = dot[k][j] = s[j].normal.dot(s[k].normal);
     }
+    Eigen::Matrix<double, kS, kS> m;
     for (int j = 0; j < kS; ++j)
-        for (int k = 0; k < kS; ++k)
-            m(j, k) = (j == k ? 1.0 : 0.0) + hA[j][k] * s[k].rate * dot[j][k];
-    Eigen::Matrix<double, kS, 1>& y = qb;
-    if (!solveInPlace<kS>(m, y)) y.setConstant(NAN); // Newton then stops: no finite norm
+        for (int k = 0; k < kS; ++k) {
+            n.hAc[j][k] = hA[j][k] * s[k].rate;
+            m(j, k) = (j == k ? 1.0 : 0.0) + n.hAc[j][k] * dot[j][k];
+        }
+    n.ok = n.lu.factor(m);
+    return n;
+}
+
+// Newton's correction dz = rhs - W M^-1 Q^T rhs (NaN when M is singular: Newton then stops, no
+// finite norm).
+Stages newtonCorrection(const NewtonMatrix& n, const Stages& rhs) {
+    Eigen::Matrix<double, kS, 1> y;
+    for (int j = 0; j < kS; ++j)
+        y[j] = n.normal[j].dot(rhs.segment<2>(2 * j));
+    if (n.ok)
+        n.lu.solve(y);
+    else
+        y.setConstant(NAN);
     Stages dz = rhs;
     for (int k = 0; k < kS; ++k) {
         std::array<double, kS> w;
         for (int i = 0; i < kS; ++i)
-            w[i] = hA[i][k] * s[k].rate * y[k];
+            w[i] = n.hAc[i][k] * y[k];
         for (int i = 0; i < kS; ++i)
-            dz.segment<2>(2 * i) -= w[i] * s[k].normal;
+            dz.segment<2>(2 * i) -= w[i] * n.normal[k];
     }
     return dz;
 }
@@ -210,6 +229,7 @@ Stages startingStages(const Vec2d& u0, double t0, double h, const StageForcing& 
 bool newtonSolve(Stages& z, const Vec2d& u0, const StageForcing& f, const StageMatrix& hA,
                  const Vec2d& scale, double fnewt, int& iterations) {
     std::array<Slip, kS> s;
+    NewtonMatrix matrix;
     double lastNorm = INFINITY;
     for (int k = 0; k < kSlipRadauMaxNewton; ++k) {
         Stages g = z;
@@ -222,7 +242,10 @@ bool newtonSolve(Stages& z, const Vec2d& u0, const StageForcing& f, const StageM
         for (int i = 0; i < kS; ++i)
             for (int j = 0; j < kS; ++j)
                 g.segment<2>(2 * i) -= hA[i][j] * s[j].f;
-        const Stages dz = newtonCorrection(s, hA, -g);
+        // Simplified Newton after the first iteration (as RADAU5 keeps its matrix): the later
+        // corrections are small, and the Jacobian at the first iterate converges them as well.
+        if (k == 0) matrix = newtonMatrix(s, hA);
+        const Stages dz = newtonCorrection(matrix, -g);
         z += dz;
         iterations = k + 1;
         const double norm = rmsNorm(dz, scale);
