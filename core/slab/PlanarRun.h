@@ -134,6 +134,7 @@ private:
     double nextOnset(double from);
     double nextCut(double tau);
     bool quietOn(double lo, double hi);
+    bool quietOnModel(double lo, double hi); // quietOn past its memory
     bool quietAfter(double tau);
 
     // Slip (PlanarSlip.cpp).
@@ -210,6 +211,9 @@ private:
         double lo = 0.0, hi = -1.0;
     } quietSpan_;
     double loudSpanEnd_ = -1.0, loudUntil_ = -1.0;
+    struct {
+        double lo = NAN, hi = NAN;
+    } lastLoud_; // the last span quietOn found loud
     std::vector<double> cuts_, roots_;
 };
 
