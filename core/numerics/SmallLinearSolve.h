@@ -18,7 +18,9 @@ namespace kinstab {
 template <int N> class SmallLu {
 public:
     // False when a pivot is zero or not finite (m singular to working precision).
-    bool factor(Eigen::Matrix<double, N, N> m) {
+    bool factor(const Eigen::Matrix<double, N, N>& a) {
+        Eigen::Matrix<double, N, N>& m = u_; // eliminated in place
+        m = a;
         for (int k = 0; k < N; ++k) {
             int p = k;
             for (int i = k + 1; i < N; ++i)
@@ -34,7 +36,6 @@ public:
                     m(i, j) -= f * m(k, j);
             }
         }
-        u_ = m;
         return true;
     }
     // b becomes x; only after factor() returned true.
@@ -53,9 +54,10 @@ public:
     }
 
 private:
+    // Set by factor() before any use (not zeroed: that had cost a tenth of the solves).
     Eigen::Matrix<double, N, N> u_; // upper triangle: U
-    std::array<std::array<double, N>, N> multiplier_{};
-    std::array<int, N> pivot_{};
+    std::array<std::array<double, N>, N> multiplier_;
+    std::array<int, N> pivot_;
 };
 
 // Returns false when a pivot is zero or not finite (m singular to working precision).

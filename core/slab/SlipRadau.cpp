@@ -94,8 +94,8 @@ struct NewtonMatrix {
     SmallLu<kS> lu;
     bool ok = false; // M regular
 };
-NewtonMatrix newtonMatrix(const std::array<Slip, kS>& s, const StageMatrix& hA) {
-    NewtonMatrix n;
+// Formed in place: returning and copying the struct had cost a third as much as forming it.
+void formNewtonMatrix(NewtonMatrix& n, const std::array<Slip, kS>& s, const StageMatrix& hA) {
     std::array<std::array<double, kS>, kS> dot; // symmetric: formed once per pair
     for (int j = 0; j < kS; ++j) {
         n.normal[j] = s[j].normal;
@@ -109,7 +109,6 @@ NewtonMatrix newtonMatrix(const std::array<Slip, kS>& s, const StageMatrix& hA) 
             m(j, k) = (j == k ? 1.0 : 0.0) + n.hAc[j][k] * dot[j][k];
         }
     n.ok = n.lu.factor(m);
-    return n;
 }
 
 // Newton's correction dz = rhs - W M^-1 Q^T rhs (NaN when M is singular: Newton then stops, no
@@ -253,7 +252,7 @@ bool newtonSolve(Stages& z, const Vec2d& u0, const StageForcing& f, const StageM
         // converges): the Jacobian at the first iterate converges the rest as well. After a
         // large one (a poor start: with a vertical record, a window's first step after the
         // sample's kink) the matrix is formed anew, or Newton fails 4x as often.
-        if (k == 0 || lastNorm > kRefactorNorm) matrix = newtonMatrix(s, hA);
+        if (k == 0 || lastNorm > kRefactorNorm) formNewtonMatrix(matrix, s, hA);
         const Stages dz = newtonCorrection(matrix, -g);
         z += dz;
         iterations = k + 1;
