@@ -2,10 +2,9 @@
 #pragma once
 // m x = b for a small fixed-size m by Gaussian elimination with partial pivoting. In the planar
 // solver's Newton steps Eigen's general LU of the 5x5 matrix took 13 % of the run (perf); this
-// plain loop takes 9 % of its instructions (callgrind). SmallLu keeps the elimination so that
-// further right-hand sides reuse it (the later Newton iterations of a Radau step: the
-// elimination was two thirds of each solve); solveInPlace factors and solves at once, with the
-// same operations in the same order.
+// plain loop took 9 % of its instructions (callgrind). The elimination is kept, so that further
+// right-hand sides reuse it (the later Newton iterations of a Radau step: the elimination was
+// two thirds of each solve).
 
 #include <Eigen/Core>
 
@@ -17,14 +16,13 @@ namespace kinstab {
 
 template <int N> class SmallLu {
 public:
+    using Rows = std::array<std::array<double, N>, N>; // m[i][j]: row i
     // False when a pivot is zero or not finite (m singular to working precision).
-    bool factor(const Eigen::Matrix<double, N, N>& a) {
+    bool factor(const Rows& a) {
         // Rows kept contiguous and the loops unrolled: the strided, looped elimination of
         // Eigen's column-major matrix had been half of the Newton matrices' cost.
         Rows& m = u_; // eliminated in place
-        for (int i = 0; i < N; ++i)
-            for (int j = 0; j < N; ++j)
-                m[i][j] = a(i, j);
+        m = a;
 #pragma GCC unroll 8
         for (int k = 0; k < N; ++k) {
             int p = k;
@@ -65,19 +63,10 @@ public:
     }
 
 private:
-    using Rows = std::array<std::array<double, N>, N>;
     // Set by factor() before any use (not zeroed: that had cost a tenth of the solves).
     Rows u_; // upper triangle: U
     Rows multiplier_;
     std::array<int, N> pivot_;
 };
-
-// Returns false when a pivot is zero or not finite (m singular to working precision).
-template <int N> bool solveInPlace(Eigen::Matrix<double, N, N>& m, Eigen::Matrix<double, N, 1>& b) {
-    SmallLu<N> lu;
-    if (!lu.factor(m)) return false;
-    lu.solve(b);
-    return true;
-}
 
 } // namespace kinstab
