@@ -158,7 +158,7 @@ private:
     Step slavedStop(double t0, double hh, const Vec3& z, const Vec3& f0, const Vec3& zEnd);
     bool leaveSlaved(double t1, const Vec3& z, double rhoExit);
     Vec3 rhsSlaved(double tau, const Vec3& z);
-    Vec2 slavedDirection(double tau, const Vec2& a, double n, double rho) const;
+    Vec2 slavedDirection(const Vec2& a, const Vec2& slope, double n, double rho) const;
     bool isSlaved(double tau, const Vec4& y) const;
     bool onManifold(double tau, const Vec4& y, double angle) const;
 

@@ -36,18 +36,19 @@ void cosSin(double phi, double& c, double& s) {
 
 Vec3 PlanarRun::rhsSlaved(double tau, const Vec3& z) {
     ++r_.slab.work.accelEvaluations;
-    const Vec2 a = m_.accel(tau);
+    Vec2 a, sl;
+    m_.accelAndSlope(tau, a, sl);
     const double n = m_.normal(tau);
-    const Vec2 dir = slavedDirection(tau, a, n, z[0]);
+    const Vec2 dir = slavedDirection(a, sl, n, z[0]);
     const double speedRate = -mu_ * n - (a.x * dir.x + a.y * dir.y);
     Vec3 f;
     f << speedRate, z[0] * dir.x, z[0] * dir.y;
     return f;
 }
 
-// The unit direction of u on the slow manifold at speed rho (-a_h / |a| turned by phi).
-Vec2 PlanarRun::slavedDirection(double tau, const Vec2& a, double n, double rho) const {
-    const Vec2 sl = m_.accelSlope(tau);
+// The unit direction of u on the slow manifold at speed rho (-a_h / |a| turned by phi), from a_h,
+// its slope and n at one time.
+Vec2 PlanarRun::slavedDirection(const Vec2& a, const Vec2& sl, double n, double rho) const {
     const double am = norm2(a.x, a.y);
     if (!(am > 0.0)) return {0.0, 0.0};
     const double turn = (a.x * sl.y - a.y * sl.x) / (am * am); // theta_a'
@@ -118,8 +119,9 @@ PlanarRun::Step PlanarRun::slavedStop(double t0, double hh, const Vec3& z, const
 // The slaved state z accepted at t1, in the full variables; true when the slip is fast enough
 // to go back to the full equations (their first step must resolve the relaxation).
 bool PlanarRun::leaveSlaved(double t1, const Vec3& z, double rhoExit) {
-    const Vec2 a1 = m_.accel(t1);
-    const Vec2 dir = slavedDirection(t1, a1, m_.normal(t1), z[0]);
+    Vec2 a1, sl;
+    m_.accelAndSlope(t1, a1, sl);
+    const Vec2 dir = slavedDirection(a1, sl, m_.normal(t1), z[0]);
     Vec4 y;
     y << z[1], z[2], z[0] * dir.x, z[0] * dir.y;
     moveTo(t1, y);
@@ -142,7 +144,7 @@ bool PlanarRun::onManifold(double tau, const Vec4& y, double angle) const {
     const double am = norm2(a.x, a.y);
     const double n = m_.normal(tau);
     if (!(am > 0.0) || 2.0 * am - mu_ * n < kAttraction * am) return false;
-    const Vec2 dir = slavedDirection(tau, a, n, rho);
+    const Vec2 dir = slavedDirection(a, m_.accelSlope(tau), n, rho);
     return std::abs(dir.x * y[3] - dir.y * y[2]) <= angle * rho &&
            dir.x * y[2] + dir.y * y[3] > 0.0;
 }
