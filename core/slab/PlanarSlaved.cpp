@@ -99,16 +99,17 @@ PlanarRun::Step PlanarRun::slaved(double end) {
 PlanarRun::Step PlanarRun::slavedStop(double t0, double hh, const Vec3& z, const Vec3& f0,
                                       const Vec3& zEnd) {
     auto f = [&](double t, const Vec3& zz) { return rhsSlaved(t, zz); };
-    const double ts = z[0] <= 0.0 ? t0
-                                  : locateEvent(
-                                        kSlavedStop,
-                                        [&](double t, double& yk, double& dyk) {
-                                            const Vec3 zz = dop853Step<3, 0, 1>(f, t0, z, f0, t - t0).y;
-                                            yk = zz[0];
-                                            dyk = f(t, zz)[0];
-                                        },
-                                        t0, t0 + hh, kSlavedStop.value(z[0]),
-                                        kSlavedStop.value(zEnd[0]), r_.slab.work.rootIterations);
+    const double ts = z[0] <= 0.0
+                          ? t0
+                          : locateEvent(
+                                kSlavedStop,
+                                [&](double t, double& yk, double& dyk) {
+                                    const Vec3 zz = dop853Step<3, 0, 1>(f, t0, z, f0, t - t0).y;
+                                    yk = zz[0];
+                                    dyk = f(t, zz)[0];
+                                },
+                                t0, t0 + hh, kSlavedStop.value(z[0]), kSlavedStop.value(zEnd[0]),
+                                r_.slab.work.rootIterations);
     const Vec3 zs = ts == t0 ? z : Vec3(dop853Step<3, 0, 1>(f, t0, z, f0, ts - t0).y);
     Vec4 y;
     y << zs[1], zs[2], 0.0, 0.0;

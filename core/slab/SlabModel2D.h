@@ -63,7 +63,7 @@ public:
         a = accel(tau);
         s = accelSlope(tau);
     }
-    double normal(double tau) const {  // n = 1 + a_z
+    double normal(double tau) const { // n = 1 + a_z
         if (!az_) return 1.0;
         return 1.0 + z_.accel(*az_, tau);
     }
