@@ -65,16 +65,17 @@ private:
     }
     std::optional<double> slipTime(double tPrev, double tNow);
     std::optional<double> stickTime(double tPrev, double tNow);
-    std::optional<Outcome> endBeforeStep(double tau, const State& y, double end);
-    std::optional<Outcome> endAfterStep(double tau, const State& y);
+    bool endsBeforeStep(double tau, const State& y, double end, long& n);
+    bool endsAfterStep(double tau, const State& y);
     bool locateEvents(double tPrev, const State& yPrev, double tNow, State& y);
     bool startSlip(double tPrev, const State& yPrev, double tNow, State& y);
     bool stopOrReverse(double tPrev, const State& yPrev, double tNow, double aNow, State& y);
-    SlabResult finish(Outcome o, double tEnd, const State& y) {
+    // The run's end: always true, for the callers' return.
+    bool finish(Outcome o, double tEnd, const State& y) {
         r_.outcome = o;
         r_.tauEnd = tEnd;
         r_.residualDelta = y[2] - y[0];
-        return r_;
+        return true;
     }
     void record(EventKind kind, double tau, const State& y, int direction) {
         ++r_.work.events;
@@ -87,7 +88,6 @@ private:
     const RunOptions& o_;
     long maxSteps_;
     bool keepEvents_;
-    long stepsTaken_ = 0;
     std::vector<SlabEvent> events_;
     SlabResult r_;
     bool sliding_ = false;
@@ -144,39 +144,40 @@ std::optional<double> PaperRun::stickTime(double tPrev, double tNow) {
     return std::nullopt;
 }
 
-// Before a step: the excitation has decayed below mu while sticking, the duration is reached, or
-// the step budget is spent. nullopt: step on.
-std::optional<Outcome> PaperRun::endBeforeStep(double tau, const State& y, double end) {
+// Before step n: the run ends (r_ holds the result) when the excitation has decayed below mu
+// while sticking, the duration is reached, or the step budget is spent.
+bool PaperRun::endsBeforeStep(double tau, const State& y, double end, long& n) {
     if (!sliding_ && a_.boundAfter(tau) < p_.mu) {
         record(EventKind::Stable, tau, y, 0);
-        return Outcome::Stable;
+        return finish(Outcome::Stable, tau, y);
     }
     if (tau >= end) {
         record(EventKind::DurationCap, tau, y, 0);
-        return Outcome::Stable;
+        return finish(Outcome::Stable, tau, y);
     }
-    if (++stepsTaken_ > maxSteps_) {
+    if (++n > maxSteps_) {
         r_.failure = "step limit reached";
-        return Outcome::Failed;
+        return finish(Outcome::Failed, tau, y);
     }
-    return std::nullopt;
+    return false;
 }
 
-// After a step: collapse (tested at step ends only) or too many events. nullopt: step on.
-std::optional<Outcome> PaperRun::endAfterStep(double tau, const State& y) {
+// After a step: the run ends (r_ holds the result) on collapse, tested at step ends only, or on
+// too many events.
+bool PaperRun::endsAfterStep(double tau, const State& y) {
     const double delta = y[2] - y[0];
     r_.maxAbsDelta = std::max(r_.maxAbsDelta, std::abs(delta));
     if (std::abs(delta) > p_.limit) {
         // The paper takes the time of the present step as the collapse time.
         r_.tauC = tau;
         record(EventKind::Collapse, tau, y, static_cast<int>(direction_));
-        return Outcome::Collapsed;
+        return finish(Outcome::Collapsed, tau, y);
     }
     if (r_.work.events > o_.maxEvents) {
         r_.failure = "event limit reached";
-        return Outcome::Failed;
+        return finish(Outcome::Failed, tau, y);
     }
-    return std::nullopt;
+    return false;
 }
 
 // Slip onset inside the step [tPrev, tNow]: stepped again to the onset, then on to tNow sliding.
@@ -240,15 +241,16 @@ std::optional<SlabResult> PaperRun::run() {
     last_.fill({0.0, 0.0});
     // The first step is H/2, so that three points exist for the quadratic (Appendix).
     double h = 0.5 * h_;
+    long n = 0;
     while (true) {
-        if (const auto o = endBeforeStep(tau, y, end)) return finish(*o, tau, y);
+        if (endsBeforeStep(tau, y, end, n)) return r_;
         const double tPrev = tau;
         const State yPrev = y;
         const double tNow = tPrev + h;
         y = rk4(tPrev, yPrev, h);
         if (!locateEvents(tPrev, yPrev, tNow, y)) return std::nullopt;
         tau = tNow;
-        if (const auto o = endAfterStep(tau, y)) return finish(*o, tau, y);
+        if (endsAfterStep(tau, y)) return r_;
         h = h_;
     }
 }
