@@ -2,7 +2,7 @@
 // Fuzzes the study results' row parser (core/study/StudyRow): each line of any bytes gives a row
 // or a StudyRowError naming what is wrong.
 #include "FuzzInput.h"
-#include "core/study/StudyRow.h"
+#include "core/io/StudyRowJson.h"
 
 #include <sstream>
 
