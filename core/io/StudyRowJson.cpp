@@ -70,14 +70,7 @@ std::string text(const nlohmann::json& j, const char* key) {
 }
 } // namespace
 
-// nlohmann's dump writes the shortest text that reads back as the same double, in the C
-// locale's syntax whatever the process locale: the same bytes on every machine and rerun.
-std::string studyRowLine(const StudyRow& r) {
-    ojson j = {{"case", r.index},
-               {"cases", r.cases},
-               {"study", r.study},
-               {"set", r.set},
-               {"record", r.record}};
+void addStudySetJson(ojson& j, const StudyRow& r) {
     if (r.block) {
         j["block"] = studyBlockJson(*r.block);
     } else {
@@ -89,6 +82,17 @@ std::string studyRowLine(const StudyRow& r) {
     j["floor_damping"] = orNull<ojson>(r.floorDamping);
     if (r.level) j["level"] = *r.level;
     if (r.motion) j["motion"] = *r.motion;
+}
+
+// nlohmann's dump writes the shortest text that reads back as the same double, in the C
+// locale's syntax whatever the process locale: the same bytes on every machine and rerun.
+std::string studyRowLine(const StudyRow& r) {
+    ojson j = {{"case", r.index},
+               {"cases", r.cases},
+               {"study", r.study},
+               {"set", r.set},
+               {"record", r.record}};
+    addStudySetJson(j, r);
     if (r.polarity) j["polarity"] = *r.polarity;
     j["measure"] = r.measure;
     j["record_im_g"] = r.recordIntensity;

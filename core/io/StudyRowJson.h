@@ -6,6 +6,8 @@
 
 #include "core/study/StudyRow.h"
 
+#include <nlohmann/json.hpp>
+
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -17,6 +19,11 @@ struct StudyRowError : std::runtime_error {
 };
 
 std::string studyRowLine(const StudyRow& r); // one line, no newline
+// The keys that name a row's parameter set, added to j in their order: the model ("block", or
+// "mu", "tstar", "limit"), "floor_period_s", "floor_damping" (null without a floor filter) and,
+// when the study uses them, "level" and "motion". A row and a fragility set (FragilityText.h)
+// write them alike.
+void addStudySetJson(nlohmann::ordered_json& j, const StudyRow& r);
 // The rows as a results file holds them: each row's line and a newline.
 std::string studyRowsText(const std::vector<StudyRow>& rows);
 // Throws StudyRowError saying which key is missing or wrong: of the wrong type, or out of its
