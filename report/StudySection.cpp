@@ -45,9 +45,7 @@ std::vector<StudyRow> rowsOfRun(StudySpec spec) {
     std::vector<StudyRow> rows;
     try {
         loadStudyRecords(spec);
-        runStudy(spec, {}, [&rows](const std::vector<StudyRow>& block) {
-            rows.insert(rows.end(), block.begin(), block.end());
-        });
+        rows = runStudyRows(spec, {});
     } catch (const std::exception& e) {
         throw ReportError(std::string("study: ") + e.what());
     }

@@ -100,9 +100,7 @@ StudyOutcome runStudyJob(const std::string& json, SweepControl* control) {
         StudyRunOptions options;
         options.threads = allowedCpuCount();
         options.control = control;
-        runStudy(spec, options, [&o](const std::vector<StudyRow>& rows) {
-            o.parsed.insert(o.parsed.end(), rows.begin(), rows.end());
-        });
+        o.parsed = runStudyRows(spec, options);
         o.cancelled = control->isCancelled();
         if (o.cancelled) return o;
         o.rows = studyRowsText(o.parsed); // what File → Save results writes

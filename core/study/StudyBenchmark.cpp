@@ -13,12 +13,9 @@ StudyBenchmark benchmarkStudy(const StudySpec& s, int threads, int repeats) {
     b.threads = std::max(1, threads);
     std::vector<StudyRow> rowsOne, rowsMany;
     const auto pass = [&s](unsigned n, std::vector<StudyRow>& rows) {
-        rows.clear();
         StudyRunOptions o;
         o.threads = n;
-        runStudy(s, o, [&rows](const std::vector<StudyRow>& block) {
-            rows.insert(rows.end(), block.begin(), block.end());
-        });
+        rows = runStudyRows(s, o);
     };
     const PairedTiming t =
         timePaired([&] { pass(1, rowsOne); },

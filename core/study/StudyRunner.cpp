@@ -150,4 +150,12 @@ std::size_t runStudy(const StudySpec& s, const StudyRunOptions& o, const StudyRo
     return written;
 }
 
+std::vector<StudyRow> runStudyRows(const StudySpec& s, const StudyRunOptions& options) {
+    std::vector<StudyRow> rows;
+    runStudy(s, options, [&rows](const std::vector<StudyRow>& block) {
+        rows.insert(rows.end(), block.begin(), block.end());
+    });
+    return rows;
+}
+
 } // namespace kinstab

@@ -39,5 +39,8 @@ using StudyRowSink = std::function<void(const std::vector<StudyRow>&)>;
 // case `done` on. Returns the number of rows handed on; fewer than the shard's cases less `done`
 // only when cancelled.
 std::size_t runStudy(const StudySpec& s, const StudyRunOptions& options, const StudyRowSink& sink);
+// Every row of the run at once, for those that keep them all (the GUI, the report, Python): as
+// many rows as runStudy hands on.
+std::vector<StudyRow> runStudyRows(const StudySpec& s, const StudyRunOptions& options);
 
 } // namespace kinstab

@@ -81,11 +81,7 @@ std::vector<StudyRow> studyRowsOf(const ProjectStudy& ps, unsigned threads) {
     StudyRunOptions options;
     options.threads = threads;
     options.control = &control;
-    const bool finished = runWatchingSignals(control, [&] {
-        runStudy(spec, options, [&rows](const std::vector<StudyRow>& block) {
-            rows.insert(rows.end(), block.begin(), block.end());
-        });
-    });
+    const bool finished = runWatchingSignals(control, [&] { rows = runStudyRows(spec, options); });
     if (!finished) throw py::error_already_set();
     return rows;
 }

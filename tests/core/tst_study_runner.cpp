@@ -35,13 +35,9 @@ StudySpec loaded(const std::string& path) {
 }
 
 std::vector<StudyRow> rowsOfRun(const StudySpec& s, unsigned threads) {
-    std::vector<StudyRow> rows;
     StudyRunOptions o;
     o.threads = threads;
-    runStudy(s, o, [&rows](const std::vector<StudyRow>& b) {
-        rows.insert(rows.end(), b.begin(), b.end());
-    });
-    return rows;
+    return runStudyRows(s, o);
 }
 
 std::string runAll(const StudySpec& s, unsigned threads) {
