@@ -36,9 +36,10 @@ void cosSin(double phi, double& c, double& s) {
 
 Vec3 PlanarRun::rhsSlaved(double tau, const Vec3& z) {
     ++r_.slab.work.accelEvaluations;
-    const Vec2 a = m_.accel(tau);
+    Vec2 a, sl;
+    m_.accelAndSlope(tau, a, sl);
     const double n = m_.normal(tau);
-    const Vec2 dir = slavedDirection(a, m_.accelSlope(tau), n, z[0]);
+    const Vec2 dir = slavedDirection(a, sl, n, z[0]);
     const double speedRate = -mu_ * n - (a.x * dir.x + a.y * dir.y);
     Vec3 f;
     f << speedRate, z[0] * dir.x, z[0] * dir.y;
@@ -119,8 +120,9 @@ PlanarRun::Step PlanarRun::slavedStop(double t0, double hh, const Vec3& z, const
 // The slaved state z accepted at t1, in the full variables; true when the slip is fast enough
 // to go back to the full equations (their first step must resolve the relaxation).
 bool PlanarRun::leaveSlaved(double t1, const Vec3& z, double rhoExit) {
-    const Vec2 a1 = m_.accel(t1);
-    const Vec2 dir = slavedDirection(a1, m_.accelSlope(t1), m_.normal(t1), z[0]);
+    Vec2 a1, sl;
+    m_.accelAndSlope(t1, a1, sl);
+    const Vec2 dir = slavedDirection(a1, sl, m_.normal(t1), z[0]);
     Vec4 y;
     y << z[1], z[2], z[0] * dir.x, z[0] * dir.y;
     moveTo(t1, y);

@@ -38,6 +38,18 @@ public:
         const Patch* patch = patchFor(tau, delta);
         return patch ? estrin16(patch->dc, delta) : closedForm(tau, true);
     }
+    // Both at once, the same bits as the two calls: one patch lookup and one set of powers of the
+    // offset (the onset scans and the slaved slip ask for both at every evaluation).
+    void accelAndSlope(double tau, std::array<double, 2>& a, std::array<double, 2>& s) {
+        double delta = 0.0;
+        if (const Patch* patch = patchFor(tau, delta)) {
+            a = estrin16(patch->c, delta);
+            s = estrin16(patch->dc, delta);
+            return;
+        }
+        a = closedForm(tau, false);
+        s = closedForm(tau, true);
+    }
 
     static constexpr std::size_t kDegree = 15; // the sum is evaluated by a 16-term Estrin scheme
     static constexpr double kMaxTau = 1e7;

@@ -94,24 +94,16 @@ double SlabModel2D::onsetMargin(double tau) const {
 }
 
 double SlabModel2D::onsetMarginSlope(double tau) const {
-    const Vec2 a = accel(tau), s = accelSlope(tau);
+    Vec2 a, s;
+    accelAndSlope(tau, a, s);
     const double m = norm2(a.x, a.y);
     const double dm = m > 0.0 ? (a.x * s.x + a.y * s.y) / m : norm2(s.x, s.y);
     return dm - params_.mu * normalSlope(tau);
 }
 
 void SlabModel2D::onsetMarginAndSlope(double tau, double& g, double& slope) const {
-    // The series' value and slope inline, the same bits as accel() and accelSlope() (the onset
-    // scans ask for both at every evaluation; the out-of-line slope call was a tenth of them).
     Vec2 a, s;
-    if (series_) {
-        const auto av = series_->accel(tau), sv = series_->slope(tau);
-        a = {av[0], av[1]};
-        s = {sv[0], sv[1]};
-    } else {
-        a = accel(tau);
-        s = accelSlope(tau);
-    }
+    accelAndSlope(tau, a, s);
     const double m = norm2(a.x, a.y);
     const double dm = m > 0.0 ? (a.x * s.x + a.y * s.y) / m : norm2(s.x, s.y);
     g = m - params_.mu * normal(tau);

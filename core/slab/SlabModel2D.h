@@ -11,6 +11,7 @@
 #include "core/slab/SinePairSeries.h"
 #include "core/slab/SlabTypes.h"
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -51,7 +52,20 @@ public:
         return {x_.accel(*ax_, tau), ay_ ? y_.accel(*ay_, tau) : 0.0};
     }
     Vec2 accelSlope(double tau) const; // a_h'
-    double normal(double tau) const {  // n = 1 + a_z
+    // a_h and a_h' at once, the same bits as the two calls (the series looked up once: the onset
+    // scans, the slaved slip and its exit ask for both).
+    void accelAndSlope(double tau, Vec2& a, Vec2& s) const {
+        if (series_) {
+            std::array<double, 2> av, sv;
+            series_->accelAndSlope(tau, av, sv);
+            a = {av[0], av[1]};
+            s = {sv[0], sv[1]};
+            return;
+        }
+        a = accel(tau);
+        s = accelSlope(tau);
+    }
+    double normal(double tau) const { // n = 1 + a_z
         if (!az_) return 1.0;
         return 1.0 + z_.accel(*az_, tau);
     }
