@@ -29,6 +29,18 @@ std::string validateRecordedMotion(const Accelerogram& record, double tstar,
 
 namespace {
 std::atomic<long> samplesConstructed{0};
+
+// The least double t >= 0 with t / h >= k as the division rounds (so floor(t / h) >= k). The
+// rounded quotient is monotone in t, and h k lies within an ulp of the boundary, so a few steps
+// of one ulp from h k reach it; 64 bounds the loops far beyond that.
+double leastWithFloor(double k, double h) {
+    double t = h * k;
+    for (int i = 0; i < 64 && !(t / h >= k); ++i)
+        t = std::nextafter(t, std::numeric_limits<double>::infinity());
+    for (int i = 0; i < 64 && t > 0.0 && std::nextafter(t, 0.0) / h >= k; ++i)
+        t = std::nextafter(t, 0.0);
+    return t;
+}
 } // namespace
 
 long RecordSamples::constructed() {
@@ -47,6 +59,9 @@ RecordSamples::RecordSamples(const Accelerogram& record, double tstar) {
     suffixMax_[n - 1] = std::abs(a_[n - 1]);
     for (std::size_t k = n - 1; k-- > 0;)
         suffixMax_[k] = std::max(suffixMax_[k + 1], std::abs(a_[k]));
+    knots_.resize(n);
+    for (std::size_t k = 0; k < n; ++k)
+        knots_[k] = leastWithFloor(static_cast<double>(k), h_);
     ++samplesConstructed;
 }
 
@@ -128,19 +143,17 @@ std::vector<double> RecordedMotion::samples() const {
 
 std::size_t RecordedMotion::interval(double tau) const {
     // floor(tau / h) by a product and a truncation (the division and libm's floor were a tenth
-    // of a planar run with a vertical record); near a knot, where the product's rounding could
-    // land on the other side, by the quotient itself.
+    // of a planar run with a vertical record). The product's rounding differs from the quotient's
+    // by a few ulps, so its truncation is k - 1, k or k + 1 for the quotient's floor k; the knots
+    // (where the quotient's floor steps) settle which, the same bits as the quotient everywhere.
     if (!(tau > 0.0)) return 0;
     const std::size_t last = samples_->size() - 2;
     const double q = tau * samples_->inverseStep();
     if (!(q < static_cast<double>(last) + 1.0)) return last; // beyond the last knot but one
-    auto k = static_cast<std::size_t>(q);
-    const double frac = q - static_cast<double>(k), guard = 1e-9 * (1.0 + q);
-    if (frac < guard || frac > 1.0 - guard) {
-        const double exact = std::floor(tau / h_);
-        k = exact > 0.0 ? static_cast<std::size_t>(exact) : 0;
-    }
-    return std::min(k, last);
+    const auto k = static_cast<std::size_t>(q);
+    if (tau < samples_->knot(k)) return k - 1; // knot(0) = 0 < tau: k > 0 here
+    if (tau >= samples_->knot(k + 1)) return std::min(k + 1, last);
+    return k;
 }
 
 // Inside the record, when lo and the last double before hi fall in one interval, every tau
@@ -207,7 +220,8 @@ double RecordedMotion::displacementChange(double t0, double t1) const {
 double RecordedMotion::segmentEnd(double start) const {
     const double end = endTau();
     if (start >= end) return end + std::max(h_, 2.0 * (start - end)); // a = 0: growing steps
-    const double k = std::floor(std::max(start, 0.0) / h_);
+    // floor(start / h) (interval()'s clamp to the last piece leaves the result at end)
+    const auto k = static_cast<double>(interval(start));
     double next = h_ * (k + 1.0);
     if (next <= start) next = h_ * (k + 2.0); // floor rounded down at a sample time
     return std::min(next, end);

@@ -32,6 +32,12 @@ public:
     double inverseStep() const { return inverseH_; }
     double endTau() const { return endTau_; }
     double peak() const { return suffixMax_.front(); } // max |a|, g
+    // The least tau with floor(tau / h) >= k (the quotient as the division rounds it), k < size():
+    // a time's sample interval follows from the product tau / h estimates and one or two
+    // comparisons with these, without the division (issue 34: every window's ends sit on a
+    // sample time, where the product's rounding could fall either side, and the division's
+    // fallback there was most of the lookup's cost with a vertical record).
+    double knot(std::size_t k) const { return knots_[k]; }
 
     // How many have been built in this process: the tests' observable that a search builds one.
     static long constructed();
@@ -39,6 +45,7 @@ public:
 private:
     std::vector<double> a_;
     std::vector<double> suffixMax_;
+    std::vector<double> knots_;
     double h_ = 1.0;
     double inverseH_ = 1.0;
     double endTau_ = 0.0;

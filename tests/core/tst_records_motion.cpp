@@ -196,9 +196,10 @@ void TestRecordedMotion::zeroAfterEnd() {
     QVERIFY(m.segmentEnd(0.4) > 0.4);
 }
 
-// accel picks the piece by a product with 1/h (faster than the quotient): at every knot, one ulp
-// either side, and random times, its value is bit-identical to the interpolant on the piece
-// floor(tau / h) with the slope (a_{k+1} - a_k) / h, as before that change.
+// accel picks the piece by a product with 1/h and a table of knots (faster than the quotient): at
+// every knot, one and two ulps either side, and random times, its value is bit-identical to the
+// interpolant on the piece floor(tau / h) with the slope (a_{k+1} - a_k) / h, as before that
+// change, and segmentEnd gives the next sample time as it did from that floor.
 void TestRecordedMotion::pieceChosenAsByQuotient() {
     Accelerogram rec;
     rec.dt = 0.01;
@@ -218,7 +219,9 @@ void TestRecordedMotion::pieceChosenAsByQuotient() {
     std::vector<double> times;
     for (std::size_t k = 0; k < a.size(); ++k) {
         const double knot = h * static_cast<double>(k);
-        times.insert(times.end(), {knot, std::nextafter(knot, 0.0), std::nextafter(knot, 1e9)});
+        const double below = std::nextafter(knot, 0.0), above = std::nextafter(knot, 1e9);
+        times.insert(times.end(),
+                     {knot, below, above, std::nextafter(below, 0.0), std::nextafter(above, 1e9)});
     }
     std::uniform_real_distribution<double> tau(0.0, m.endTau());
     for (int i = 0; i < 20000; ++i)
@@ -228,8 +231,15 @@ void TestRecordedMotion::pieceChosenAsByQuotient() {
         if (t < 0.0 || t > m.endTau()) continue;
         QVERIFY2(m.accel(t) == reference(t), qPrintable(QString::number(t, 'g', 17)));
         ++checked;
+        if (t == m.endTau()) continue; // segmentEnd has growing steps from there
+        // The next sample time after t, as segmentEnd had it from the quotient's floor.
+        const double kk = std::floor(t / h);
+        double next = h * (kk + 1.0);
+        if (next <= t) next = h * (kk + 2.0);
+        QVERIFY2(m.segmentEnd(t) == std::min(next, m.endTau()),
+                 qPrintable(QString::number(t, 'g', 17)));
     }
-    QVERIFY(checked > 29000);
+    QVERIFY(checked > 34000);
 }
 
 void TestRecordedMotion::invalidInput() {
