@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/excitation/RecordedMotion.h"
 
+#include "core/base/NextAfter.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -161,7 +163,7 @@ std::size_t RecordedMotion::interval(double tau) const {
 bool RecordedMotion::linearOn(double lo, double hi, LinearPiece& out) const {
     if (!(lo >= 0.0 && hi > lo && hi <= endTau())) return false;
     const std::size_t k = interval(lo);
-    if (interval(std::nextafter(hi, lo)) != k) return false;
+    if (interval(nextAfter(hi, lo)) != k) return false;
     const Piece& p = piece(k);
     out = {p.a, h_ * static_cast<double>(k), p.slope};
     return true;
@@ -249,7 +251,7 @@ Crossings RecordedMotion::crossings(double level, double lo, double hi) const {
     const double fHi = at(hi) - level;
     if ((fLo < 0.0 && fHi > 0.0) || (fLo > 0.0 && fHi < 0.0)) {
         const double t = lo + (hi - lo) * fLo / (fLo - fHi);
-        c.add(std::clamp(t, std::nextafter(lo, hi), std::nextafter(hi, lo)));
+        c.add(std::clamp(t, nextAfter(lo, hi), nextAfter(hi, lo)));
     }
     return c;
 }

@@ -2,6 +2,7 @@
 // The planar run's time line: windows, the time events (onset, lift-off) and the result.
 #include "core/slab/PlanarRun.h"
 
+#include "core/base/NextAfter.h"
 #include "core/numerics/VectorState.h"
 
 #include <algorithm>
@@ -52,7 +53,7 @@ PlanarResult PlanarRun::run() {
             return r_;
         }
         double w1 = std::min(m_.segmentEnd(w0), end);
-        if (!(w1 > w0)) w1 = std::nextafter(w0, end);
+        if (!(w1 > w0)) w1 = nextAfter(w0, end);
         if (window(w0, w1) == Step::Done) return r_;
         w0 = w1;
     }

@@ -4,6 +4,8 @@
 // pieces of one sign of |a_h| - mu n.
 #include "core/slab/PlanarRun.h"
 
+#include "core/base/NextAfter.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -33,7 +35,7 @@ void PlanarRun::scanTimeEvent(const TimeEvent& e, double lo, double hi, std::vec
             // the last sub-interval whose ends were both below 0).
             double inside = 0.0;
             if (!(t == hi && hi > lo)) return;
-            (m_.*e.gAndSlope)(std::nextafter(hi, lo), inside, df);
+            (m_.*e.gAndSlope)(nextAfter(hi, lo), inside, df);
             ++scan.evaluations;
         },
         lo, hi, sub, out, scan, from);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/slab/SlabModel2D.h"
 
+#include "core/base/NextAfter.h"
 #include "core/slab/SlabInputs.h"
 #include <algorithm>
 #include <cmath>
@@ -71,7 +72,7 @@ void SlabModel2D::WindowPiece::enter(const Excitation1D* a, double l, double h) 
         hi = h;
         return;
     }
-    const double next = std::nextafter(l, h);
+    const double next = nextAfter(l, h);
     if (!(next < h) || !a->linearOn(next, h, piece)) return;
     lo = next;
     hi = h;
