@@ -4,6 +4,7 @@
 #include "core/base/NextAfter.h"
 #include "core/slab/SlabInputs.h"
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -64,21 +65,23 @@ double SlabModel2D::normalSlope(double tau) const {
 
 void SlabModel2D::WindowPiece::enter(const Excitation1D* a, double l, double h) {
     lo = hi = 0.0;
+    windowEnd = start = NAN;
     endKnown = false;
-    start = NAN;
     if (!a) return;
-    if (a->linearOn(l, h, piece)) {
-        lo = l;
-        hi = h;
+    // The whole window first, then without the double at either end that reads another piece.
+    const double next = nextAfter(l, h), last = nextAfter(h, l);
+    const std::array<std::array<double, 2>, 4> spans{{{l, h}, {l, last}, {next, h}, {next, last}}};
+    for (const auto& [from, to] : spans) {
+        if (!a->linearOn(from, to, piece)) continue;
+        lo = from;
+        hi = to;
+        windowEnd = h;
+        if (from == l) return;
+        start = l;
+        startAccel = a->accel(l);
+        startSlope = piece.slope; // the window's side: a scan of [l, h) needs the slope into it
         return;
     }
-    const double next = nextAfter(l, h);
-    if (!(next < h) || !a->linearOn(next, h, piece)) return;
-    lo = next;
-    hi = h;
-    start = l;
-    startAccel = a->accel(l);
-    startSlope = piece.slope; // the window's side: a scan of [l, h) needs the slope into it
 }
 
 void SlabModel2D::enterWindow(double lo, double hi) const {

@@ -110,13 +110,17 @@ public:
     bool hasAlongWalls() const { return ay_ != nullptr; }
 
 private:
-    // A component's linear piece on the current window [lo, hi), when it has one, and its value
-    // and slope at hi (the next piece's there), asked of the component on first use. A window that
-    // starts at a sample time the component reads from the piece before (floor(tau / h) rounds
-    // down there: 7 % of RSN68's samples at t* 0.099) is the piece from the next double on; at its
-    // start the value is the component's, the slope the piece's (the window's side, for scans).
+    // A component's linear piece on the current window [l, h), when it has one, and its value
+    // and slope at h (the next piece's there), asked of the component on first use. A window's
+    // end that is a sample time can read the piece after it from the double before on
+    // (floor(tau / h) rounds up there), and a start the piece before (rounds down: either for
+    // 7 % of RSN68's samples at t* 0.099): the piece then covers the window less that double,
+    // which is read from the component (without this, such windows read every value from it).
+    // At a start so cut the value is the component's, the slope the piece's (the window's side,
+    // for scans).
     struct WindowPiece {
-        double lo = 0, hi = 0; // empty: covers nothing
+        double lo = 0, hi = 0;  // the piece covers [lo, hi); empty: covers nothing
+        double windowEnd = NAN; // h, whose value is kept; NaN: no piece
         LinearPiece piece;
         double start = NAN, startAccel = 0, startSlope = 0; // NaN: lo is the window's start
         mutable bool endKnown = false;
@@ -124,19 +128,19 @@ private:
         bool covers(double tau) const { return tau >= lo && tau < hi; }
         double accel(const Excitation1D& a, double tau) const {
             if (covers(tau)) return piece.accel(tau);
-            if (tau == hi && hi > lo) return end(a).endAccel;
+            if (tau == windowEnd) return end(a).endAccel;
             return tau == start ? startAccel : a.accel(tau);
         }
         double slope(const Excitation1D& a, double tau) const {
             if (covers(tau)) return piece.slope;
-            if (tau == hi && hi > lo) return end(a).endSlope;
+            if (tau == windowEnd) return end(a).endSlope;
             return tau == start ? startSlope : a.accelSlope(tau);
         }
         const WindowPiece& end(const Excitation1D& a) const {
             if (!endKnown) {
                 endKnown = true;
-                endAccel = a.accel(hi);
-                endSlope = a.accelSlope(hi);
+                endAccel = a.accel(windowEnd);
+                endSlope = a.accelSlope(windowEnd);
             }
             return *this;
         }
