@@ -14,16 +14,6 @@ namespace kinstab::report {
 
 namespace {
 
-void verticalLine(QPainter& p, const PlotFrame& fr, double x, const QColor& c, Qt::PenStyle style) {
-    const QRectF plot = fr.plot();
-    const double px = fr.mapX(x);
-    if (px < plot.left() || px > plot.right()) return;
-    QPen pen = fr.scale().pen(c, 0.3);
-    pen.setStyle(style);
-    p.setPen(pen);
-    p.drawLine(QPointF(px, plot.top()), QPointF(px, plot.bottom()));
-}
-
 // The γ axis's ticks: up to the largest finite γ plus 8 % headroom (at least 0.001).
 std::vector<double> sliceTicks(const SliceData& s) {
     double gMax = 0;
@@ -59,14 +49,13 @@ std::vector<LegendEntry> paintMarks(QPainter& p, const PlotFrame& fr, const Slic
                                     const std::vector<CodeMark>& codes) {
     std::vector<LegendEntry> legend;
     if (s.aCrit) {
-        verticalLine(p, fr, *s.aCrit, QColor(200, 30, 30), Qt::SolidLine);
+        fr.verticalLine(p, *s.aCrit, QColor(200, 30, 30), Qt::SolidLine);
         legend.push_back({QStringLiteral("A_crit = %1 g").arg(accelG(*s.aCrit)),
                           QColor(200, 30, 30), Qt::SolidLine});
     }
     for (const CodeMark& c : codes) {
-        verticalLine(p, fr, c.ratio, c.colour, Qt::DashLine);
-        legend.push_back({QStringLiteral("%1: %2").arg(c.label).arg(c.ratio, 0, 'f', 3), c.colour,
-                          Qt::DashLine});
+        fr.verticalLine(p, c.ratio, c.colour, Qt::DashLine);
+        legend.push_back(codeRatioEntry(c.label, c.ratio, c.colour));
     }
     return legend;
 }
