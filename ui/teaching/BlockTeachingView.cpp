@@ -91,7 +91,7 @@ QWidget* BlockTeachingView::buildSidePanel() {
         player_->seek(item->data(Qt::UserRole).toDouble());
     });
     v->addWidget(events_, 1);
-    return sideScroll(side.widget, this);
+    return sideScroll(side.widget);
 }
 
 bool BlockTeachingView::applyPreset(const QString& id) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/teaching/SidePanel.h"
 
+#include "ui/Scrollable.h"
+
 #include <QComboBox>
 #include <QLabel>
 #include <QScrollArea>
@@ -38,11 +40,8 @@ QLabel* outcomeLabel(QWidget* parent) {
     return label;
 }
 
-QWidget* sideScroll(QWidget* column, QWidget* parent) {
-    auto* scroll = new QScrollArea(parent);
-    scroll->setWidget(column);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
+QWidget* sideScroll(QWidget* column) {
+    auto* scroll = static_cast<QScrollArea*>(scrollable(column));
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     scroll->setFixedWidth(350);
     return scroll;

@@ -24,8 +24,9 @@ QComboBox* presetBox(QWidget* parent, const QString& toolTip);
 QLabel* captionLabel(QWidget* parent);
 // The run's outcome: wrapped rich text.
 QLabel* outcomeLabel(QWidget* parent);
-// The column in a frameless scroll area 350 px wide, scrolling only vertically: a taller panel
-// (more fields, large text) must not push the play bar below the window.
-QWidget* sideScroll(QWidget* column, QWidget* parent);
+// The column in a frameless scroll area (ui/Scrollable.h) 350 px wide, scrolling only vertically:
+// a taller panel (more fields, large text) must not push the play bar below the window. The view
+// puts it in its layout.
+QWidget* sideScroll(QWidget* column);
 
 } // namespace kinstab::ui

@@ -103,7 +103,7 @@ QWidget* TeachingView::buildSidePanel() {
     v->addLayout(buildExportRow(side.widget));
     // Scrolls on its own: a taller panel (the planar model's extra fields, large text) must
     // not push the play bar below the window.
-    side_ = sideScroll(side.widget, this);
+    side_ = sideScroll(side.widget);
     return side_;
 }
 
