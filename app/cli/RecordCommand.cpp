@@ -33,6 +33,18 @@ std::string spectraCsv(const AmplitudeSpectrum& ground, const AmplitudeSpectrum*
     return out.str();
 }
 
+// Sa at the building's period: --sa-period, else the floor filter's period when given.
+std::optional<double> saPeriodFromFlags(const Args& args,
+                                        const std::optional<FloorFilterParams>& filter) {
+    if (!args.has("sa-period"))
+        return filter ? std::optional<double>(filter->period) : std::nullopt;
+    const double saPeriod = args.number("sa-period", 1.0);
+    const FloorFilterParams p{saPeriod, kSpectralDamping, 0.0};
+    if (const std::string e = validateFloorFilter(p); !e.empty())
+        throw UsageError("--sa-period " + args.text("sa-period") + ": " + e);
+    return saPeriod;
+}
+
 } // namespace
 
 int runRecord(const ArgList& argv) {
@@ -48,15 +60,7 @@ int runRecord(const ArgList& argv) {
 
     nlohmann::json j;
     j["record"] = accelerogramJson(ground);
-    // Sa at the building's period: --sa-period, else the floor filter's period when given.
-    std::optional<double> saPeriod = filter ? std::optional<double>(filter->period) : std::nullopt;
-    if (args.has("sa-period")) {
-        saPeriod = args.number("sa-period", 1.0);
-        const FloorFilterParams p{*saPeriod, kSpectralDamping, 0.0};
-        if (const std::string e = validateFloorFilter(p); !e.empty())
-            throw UsageError("--sa-period " + args.text("sa-period") + ": " + e);
-    }
-    j["metrics"] = recordMetricsJson(recordMetrics(ground, saPeriod));
+    j["metrics"] = recordMetricsJson(recordMetrics(ground, saPeriodFromFlags(args, filter)));
     const AmplitudeSpectrum sg = amplitudeSpectrum(ground.samples, ground.dt);
     j["spectrum"] = spectrumJson(sg, static_cast<std::size_t>(count));
     j["floor"] = nullptr;

@@ -56,25 +56,10 @@ QByteArray readProjectBytes(const std::string& path) {
     return f.readAll();
 }
 
-} // namespace
-
-int writeReport(const ArgList& argv) {
-    const Args args(argv, {"project", "o", "page", "figure-grid", "sections", "units"});
+// The project of --project with --sections and --units applied; a bad value: exit 2 naming
+// the flag.
+report::ReportSource reportSource(const Args& args, const std::string& path) {
     using namespace kinstab::report;
-    const auto t0 = std::chrono::steady_clock::now();
-    if (!args.has("project")) throw UsageError("--project FILE is required");
-    if (!args.has("o")) throw UsageError("-o FILE.pdf is required");
-    const std::string path = args.text("project");
-    const std::string out = args.text("o");
-    const PaperSize paper =
-        *paperSizeFromName(QString::fromStdString(args.choice("page", {"a4", "letter"}, "a4")));
-    AnalysisOptions options;
-    options.figureGrid = args.integer("figure-grid", 41);
-    if (options.figureGrid < 5 || options.figureGrid > 201)
-        throw UsageError("--figure-grid " + args.text("figure-grid") + ": must be 5 to 201");
-
-    checkOutputPath("o", out); // an empty name or a missing folder: exit 2 before any work
-
     ReportSource source;
     if (args.has("sections")) {
         try {
@@ -94,14 +79,41 @@ int writeReport(const ArgList& argv) {
         source.project.units = unitSystemFromName(args.choice("units", {"si", "us"}, "si"));
     source.fileName = QString::fromStdString(path);
     source.fileContents = readProjectBytes(path);
-    ReportAnalysis analysis;
+    return source;
+}
+
+// The report's analyses; a bad value in the project: exit 2 naming --project.
+report::ReportAnalysis analyse(const Project& project, const report::AnalysisOptions& options,
+                               const std::string& path) {
     try {
-        analysis = computeReportAnalysis(source.project, options);
+        return report::computeReportAnalysis(project, options);
     } catch (const std::invalid_argument& e) { // InputError: a bad value in the project
         throw UsageError("--project " + path + ": " + e.what());
     } catch (const ProjectError& e) {
         throw UsageError("--project " + path + ": " + e.what());
     }
+}
+
+} // namespace
+
+int writeReport(const ArgList& argv) {
+    const Args args(argv, {"project", "o", "page", "figure-grid", "sections", "units"});
+    using namespace kinstab::report;
+    const auto t0 = std::chrono::steady_clock::now();
+    if (!args.has("project")) throw UsageError("--project FILE is required");
+    if (!args.has("o")) throw UsageError("-o FILE.pdf is required");
+    const std::string path = args.text("project");
+    const std::string out = args.text("o");
+    const PaperSize paper =
+        *paperSizeFromName(QString::fromStdString(args.choice("page", {"a4", "letter"}, "a4")));
+    AnalysisOptions options;
+    options.figureGrid = args.integer("figure-grid", 41);
+    if (options.figureGrid < 5 || options.figureGrid > 201)
+        throw UsageError("--figure-grid " + args.text("figure-grid") + ": must be 5 to 201");
+
+    checkOutputPath("o", out); // an empty name or a missing folder: exit 2 before any work
+    const ReportSource source = reportSource(args, path);
+    const ReportAnalysis analysis = analyse(source.project, options, path);
 
     const auto app = ensureGuiApplication();
     QByteArray pdf;

@@ -22,31 +22,19 @@
 
 namespace kinstab::cli {
 
-int runSimulate(const ArgList& argv) {
-    std::set<std::string> flags = modelFlagNames();
-    flags.insert({"amplitude", "frequency", "history", "history-step", "scale-factor", "record-y"});
+namespace {
+
+// --record's flags: the record reader's and --critical's search.
+std::set<std::string> recordOnlyFlags() {
     std::set<std::string> recordFlags = recordReadFlagNames();
     recordFlags.merge(searchFlagNames()); // --critical's search, with --record only
-    flags.insert(recordFlags.begin(), recordFlags.end());
-    const Args args(argv, flags, {"events", "critical"});
-    if (args.has("record") && !isPlanar(args)) return runSimulateRecord(args);
-    if (args.has("record")) return runSimulatePlanarRecord(args);
-    recordFlags.insert({"scale-factor", "record-y"});
-    for (const std::string& f : recordFlags)
-        if (args.has(f)) throw UsageError("--" + f + " " + args.text(f) + ": needs --record FILE");
-    if (args.has("critical")) throw UsageError("--critical: needs --record FILE");
-    args.requiredNumber("amplitude");
-    args.requiredNumber("frequency");
-    const double amplitude = args.input(kAmplitudeInput);
-    const double frequency = args.input(kFrequencyInput);
+    return recordFlags;
+}
+
+// The 1-DOF slab under an enveloped sine: the result as JSON, --events, --history.
+int runSimulateSlab1D(const Args& args, double amplitude, double frequency, double historyStep) {
     const bool wantHistory = args.has("history");
-    const double historyStep = args.number("history-step", 0.05);
-    if (historyStep <= 0.0)
-        throw UsageError("--history-step " + args.text("history-step") + ": must be > 0");
-
-    if (isPlanar(args)) return runSimulatePlanar(args, amplitude, frequency, historyStep);
     const Slab1DCase c = slab1DCaseFromFlags(args);
-
     if (const InputProblem p = checkRunWork(c, amplitude, {frequency, 1.0, solverCostFactor(c)});
         !p.empty())
         throw UsageError("--frequency " + args.text("frequency") + ": " + p.why);
@@ -78,6 +66,31 @@ int runSimulate(const ArgList& argv) {
     }
     std::cout << jsonText(j, 2) << "\n";
     return 0;
+}
+
+} // namespace
+
+int runSimulate(const ArgList& argv) {
+    std::set<std::string> flags = modelFlagNames();
+    flags.insert({"amplitude", "frequency", "history", "history-step", "scale-factor", "record-y"});
+    std::set<std::string> recordFlags = recordOnlyFlags();
+    flags.insert(recordFlags.begin(), recordFlags.end());
+    const Args args(argv, flags, {"events", "critical"});
+    if (args.has("record") && !isPlanar(args)) return runSimulateRecord(args);
+    if (args.has("record")) return runSimulatePlanarRecord(args);
+    recordFlags.insert({"scale-factor", "record-y"});
+    for (const std::string& f : recordFlags)
+        if (args.has(f)) throw UsageError("--" + f + " " + args.text(f) + ": needs --record FILE");
+    if (args.has("critical")) throw UsageError("--critical: needs --record FILE");
+    args.requiredNumber("amplitude");
+    args.requiredNumber("frequency");
+    const double amplitude = args.input(kAmplitudeInput);
+    const double frequency = args.input(kFrequencyInput);
+    const double historyStep = args.number("history-step", 0.05);
+    if (historyStep <= 0.0)
+        throw UsageError("--history-step " + args.text("history-step") + ": must be > 0");
+    if (isPlanar(args)) return runSimulatePlanar(args, amplitude, frequency, historyStep);
+    return runSimulateSlab1D(args, amplitude, frequency, historyStep);
 }
 
 } // namespace kinstab::cli

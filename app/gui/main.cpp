@@ -9,10 +9,12 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QIcon>
+#include <QSize>
 
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 
 namespace {
 
@@ -81,6 +83,52 @@ void whileStarting(QtMsgType type, const QMessageLogContext& context, const QStr
     std::_Exit(kNoDisplay);
 }
 
+// --size: the screenshot window's size (default 1280x800); nullopt, after saying why, when it is
+// not WxH within 640x480 to 7680x4320.
+std::optional<QSize> screenshotSize(const QCommandLineParser& parser) {
+    if (!parser.isSet(kSize)) return QSize(1280, 800);
+    const QStringList wh = parser.value(kSize).split('x');
+    const QSize size = wh.size() == 2 ? QSize(wh[0].toInt(), wh[1].toInt()) : QSize();
+    if (size.width() < 640 || size.height() < 480 || size.width() > 7680 || size.height() > 4320) {
+        std::fprintf(stderr, "kinstab: --size %s: must be WxH, 640x480 to 7680x4320\n",
+                     qPrintable(parser.value(kSize)));
+        return std::nullopt;
+    }
+    return size;
+}
+
+// --grid: N by N points (0: the project's own); nullopt, after saying why, outside 2..400.
+std::optional<int> screenshotGrid(const QCommandLineParser& parser) {
+    if (!parser.isSet(kGrid)) return 0;
+    bool ok = false;
+    const int grid = parser.value(kGrid).toInt(&ok);
+    if (!ok || grid < 2 || grid > 400) {
+        std::fprintf(stderr, "kinstab: --grid %s: must be a whole number 2 to 400\n",
+                     qPrintable(parser.value(kGrid)));
+        return std::nullopt;
+    }
+    return grid;
+}
+
+// --screenshot: the scenario's step, else the window after the sweep. The exit status when a
+// flag is refused (2), else 0 and the image follows from the event loop.
+int startScreenshot(kinstab::ui::MainWindow& window, const QCommandLineParser& parser) {
+    if (parser.isSet(kScenario)) {
+        const QString e =
+            kinstab::ui::screenshotScenario(window, parser.value(kScenario), parser.value(kShot));
+        if (e.isEmpty()) return 0;
+        std::fprintf(stderr, "kinstab: %s\n", qPrintable(e));
+        return 2;
+    }
+    const std::optional<QSize> size = screenshotSize(parser);
+    if (!size) return 2;
+    const std::optional<int> grid = screenshotGrid(parser);
+    if (!grid) return 2;
+    kinstab::ui::screenshotAfterSweep(window, parser.value(kShot), *size, *grid,
+                                      parser.value(kTab));
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -105,37 +153,7 @@ int main(int argc, char** argv) {
     if (const QStringList files = parser.positionalArguments(); !files.isEmpty()) {
         if (!window.openProject(files.front(), parser.isSet(kShot))) return 2;
     }
-    if (parser.isSet(kShot) && parser.isSet(kScenario)) {
-        const QString e =
-            kinstab::ui::screenshotScenario(window, parser.value(kScenario), parser.value(kShot));
-        if (!e.isEmpty()) {
-            std::fprintf(stderr, "kinstab: %s\n", qPrintable(e));
-            return 2;
-        }
-    } else if (parser.isSet(kShot)) {
-        QSize size(1280, 800);
-        if (parser.isSet(kSize)) {
-            const QStringList wh = parser.value(kSize).split('x');
-            size = wh.size() == 2 ? QSize(wh[0].toInt(), wh[1].toInt()) : QSize();
-            if (size.width() < 640 || size.height() < 480 || size.width() > 7680 ||
-                size.height() > 4320) {
-                std::fprintf(stderr, "kinstab: --size %s: must be WxH, 640x480 to 7680x4320\n",
-                             qPrintable(parser.value(kSize)));
-                return 2;
-            }
-        }
-        int grid = 0;
-        if (parser.isSet(kGrid)) {
-            bool ok = false;
-            grid = parser.value(kGrid).toInt(&ok);
-            if (!ok || grid < 2 || grid > 400) {
-                std::fprintf(stderr, "kinstab: --grid %s: must be a whole number 2 to 400\n",
-                             qPrintable(parser.value(kGrid)));
-                return 2;
-            }
-        }
-        kinstab::ui::screenshotAfterSweep(window, parser.value(kShot), size, grid,
-                                          parser.value(kTab));
-    }
+    if (parser.isSet(kShot))
+        if (const int status = startScreenshot(window, parser); status != 0) return status;
     return QApplication::exec();
 }

@@ -2,6 +2,7 @@
 #include "core/excitation/EnvelopeFitObjective.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace kinstab {
@@ -58,16 +59,14 @@ void fillDecays(const FitPeaks& p, double rate, std::vector<double>& out, std::s
     }
 }
 
-} // namespace
-
 // e = exp(-alpha t) - exp(-beta t) with w = beta - alpha >= 1e-3 alpha: the difference loses at
 // most -log10(1e-3 alpha t) digits, 5 at the first peaks of a slow envelope, 1e-11 of e (and
 // nothing of the sums). d = de/dx, de/dz's y-part; dd = the second derivatives (in y = ln r,
 // turned to z below). The derivatives are written without the difference where it matters.
-FitPoint evaluateFit(const FitPeaks& p, double x, double z) {
-    const double alpha = std::exp(x), w = alpha * ratioOf(z), beta = alpha + w;
-    // ee, ep, <e,dx>, <e,dy>, <p,dx>, <p,dy>, <dx,dx>, <dx,dy>, <dy,dy>, <p,dd..>, <e,dd..>
-    double s[15] = {};
+// The sums: ee, ep, <e,dx>, <e,dy>, <p,dx>, <p,dy>, <dx,dx>, <dx,dy>, <dy,dy>, <p,dd..>, <e,dd..>
+using PeakSums = std::array<double, 15>;
+
+PeakSums peakSums(const FitPeaks& p, double alpha, double w, double beta) {
     const std::size_t n = p.time.size();
     thread_local std::vector<double> decays;
     decays.resize(2 * n);
@@ -93,8 +92,30 @@ FitPoint evaluateFit(const FitPeaks& p, double x, double z) {
         add(q + 1, pair[1]);
     }
     if (q < n) add(q, pair[0]);
+    PeakSums s{};
     for (int k = 0; k < 15; ++k)
-        s[k] = pair[0][k] + pair[1][k];
+        s[static_cast<std::size_t>(k)] = pair[0][k] + pair[1][k];
+    return s;
+}
+
+// f_i = -2 c N_i + c^2 D_i with N_i = <p,d_i>, D_i = 2 <e,d_i>; f_ij = -2 (N_i - c D_i)
+// (N_j - c D_j) / D + c (c D_ij - 2 N_ij) with D_ij = 2 (<d_i,d_j> + <e,d_ij>); in (x, y).
+void gradientAndHessian(const PeakSums& s, double c, FitPoint& r) {
+    const double D = s[0];
+    const double u[2] = {s[4] - 2.0 * c * s[2], s[5] - 2.0 * c * s[3]};
+    r.g = {-2.0 * c * s[4] + 2.0 * c * c * s[2], -2.0 * c * s[5] + 2.0 * c * c * s[3]};
+    for (std::size_t k = 0; k < 3; ++k) {
+        const std::size_t i = k == 2 ? 1 : 0, j = k == 0 ? 0 : 1;
+        const double dij = 2.0 * (s[6 + k] + s[12 + k]);
+        r.h[k] = -2.0 * u[i] * u[j] / D + c * (c * dij - 2.0 * s[9 + k]);
+    }
+}
+
+} // namespace
+
+FitPoint evaluateFit(const FitPeaks& p, double x, double z) {
+    const double alpha = std::exp(x), w = alpha * ratioOf(z), beta = alpha + w;
+    const PeakSums s = peakSums(p, alpha, w, beta);
     FitPoint r{x, z};
     const double D = s[0], N = s[1];
     if (!(D > 0.0) || !(N > 0.0)) { // no positive envelope fits: f = pp, flat
@@ -104,15 +125,7 @@ FitPoint evaluateFit(const FitPeaks& p, double x, double z) {
     const double c = N / D;
     r.scale = c;
     r.sse = p.sumSquares - c * N;
-    // f_i = -2 c N_i + c^2 D_i with N_i = <p,d_i>, D_i = 2 <e,d_i>; f_ij = -2 (N_i - c D_i)
-    // (N_j - c D_j) / D + c (c D_ij - 2 N_ij) with D_ij = 2 (<d_i,d_j> + <e,d_ij>).
-    const double u[2] = {s[4] - 2.0 * c * s[2], s[5] - 2.0 * c * s[3]};
-    r.g = {-2.0 * c * s[4] + 2.0 * c * c * s[2], -2.0 * c * s[5] + 2.0 * c * c * s[3]};
-    for (int k = 0; k < 3; ++k) {
-        const int i = k == 2 ? 1 : 0, j = k == 0 ? 0 : 1;
-        const double dij = 2.0 * (s[6 + k] + s[12 + k]);
-        r.h[static_cast<std::size_t>(k)] = -2.0 * u[i] * u[j] / D + c * (c * dij - 2.0 * s[9 + k]);
-    }
+    gradientAndHessian(s, c, r);
     if (z < 0.0) { // from y = ln(1 + z): dy/dz = 1 / r, d2y/dz2 = -1 / r^2
         const double inv = 1.0 / ratioOf(z);
         r.h[2] = r.h[2] * inv * inv - r.g[1] * inv * inv;

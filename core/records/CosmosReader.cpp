@@ -66,9 +66,8 @@ void describe(Accelerogram& a, const RecordText& text, std::size_t textLines) {
     }
 }
 
-} // namespace
-
-Accelerogram parseCosmos(const RecordText& text) {
+// The first line's "(Format v01.20 with 13 text lines)": the text header's line count.
+std::size_t textHeaderLines(const RecordText& text) {
     if (text.skipBlank(0) == text.size()) text.failFile("empty file: no COSMOS header");
     static const std::regex first(R"(\(Format\s+v\S*\s+with\s+(\d+)\s+text lines\))",
                                   std::regex::icase);
@@ -79,21 +78,30 @@ Accelerogram parseCosmos(const RecordText& text) {
     const std::size_t textLines = countAt(text, 0, m[1].str(), "text line count");
     if (textLines < 1 || textLines + 3 > text.size())
         text.fail(0, "file ends inside the text header");
-    Accelerogram a;
-    a.sourceFile = text.source();
-    a.format = std::string("COSMOS ") +
-               (text.line(0).find("Uncorrected") != std::string::npos ? "V1" : "V2");
-    describe(a, text, textLines);
+    return textLines;
+}
 
-    std::size_t i = textLines;
-    i += 1 + blockSize(text, i, "integer").second;
-    const std::vector<double> real = realHeader(text, i);
+// The line after the comment block that may start at line i ("N Comment line(s)").
+std::size_t afterComments(const RecordText& text, std::size_t i) {
     static const std::regex comments(R"(^\s*(\d+)\s+Comment line)", std::regex::icase);
+    std::smatch m;
     const std::string commentLine = i < text.size() ? text.header(i) : std::string();
     if (std::regex_search(commentLine, m, comments))
         i += 1 + countAt(text, i, m[1].str(), "comment line count");
+    return i;
+}
+
+// "N acceleration pts, ..., units=..., Format=(...)": what the first data block holds.
+struct DataHeader {
+    std::size_t npts = 0;
+    AccelUnit unit{};
+    FixedFormat format{};
+};
+
+DataHeader dataHeader(const RecordText& text, std::size_t i) {
     static const std::regex data(R"(^\s*(\d+)\s+(\S+)\s+pts.*units\s*=\s*([^(,]*))",
                                  std::regex::icase);
+    std::smatch m;
     if (i >= text.size()) text.fail(text.size() - 1, "file ends before the data header line");
     const std::string dataLine = text.header(i);
     if (!std::regex_search(dataLine, m, data))
@@ -109,18 +117,42 @@ Accelerogram parseCosmos(const RecordText& text) {
         formatAt == std::string::npos ? std::nullopt
                                       : parseFortranFormat(text.line(i).substr(formatAt));
     if (!format) text.fail(i, "no Fortran data format such as 'Format=(1E15.6)'");
-    if (real.size() < 64 || real[61] == kUnknown || !(real[61] > 0.0))
-        text.fail(i, "sample interval (real header value 62, ms) is missing or unknown");
-    a.dt = real[61] / 1000.0;
-    a.fileUnit = *unit;
+    return {npts, *unit, *format};
+}
+
+// The samples after the data header at line i, in g; no more values than it announces.
+std::vector<double> samples(const RecordText& text, std::size_t i, const DataHeader& h) {
     std::size_t next = 0;
-    a.samples = readFixedValues(text, i + 1, npts, *format, next);
+    std::vector<double> values = readFixedValues(text, i + 1, h.npts, h.format, next);
     next = text.skipBlank(next);
     if (next < text.size() && parseNumber(splitWhitespace(text.line(next)).front()))
         text.fail(next,
-                  "more values than the " + std::to_string(npts) + " the data header announces");
-    for (double& x : a.samples)
-        x *= gPerUnit(a.fileUnit);
+                  "more values than the " + std::to_string(h.npts) + " the data header announces");
+    for (double& x : values)
+        x *= gPerUnit(h.unit);
+    return values;
+}
+
+} // namespace
+
+Accelerogram parseCosmos(const RecordText& text) {
+    const std::size_t textLines = textHeaderLines(text);
+    Accelerogram a;
+    a.sourceFile = text.source();
+    a.format = std::string("COSMOS ") +
+               (text.line(0).find("Uncorrected") != std::string::npos ? "V1" : "V2");
+    describe(a, text, textLines);
+
+    std::size_t i = textLines;
+    i += 1 + blockSize(text, i, "integer").second;
+    const std::vector<double> real = realHeader(text, i);
+    i = afterComments(text, i);
+    const DataHeader header = dataHeader(text, i);
+    if (real.size() < 64 || real[61] == kUnknown || !(real[61] > 0.0))
+        text.fail(i, "sample interval (real header value 62, ms) is missing or unknown");
+    a.dt = real[61] / 1000.0;
+    a.fileUnit = header.unit;
+    a.samples = samples(text, i, header);
     if (real[63] != kUnknown)
         a.headerPeak = real[63] * gPerUnit(a.fileUnit); // real #64: peak, data units
     return a;

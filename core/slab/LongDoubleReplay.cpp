@@ -102,67 +102,101 @@ template <class F> Real secant(F&& f, Real x1) {
     return x1;
 }
 
+// The slip state since the last onset, reversal or stick (v = 0 there), carried from event to
+// event; each event's time is solved again from it in long double.
+class EventReplay {
+public:
+    EventReplay(const Replay& r, ReplayResult& out) : r_(r), out_(out) {}
+
+    // The event's time in long double (lift-off is no 1-DOF event: the caller refuses it).
+    Real replay(const SlabEvent& e) {
+        switch (e.kind) {
+        case EventKind::SlipOnset:
+            return onset(e);
+        case EventKind::Stick:
+        case EventKind::Reversal:
+            return stopOrReverse(e);
+        case EventKind::Collapse:
+            return collapse(e);
+        case EventKind::Stable:
+        case EventKind::DurationCap:
+            return end(e);
+        case EventKind::LiftOff:
+            break;
+        }
+        return std::numeric_limits<Real>::quiet_NaN();
+    }
+
+private:
+    Real xAt(Real h) const {
+        return x0_ - 0.5L * s_ * r_.mu() * h * h - r_.dxOverH2(t0_, h) * h * h;
+    }
+    // |a| = mu with a against the slip: sign(a) = -s.
+    Real onset(const SlabEvent& e) {
+        const int sgn = -e.direction;
+        const Real tau = secant([&](Real t) { return sgn * r_.accel(t) - r_.mu(); }, e.tau);
+        t0_ = tau;
+        x0_ = x_;
+        s_ = e.direction;
+        return tau;
+    }
+    // v(t0 + h) / h = -s mu - dv / h: the trivial root h = 0 divided out.
+    Real stopOrReverse(const SlabEvent& e) {
+        const Real hGuess = static_cast<Real>(e.tau) - t0_;
+        const Real h =
+            hGuess <= 0.0L
+                ? 0.0L
+                : secant([&](Real u) { return -s_ * r_.mu() - r_.dvOverH(t0_, u); }, hGuess);
+        const Real tau = t0_ + h;
+        x_ = xAt(h);
+        t0_ = tau;
+        x0_ = x_;
+        s_ = e.kind == EventKind::Stick ? 0 : e.direction;
+        return tau;
+    }
+    Real collapse(const SlabEvent& e) {
+        const Real h = secant([&](Real u) { return s_ * xAt(u) - r_.limit(); },
+                              static_cast<Real>(e.tau) - t0_);
+        const Real tau = t0_ + h;
+        out_.outcome = Outcome::Collapsed;
+        out_.tauC = tau;
+        return tau;
+    }
+    Real end(const SlabEvent& e) {
+        const Real tau = e.tau;
+        if (s_ != 0) x_ = xAt(tau - t0_);
+        out_.outcome = Outcome::Stable;
+        out_.residualDelta = x_;
+        return tau;
+    }
+
+    const Replay& r_;
+    ReplayResult& out_;
+    Real t0_ = 0, x0_ = 0, x_ = 0;
+    int s_ = 0;
+};
+
+// Whether the long double time stays near the double one; the largest shift is kept.
+bool nearGuess(ReplayResult& out, Real tau, double guess) {
+    const Real shift = std::abs(tau - static_cast<Real>(guess));
+    out.maxShift = std::max(out.maxShift, shift);
+    return shift <= 1e-6L * (1.0L + std::abs(tau));
+}
+
 } // namespace
 
 ReplayResult replayInLongDouble(const EnvelopedSine& a, const SlabParams& params,
                                 const std::vector<SlabEvent>& events) {
     ReplayResult out;
     const Replay r(a, params);
-    Real t0 = 0, x0 = 0, x = 0;
-    int s = 0;
-    // The slip state from the last onset or reversal (v = 0 there).
-    auto xAt = [&](Real h) { return x0 - 0.5L * s * r.mu() * h * h - r.dxOverH2(t0, h) * h * h; };
-    auto shifted = [&](Real tau, double guess) {
-        const Real shift = std::abs(tau - static_cast<Real>(guess));
-        out.maxShift = std::max(out.maxShift, shift);
-        return shift <= 1e-6L * (1.0L + std::abs(tau));
-    };
+    EventReplay state(r, out);
     for (const SlabEvent& e : events) {
-        Real tau = e.tau;
-        switch (e.kind) {
-        case EventKind::SlipOnset: {
-            // |a| = mu with a against the slip: sign(a) = -s.
-            const int sgn = -e.direction;
-            tau = secant([&](Real t) { return sgn * r.accel(t) - r.mu(); }, tau);
-            t0 = tau;
-            x0 = x;
-            s = e.direction;
-            break;
-        }
-        case EventKind::Stick:
-        case EventKind::Reversal: {
-            // v(t0 + h) / h = -s mu - dv / h: the trivial root h = 0 divided out.
-            const Real hGuess = static_cast<Real>(e.tau) - t0;
-            const Real h =
-                hGuess <= 0.0L
-                    ? 0.0L
-                    : secant([&](Real u) { return -s * r.mu() - r.dvOverH(t0, u); }, hGuess);
-            tau = t0 + h;
-            x = xAt(h);
-            t0 = tau;
-            x0 = x;
-            s = e.kind == EventKind::Stick ? 0 : e.direction;
-            break;
-        }
-        case EventKind::Collapse: {
-            const Real h = secant([&](Real u) { return s * xAt(u) - r.limit(); },
-                                  static_cast<Real>(e.tau) - t0);
-            tau = t0 + h;
-            out.outcome = Outcome::Collapsed;
-            out.tauC = tau;
-            break;
-        }
-        case EventKind::Stable:
-        case EventKind::DurationCap:
-            if (s != 0) x = xAt(tau - t0);
-            out.outcome = Outcome::Stable;
-            out.residualDelta = x;
-            break;
-        case EventKind::LiftOff:
+        if (e.kind == EventKind::LiftOff) {
             out.failure = "lift-off is not a 1-DOF event";
             return out;
         }
-        if (!std::isfinite(tau) || !shifted(tau, e.tau)) {
+        const Real tau = state.replay(e);
+        if (!std::isfinite(tau) || !nearGuess(out, tau, e.tau)) {
             out.failure = eventKindName(e.kind) + " at tau " + std::to_string(e.tau) +
                           " moved to " + std::to_string(static_cast<double>(tau));
             return out;

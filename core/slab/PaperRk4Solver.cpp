@@ -65,6 +65,18 @@ private:
     }
     std::optional<double> slipTime(double tPrev, double tNow);
     std::optional<double> stickTime(double tPrev, double tNow);
+    bool endsBeforeStep(double tau, const State& y, double end, long& n);
+    bool endsAfterStep(double tau, const State& y);
+    bool locateEvents(double tPrev, const State& yPrev, double tNow, State& y);
+    bool startSlip(double tPrev, const State& yPrev, double tNow, State& y);
+    bool stopOrReverse(double tPrev, const State& yPrev, double tNow, double aNow, State& y);
+    // The run's end: always true, for the callers' return.
+    bool finish(Outcome o, double tEnd, const State& y) {
+        r_.outcome = o;
+        r_.tauEnd = tEnd;
+        r_.residualDelta = y[2] - y[0];
+        return true;
+    }
     void record(EventKind kind, double tau, const State& y, int direction) {
         ++r_.work.events;
         if (keepEvents_) events_.push_back({tau, kind, y[2] - y[0], y[3] - y[1], direction});
@@ -132,6 +144,91 @@ std::optional<double> PaperRun::stickTime(double tPrev, double tNow) {
     return std::nullopt;
 }
 
+// Before step n: the run ends (r_ holds the result) when the excitation has decayed below mu
+// while sticking, the duration is reached, or the step budget is spent.
+bool PaperRun::endsBeforeStep(double tau, const State& y, double end, long& n) {
+    if (!sliding_ && a_.boundAfter(tau) < p_.mu) {
+        record(EventKind::Stable, tau, y, 0);
+        return finish(Outcome::Stable, tau, y);
+    }
+    if (tau >= end) {
+        record(EventKind::DurationCap, tau, y, 0);
+        return finish(Outcome::Stable, tau, y);
+    }
+    if (++n > maxSteps_) {
+        r_.failure = "step limit reached";
+        return finish(Outcome::Failed, tau, y);
+    }
+    return false;
+}
+
+// After a step: the run ends (r_ holds the result) on collapse, tested at step ends only, or on
+// too many events.
+bool PaperRun::endsAfterStep(double tau, const State& y) {
+    const double delta = y[2] - y[0];
+    r_.maxAbsDelta = std::max(r_.maxAbsDelta, std::abs(delta));
+    if (std::abs(delta) > p_.limit) {
+        // The paper takes the time of the present step as the collapse time.
+        r_.tauC = tau;
+        record(EventKind::Collapse, tau, y, static_cast<int>(direction_));
+        return finish(Outcome::Collapsed, tau, y);
+    }
+    if (r_.work.events > o_.maxEvents) {
+        r_.failure = "event limit reached";
+        return finish(Outcome::Failed, tau, y);
+    }
+    return false;
+}
+
+// Slip onset inside the step [tPrev, tNow]: stepped again to the onset, then on to tNow sliding.
+// false: the onset was not located.
+bool PaperRun::startSlip(double tPrev, const State& yPrev, double tNow, State& y) {
+    const auto ts = slipTime(tPrev, tNow);
+    if (!ts) return false;
+    // Sticking up to the onset: the slab moves with the walls.
+    State ySlip = rk4(tPrev, yPrev, *ts - tPrev);
+    sliding_ = true;
+    direction_ = accel(*ts) > 0.0 ? -1.0 : 1.0;
+    ++r_.slipIntervals;
+    record(EventKind::SlipOnset, *ts, ySlip, static_cast<int>(direction_));
+    y = rk4(*ts, ySlip, tNow - *ts);
+    last_[2] = Sample{tNow, y[3] - y[1]};
+    return true;
+}
+
+// A sliding step whose relative velocity changed sign: a reversal while |a| >= mu, else a stick
+// (stepped again to the stick time, then on to tNow stuck). false: the stick was not located.
+bool PaperRun::stopOrReverse(double tPrev, const State& yPrev, double tNow, double aNow, State& y) {
+    const double dvNow = y[3] - y[1];
+    const bool stopped = direction_ * dvNow <= 0.0;
+    if (stopped && std::abs(aNow) >= p_.mu) {
+        // The paper's text marches on here; we let the slab slide back (a reversal).
+        direction_ = -direction_;
+        ++r_.slipIntervals;
+        record(EventKind::Reversal, tNow, y, static_cast<int>(direction_));
+    } else if (stopped) {
+        const auto ts = stickTime(tPrev, tNow);
+        if (!ts) return false;
+        State yStick = rk4(tPrev, yPrev, *ts - tPrev);
+        yStick[3] = yStick[1]; // stuck: slab and walls share the velocity
+        sliding_ = false;
+        record(EventKind::Stick, *ts, yStick, 0);
+        y = rk4(*ts, yStick, tNow - *ts);
+        last_[2] = Sample{tNow, y[3] - y[1]};
+    }
+    return true;
+}
+
+// The events inside the step just taken (y: its end state, redone from the event on when one
+// happened). false: an event was not located.
+bool PaperRun::locateEvents(double tPrev, const State& yPrev, double tNow, State& y) {
+    const double aNow = accel(tNow);
+    last_ = {last_[1], last_[2], Sample{tNow, y[3] - y[1]}};
+    if (!sliding_ && std::abs(aNow) > p_.mu) return startSlip(tPrev, yPrev, tNow, y);
+    if (sliding_) return stopOrReverse(tPrev, yPrev, tNow, aNow, y);
+    return true;
+}
+
 std::optional<SlabResult> PaperRun::run() {
     const double end = p_.duration.value_or(std::numeric_limits<double>::infinity());
     if (!p_.duration && a_.boundAfter(std::numeric_limits<double>::infinity()) >= p_.mu) {
@@ -142,77 +239,18 @@ std::optional<SlabResult> PaperRun::run() {
     State y{0, 0, 0, 0};
     double tau = 0.0;
     last_.fill({0.0, 0.0});
-    long n = 0;
     // The first step is H/2, so that three points exist for the quadratic (Appendix).
     double h = 0.5 * h_;
-    auto finish = [&](Outcome o, double tEnd) {
-        r_.outcome = o;
-        r_.tauEnd = tEnd;
-        r_.residualDelta = y[2] - y[0];
-        return r_;
-    };
+    long n = 0;
     while (true) {
-        if (!sliding_ && a_.boundAfter(tau) < p_.mu) {
-            record(EventKind::Stable, tau, y, 0);
-            return finish(Outcome::Stable, tau);
-        }
-        if (tau >= end) {
-            record(EventKind::DurationCap, tau, y, 0);
-            return finish(Outcome::Stable, tau);
-        }
-        if (++n > maxSteps_) {
-            r_.failure = "step limit reached";
-            return finish(Outcome::Failed, tau);
-        }
+        if (endsBeforeStep(tau, y, end, n)) return r_;
         const double tPrev = tau;
         const State yPrev = y;
         const double tNow = tPrev + h;
         y = rk4(tPrev, yPrev, h);
-        const double aNow = accel(tNow);
-        last_ = {last_[1], last_[2], Sample{tNow, y[3] - y[1]}};
-        if (!sliding_ && std::abs(aNow) > p_.mu) {
-            const auto ts = slipTime(tPrev, tNow);
-            if (!ts) return std::nullopt;
-            // Sticking up to the onset: the slab moves with the walls.
-            State ySlip = rk4(tPrev, yPrev, *ts - tPrev);
-            sliding_ = true;
-            direction_ = accel(*ts) > 0.0 ? -1.0 : 1.0;
-            ++r_.slipIntervals;
-            record(EventKind::SlipOnset, *ts, ySlip, static_cast<int>(direction_));
-            y = rk4(*ts, ySlip, tNow - *ts);
-            last_[2] = Sample{tNow, y[3] - y[1]};
-        } else if (sliding_) {
-            const double dvNow = y[3] - y[1];
-            const bool stopped = direction_ * dvNow <= 0.0;
-            if (stopped && std::abs(aNow) >= p_.mu) {
-                // The paper's text marches on here; we let the slab slide back (a reversal).
-                direction_ = -direction_;
-                ++r_.slipIntervals;
-                record(EventKind::Reversal, tNow, y, static_cast<int>(direction_));
-            } else if (stopped) {
-                const auto ts = stickTime(tPrev, tNow);
-                if (!ts) return std::nullopt;
-                State yStick = rk4(tPrev, yPrev, *ts - tPrev);
-                yStick[3] = yStick[1]; // stuck: slab and walls share the velocity
-                sliding_ = false;
-                record(EventKind::Stick, *ts, yStick, 0);
-                y = rk4(*ts, yStick, tNow - *ts);
-                last_[2] = Sample{tNow, y[3] - y[1]};
-            }
-        }
+        if (!locateEvents(tPrev, yPrev, tNow, y)) return std::nullopt;
         tau = tNow;
-        const double delta = y[2] - y[0];
-        r_.maxAbsDelta = std::max(r_.maxAbsDelta, std::abs(delta));
-        if (std::abs(delta) > p_.limit) {
-            // The paper takes the time of the present step as the collapse time.
-            r_.tauC = tau;
-            record(EventKind::Collapse, tau, y, static_cast<int>(direction_));
-            return finish(Outcome::Collapsed, tau);
-        }
-        if (r_.work.events > o_.maxEvents) {
-            r_.failure = "event limit reached";
-            return finish(Outcome::Failed, tau);
-        }
+        if (endsAfterStep(tau, y)) return r_;
         h = h_;
     }
 }

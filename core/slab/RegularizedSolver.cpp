@@ -9,9 +9,42 @@
 namespace kinstab {
 
 namespace {
+
 struct State {
     double x = 0, v = 0;
 };
+
+// Stability: RK4's real-axis limit is 2.785; width / mu keeps h mu / width = 1.
+double automaticStep(const SlabParams& p, const RegularizedSettings& s) {
+    if (s.step > 0.0) return s.step;
+    double h = p.mu > 0.0 ? s.width / p.mu : std::numeric_limits<double>::infinity();
+    if (s.period > 0.0) h = std::min(h, s.period / 32.0);
+    if (!std::isfinite(h)) h = 1e-2;
+    return h;
+}
+
+// One classical RK4 step of length hh from (tau, y).
+template <class Rhs> State rk4Step(Rhs& rhs, double tau, const State& y, double hh) {
+    const State k1 = rhs(tau, y);
+    const State k2 = rhs(tau + 0.5 * hh, {y.x + 0.5 * hh * k1.x, y.v + 0.5 * hh * k1.v});
+    const State k3 = rhs(tau + 0.5 * hh, {y.x + 0.5 * hh * k2.x, y.v + 0.5 * hh * k2.v});
+    const State k4 = rhs(tau + hh, {y.x + hh * k3.x, y.v + hh * k3.v});
+    return {y.x + hh / 6.0 * (k1.x + 2.0 * k2.x + 2.0 * k3.x + k4.x),
+            y.v + hh / 6.0 * (k1.v + 2.0 * k2.v + 2.0 * k3.v + k4.v)};
+}
+
+// The step from y to next (length hh from tau) crossed the limit: the collapse time by linear
+// interpolation of delta within the step, and the state there.
+void collapseInStep(SlabResult& r, double limit, double& tau, State& y, const State& next,
+                    double hh) {
+    const double target = std::copysign(limit, next.x);
+    const double frac = (target - y.x) / (next.x - y.x);
+    r.tauC = tau + std::clamp(frac, 0.0, 1.0) * hh;
+    r.outcome = Outcome::Collapsed;
+    tau = r.tauC;
+    y = {target, next.v};
+}
+
 } // namespace
 
 std::string validateRegularizedSettings(const RegularizedSettings& s) {
@@ -32,13 +65,7 @@ SlabResult solveRegularized(const Excitation1D& a, const SlabParams& p,
         r.failure = e;
         return r;
     }
-    // Stability: RK4's real-axis limit is 2.785; width / mu keeps h mu / width = 1.
-    double h = s.step;
-    if (h <= 0.0) {
-        h = p.mu > 0.0 ? s.width / p.mu : std::numeric_limits<double>::infinity();
-        if (s.period > 0.0) h = std::min(h, s.period / 32.0);
-        if (!std::isfinite(h)) h = 1e-2;
-    }
+    const double h = automaticStep(p, s);
     const double end = s.endTau > 0.0 ? s.endTau : p.duration.value_or(0.0);
     auto rhs = [&](double tau, const State& y) {
         ++r.work.accelEvaluations;
@@ -58,12 +85,7 @@ SlabResult solveRegularized(const Excitation1D& a, const SlabParams& p,
             break;
         }
         const double hh = end > 0.0 ? std::min(h, end - tau) : h;
-        const State k1 = rhs(tau, y);
-        const State k2 = rhs(tau + 0.5 * hh, {y.x + 0.5 * hh * k1.x, y.v + 0.5 * hh * k1.v});
-        const State k3 = rhs(tau + 0.5 * hh, {y.x + 0.5 * hh * k2.x, y.v + 0.5 * hh * k2.v});
-        const State k4 = rhs(tau + hh, {y.x + hh * k3.x, y.v + hh * k3.v});
-        const State next{y.x + hh / 6.0 * (k1.x + 2.0 * k2.x + 2.0 * k3.x + k4.x),
-                         y.v + hh / 6.0 * (k1.v + 2.0 * k2.v + 2.0 * k3.v + k4.v)};
+        const State next = rk4Step(rhs, tau, y, hh);
         ++r.work.steps;
         if (!std::isfinite(next.x) || !std::isfinite(next.v)) {
             r.outcome = Outcome::Failed;
@@ -71,13 +93,7 @@ SlabResult solveRegularized(const Excitation1D& a, const SlabParams& p,
             break;
         }
         if (std::abs(next.x) > p.limit) {
-            // Linear interpolation of delta within the step.
-            const double target = std::copysign(p.limit, next.x);
-            const double frac = (target - y.x) / (next.x - y.x);
-            r.tauC = tau + std::clamp(frac, 0.0, 1.0) * hh;
-            r.outcome = Outcome::Collapsed;
-            tau = r.tauC;
-            y = {target, next.v};
+            collapseInStep(r, p.limit, tau, y, next, hh);
             break;
         }
         // tau from the step count, not by accumulation (docs/theory.md §6.6 case 13).

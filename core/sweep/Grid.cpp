@@ -31,37 +31,38 @@ std::vector<double> linspaceStep(double start, double stop, double step) {
     return v;
 }
 
-ParsedList parseList(const std::string& text) {
+namespace {
+
+// "start:stop:step", t trimmed and holding a ':'.
+ParsedList parseRange(const std::string& t) {
     ParsedList out;
-    const std::string t = trimmed(text);
-    if (t.empty()) {
-        out.error = "empty list";
+    std::vector<std::string> parts;
+    std::stringstream ss(t);
+    std::string item;
+    while (std::getline(ss, item, ':'))
+        parts.push_back(trimmed(item));
+    double a = 0, b = 0, h = 0;
+    if (parts.size() != 3 || !parseNumber(parts[0], a) || !parseNumber(parts[1], b) ||
+        !parseNumber(parts[2], h)) {
+        out.error = quotedToken(t) + " is not start:stop:step";
         return out;
     }
-    if (t.find(':') != std::string::npos) {
-        std::vector<std::string> parts;
-        std::stringstream ss(t);
-        std::string item;
-        while (std::getline(ss, item, ':'))
-            parts.push_back(trimmed(item));
-        double a = 0, b = 0, h = 0;
-        if (parts.size() != 3 || !parseNumber(parts[0], a) || !parseNumber(parts[1], b) ||
-            !parseNumber(parts[2], h)) {
-            out.error = quotedToken(t) + " is not start:stop:step";
-            return out;
-        }
-        if (h <= 0.0 || b < a) {
-            out.error = quotedToken(t) + ": need step > 0 and stop >= start";
-            return out;
-        }
-        if ((b - a) / h >= static_cast<double>(limits::kMaxGridPoints)) {
-            out.error = quotedToken(t) + ": more than the limit of " +
-                        std::to_string(limits::kMaxGridPoints) + " values";
-            return out;
-        }
-        out.values = linspaceStep(a, b, h);
+    if (h <= 0.0 || b < a) {
+        out.error = quotedToken(t) + ": need step > 0 and stop >= start";
         return out;
     }
+    if ((b - a) / h >= static_cast<double>(limits::kMaxGridPoints)) {
+        out.error = quotedToken(t) + ": more than the limit of " +
+                    std::to_string(limits::kMaxGridPoints) + " values";
+        return out;
+    }
+    out.values = linspaceStep(a, b, h);
+    return out;
+}
+
+// "x1,x2,...", t trimmed; no values when one is not a number or there are too many.
+ParsedList parseCommaList(const std::string& t) {
+    ParsedList out;
     std::stringstream ss(t);
     std::string item;
     while (std::getline(ss, item, ',')) {
@@ -80,6 +81,18 @@ ParsedList parseList(const std::string& text) {
         out.values.push_back(x);
     }
     return out;
+}
+
+} // namespace
+
+ParsedList parseList(const std::string& text) {
+    const std::string t = trimmed(text);
+    if (t.empty()) {
+        ParsedList out;
+        out.error = "empty list";
+        return out;
+    }
+    return t.find(':') != std::string::npos ? parseRange(t) : parseCommaList(t);
 }
 
 std::string validateGrid(const SweepGrid& g) {

@@ -153,10 +153,11 @@ void bindRecord(py::module_& m) {
           "record, with a free-vibration tail (default: until it decays to 1 %, at most 120 s).");
 }
 
-py::dict recordRun(const Slab1DCase& c, const std::string& path, std::optional<double> amplitude,
-                   std::optional<double> scaleFactor, std::optional<double> floorPeriod,
-                   double damping, bool critical, double maxAmplitude, double scanStep,
-                   double tolerance, bool events, std::optional<double> historyStep) {
+// What simulate_record runs, from its keywords but the search's; a bad one raises ValueError
+// naming it.
+RecordAnalysisInput recordInput(const Slab1DCase& c, const std::string& path,
+                                std::optional<double> amplitude, std::optional<double> scaleFactor,
+                                std::optional<double> floorPeriod, double damping, bool critical) {
     RecordAnalysisInput in;
     in.slab = c;
     if (c.solver != SolverKind::Exact)
@@ -169,6 +170,39 @@ py::dict recordRun(const Slab1DCase& c, const std::string& path, std::optional<d
     if (amplitude) in.record.targetPeak = keyword(kTargetPeakInput, *amplitude);
     in.record.scaleFactor = keyword(kScaleFactorInput, scaleFactor.value_or(1.0));
     in.critical = critical;
+    return in;
+}
+
+// simulate_record's result: the run, the motion's scaling, the critical peak, and the events
+// and history when asked for.
+py::dict recordRunDict(const RecordAnalysis& a, const SlabEventLog& log, bool events,
+                       const std::optional<History>& history) {
+    py::dict d;
+    d["outcome"] = outcomeName(a.run.outcome);
+    d["tau_c"] = collapseTau(a.run);
+    d["gamma_c"] = a.tauRef ? gammaC(a.run, *a.tauRef) : std::nan("");
+    d["tau_ref"] = a.tauRef.value_or(std::nan(""));
+    d["tau_end"] = a.run.tauEnd;
+    d["max_abs_delta"] = a.run.maxAbsDelta;
+    d["residual_delta"] = a.run.residualDelta;
+    d["slip_intervals"] = a.run.slipIntervals;
+    d["amplitude"] = a.peak;
+    d["scale_factor"] = a.scaleFactor;
+    d["ground"] = a.ground;
+    d["motion"] = a.motion;
+    d["critical_peak"] = a.critical && a.critical->peak ? *a.critical->peak : std::nan("");
+    d["work"] = workDict(a.run.work);
+    d["events"] = events ? py::object(slabEventArrays(log.events)) : py::none();
+    d["history"] = history ? py::object(historyArrays(*history)) : py::none();
+    return d;
+}
+
+py::dict recordRun(const Slab1DCase& c, const std::string& path, std::optional<double> amplitude,
+                   std::optional<double> scaleFactor, std::optional<double> floorPeriod,
+                   double damping, bool critical, double maxAmplitude, double scanStep,
+                   double tolerance, bool events, std::optional<double> historyStep) {
+    RecordAnalysisInput in =
+        recordInput(c, path, amplitude, scaleFactor, floorPeriod, damping, critical);
     in.search = searchFrom(maxAmplitude, scanStep, tolerance);
     if (historyStep) {
         finite("history_step", *historyStep);
@@ -189,24 +223,7 @@ py::dict recordRun(const Slab1DCase& c, const std::string& path, std::optional<d
     } catch (const std::invalid_argument& e) {
         badArgument("path='" + nulShown(path) + "': " + e.what());
     }
-    py::dict d;
-    d["outcome"] = outcomeName(a.run.outcome);
-    d["tau_c"] = collapseTau(a.run);
-    d["gamma_c"] = a.tauRef ? gammaC(a.run, *a.tauRef) : std::nan("");
-    d["tau_ref"] = a.tauRef.value_or(std::nan(""));
-    d["tau_end"] = a.run.tauEnd;
-    d["max_abs_delta"] = a.run.maxAbsDelta;
-    d["residual_delta"] = a.run.residualDelta;
-    d["slip_intervals"] = a.run.slipIntervals;
-    d["amplitude"] = a.peak;
-    d["scale_factor"] = a.scaleFactor;
-    d["ground"] = a.ground;
-    d["motion"] = a.motion;
-    d["critical_peak"] = a.critical && a.critical->peak ? *a.critical->peak : std::nan("");
-    d["work"] = workDict(a.run.work);
-    d["events"] = events ? py::object(slabEventArrays(log.events)) : py::none();
-    d["history"] = history ? py::object(historyArrays(*history)) : py::none();
-    return d;
+    return recordRunDict(a, log, events, history);
 }
 
 } // namespace
