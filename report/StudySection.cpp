@@ -5,11 +5,11 @@
 // its bounds and the empirical points. The rows come from the project's results file when it has
 // one, else the study runs here, on one thread (a report is not a cluster job: see the limit).
 
+#include "core/io/StudyResults.h"
 #include "core/io/StudySpecJson.h"
 #include "core/records/RecordReader.h"
 #include "core/study/Fragility.h"
 #include "core/study/StudyRecords.h"
-#include "core/study/StudyResults.h"
 #include "core/study/StudyRowsMatch.h"
 #include "core/study/StudyRunner.h"
 #include "core/study/StudySpec.h"
@@ -23,7 +23,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace kinstab::report {
 
@@ -46,11 +45,7 @@ std::vector<StudyRow> rowsOfRun(StudySpec spec) {
     std::vector<StudyRow> rows;
     try {
         loadStudyRecords(spec);
-        runStudy(spec, {}, [&rows](const std::string& block) {
-            std::istringstream in(block);
-            for (std::string line; std::getline(in, line);)
-                rows.push_back(parseStudyRow(line));
-        });
+        rows = runStudyRows(spec, {});
     } catch (const std::exception& e) {
         throw ReportError(std::string("study: ") + e.what());
     }

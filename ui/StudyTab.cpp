@@ -5,8 +5,8 @@
 #include "ui/StudyTab.h"
 
 #include "core/io/AtomicFile.h"
+#include "core/io/FragilityText.h"
 #include "core/io/JsonText.h"
-#include "core/study/FragilityText.h"
 #include "ui/ProjectFolder.h"
 #include "ui/RiskPanel.h"
 #include "ui/StaleFrame.h"

@@ -2,10 +2,10 @@
 // StudyTab, continued: the project's study - shown when a project is opened, with its results
 // read back; made the project's by "Use in project"; results marked stale when the fields change.
 
+#include "core/io/StudyResults.h"
 #include "core/io/StudySpecJson.h"
 #include "core/study/StudyRecordMetrics.h"
 #include "core/study/StudyRecords.h"
-#include "core/study/StudyResults.h"
 #include "core/study/StudyRowsMatch.h"
 #include "ui/FragilityChart.h"
 #include "ui/RiskPanel.h"

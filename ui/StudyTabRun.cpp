@@ -2,6 +2,7 @@
 // StudyTab, continued: the run - the job off the GUI thread (ui/BackgroundJob.h) that runs every
 // case and fits the fragility, and its outcome shown in the chart, the tables and the risk.
 
+#include "core/io/StudyRowJson.h"
 #include "core/io/StudySpecJson.h"
 #include "core/study/CpuAffinity.h"
 #include "core/study/StudyRecordMetrics.h"
@@ -17,8 +18,6 @@
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
-
-#include <sstream>
 
 namespace kinstab::ui {
 
@@ -101,12 +100,10 @@ StudyOutcome runStudyJob(const std::string& json, SweepControl* control) {
         StudyRunOptions options;
         options.threads = allowedCpuCount();
         options.control = control;
-        runStudy(spec, options, [&o](const std::string& rows) { o.rows += rows; });
+        o.parsed = runStudyRows(spec, options);
         o.cancelled = control->isCancelled();
         if (o.cancelled) return o;
-        std::istringstream in(o.rows);
-        for (std::string line; std::getline(in, line);)
-            o.parsed.push_back(parseStudyRow(line));
+        o.rows = studyRowsText(o.parsed); // what File → Save results writes
         o.fragility = studyFragility(o.parsed, {});
         o.metrics = studyRecordMetrics(spec);
     } catch (const StudyError& e) {

@@ -137,52 +137,8 @@ int runBenchStudy(const Args& args, int threads, int repeats) {
                  b.rowsAgree ? "identical" : "DIFFER");
     return b.rowsAgree ? 0 : 1;
 }
-} // namespace
-
-int runBench(const ArgList& argv) {
-    std::set<std::string> flags = modelFlagNames();
-    flags.insert(
-        {"amplitudes", "frequencies", "threads", "repeats", "amplitude", "scale-factor", "study"});
-    flags.merge(recordReadFlagNames());
-    flags.merge(searchFlagNames());
-    flags.insert("map-points");
-    const Args args(argv, flags, {"vector-state", "rocking"});
-    if (args.has("solver"))
-        throw UsageError("--solver: bench always runs both solvers (exact and paper)");
-    const bool planar = isPlanar(args);
-    SweepGrid grid = planar ? planarBenchmarkGrid() : benchmarkGrid();
-    if (args.has("amplitudes")) grid.amplitudes = args.list("amplitudes");
-    if (args.has("frequencies")) grid.frequencies = args.list("frequencies");
-    const std::string e = validateGrid(grid);
-    if (!e.empty()) throw UsageError("--" + e);
-    const int threads = args.integer("threads", 0);
-    if (threads < 0 || threads > 1024)
-        throw UsageError("--threads " + args.text("threads") + ": must be 0 (all) to 1024");
-    const int repeats = args.integer("repeats", 5);
-    if (repeats < 1 || repeats > 1000)
-        throw UsageError("--repeats " + args.text("repeats") + ": must be 1 to 1000");
-    if (args.has("rocking")) return runBenchRocking(args, threads, repeats);
-    if (args.has("map-points")) throw UsageError("--map-points: needs --rocking");
-    if (args.has("study")) {
-        if (planar || args.has("vector-state") || args.has("record"))
-            throw UsageError("--study: times the study alone");
-        return runBenchStudy(args, threads, repeats);
-    }
-    if (args.has("record")) {
-        if (planar || args.has("vector-state"))
-            throw UsageError("--record: times the 1-DOF record path alone");
-        return runBenchRecord(args, repeats);
-    }
-    for (const std::string f : {"amplitude", "scale-factor"})
-        if (args.has(f)) throw UsageError("--" + f + " " + args.text(f) + ": needs --record FILE");
-    for (const std::string& f : searchFlagNames())
-        if (args.has(f)) throw UsageError("--" + f + " " + args.text(f) + ": needs --record FILE");
-    if (planar && args.has("vector-state"))
-        throw UsageError("--vector-state: times the 1-DOF exact solver, not --model planar");
-    if (planar) return runBenchPlanar(args, grid, threads, repeats);
-    const Slab1DCase c = slab1DCaseFromFlags(args);
-    if (args.has("vector-state")) return runBenchVectorState(c, grid, threads, repeats);
-
+// The exact surface against the paper's RK4 at T/16 on one grid (the default bench).
+int runBenchSurface(const Slab1DCase& c, const SweepGrid& grid, int threads, int repeats) {
     const SurfaceBenchmark b = benchmarkSurface(c, grid, repeats, threads);
     const nlohmann::json j = surfaceBenchmarkJson(b, c, grid);
     std::cout << jsonText(j, 2) << "\n";
@@ -202,6 +158,68 @@ int runBench(const ArgList& argv) {
                  j["exact_events_per_point"].get<double>(),
                  j["exact_evaluations_per_event"].get<double>());
     return 0;
+}
+
+Args benchArgs(const ArgList& argv) {
+    std::set<std::string> flags = modelFlagNames();
+    flags.insert(
+        {"amplitudes", "frequencies", "threads", "repeats", "amplitude", "scale-factor", "study"});
+    flags.merge(recordReadFlagNames());
+    flags.merge(searchFlagNames());
+    flags.insert("map-points");
+    return Args(argv, flags, {"vector-state", "rocking"});
+}
+
+// The model's benchmark grid, or the one --amplitudes/--frequencies give.
+SweepGrid benchGrid(const Args& args, bool planar) {
+    SweepGrid grid = planar ? planarBenchmarkGrid() : benchmarkGrid();
+    if (args.has("amplitudes")) grid.amplitudes = args.list("amplitudes");
+    if (args.has("frequencies")) grid.frequencies = args.list("frequencies");
+    const std::string e = validateGrid(grid);
+    if (!e.empty()) throw UsageError("--" + e);
+    return grid;
+}
+
+// The flags only --record uses, refused on the surface benches.
+void refuseRecordOnlyFlags(const Args& args) {
+    for (const std::string f : {"amplitude", "scale-factor"})
+        if (args.has(f)) throw UsageError("--" + f + " " + args.text(f) + ": needs --record FILE");
+    for (const std::string& f : searchFlagNames())
+        if (args.has(f)) throw UsageError("--" + f + " " + args.text(f) + ": needs --record FILE");
+}
+} // namespace
+
+int runBench(const ArgList& argv) {
+    const Args args = benchArgs(argv);
+    if (args.has("solver"))
+        throw UsageError("--solver: bench always runs both solvers (exact and paper)");
+    const bool planar = isPlanar(args);
+    const SweepGrid grid = benchGrid(args, planar);
+    const int threads = args.integer("threads", 0);
+    if (threads < 0 || threads > 1024)
+        throw UsageError("--threads " + args.text("threads") + ": must be 0 (all) to 1024");
+    const int repeats = args.integer("repeats", 5);
+    if (repeats < 1 || repeats > 1000)
+        throw UsageError("--repeats " + args.text("repeats") + ": must be 1 to 1000");
+    if (args.has("rocking")) return runBenchRocking(args, threads, repeats);
+    if (args.has("map-points")) throw UsageError("--map-points: needs --rocking");
+    if (args.has("study")) {
+        if (planar || args.has("vector-state") || args.has("record"))
+            throw UsageError("--study: times the study alone");
+        return runBenchStudy(args, threads, repeats);
+    }
+    if (args.has("record")) {
+        if (planar || args.has("vector-state"))
+            throw UsageError("--record: times the 1-DOF record path alone");
+        return runBenchRecord(args, repeats);
+    }
+    refuseRecordOnlyFlags(args);
+    if (planar && args.has("vector-state"))
+        throw UsageError("--vector-state: times the 1-DOF exact solver, not --model planar");
+    if (planar) return runBenchPlanar(args, grid, threads, repeats);
+    const Slab1DCase c = slab1DCaseFromFlags(args);
+    if (args.has("vector-state")) return runBenchVectorState(c, grid, threads, repeats);
+    return runBenchSurface(c, grid, threads, repeats);
 }
 
 } // namespace kinstab::cli

@@ -5,8 +5,8 @@
 #include "core/base/InputError.h"
 #include "core/base/InternalError.h"
 #include "core/io/AtomicFile.h"
+#include "core/io/StudyRowJson.h"
 #include "core/records/Accelerogram.h"
-#include "core/study/StudyRow.h"
 #include "core/study/StudySpec.h"
 
 namespace kinstab::cli {

@@ -5,10 +5,10 @@
 #include "app/cli/Args.h"
 #include "app/cli/Commands.h"
 #include "core/base/TextInput.h"
+#include "core/io/FragilityText.h"
 #include "core/io/JsonText.h"
+#include "core/io/StudyResults.h"
 #include "core/study/CpuAffinity.h"
-#include "core/study/FragilityText.h"
-#include "core/study/StudyResults.h"
 
 namespace kinstab::cli {
 

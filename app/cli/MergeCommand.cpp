@@ -5,7 +5,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/StreamedOutput.h"
 #include "core/base/TextInput.h"
-#include "core/study/StudyResults.h"
+#include "core/io/StudyResults.h"
 
 #include <sys/resource.h>
 
@@ -28,7 +28,7 @@ void addListed(const std::string& list, std::vector<std::string>& shards) {
 
 // Every shard's descriptor held at once where the hard open-file limit allows (a job array's
 // shards outnumber the usual soft limit of 1024); beyond it the merge reads shards in turn
-// (core/study/ShardPool.h).
+// (core/io/ShardPool.h).
 void raiseOpenFileLimit() {
     rlimit limit{};
     if (::getrlimit(RLIMIT_NOFILE, &limit) != 0 || limit.rlim_cur >= limit.rlim_max) return;

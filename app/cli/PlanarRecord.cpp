@@ -9,9 +9,9 @@
 #include "app/cli/Commands.h"
 #include "app/cli/PlanarFlags.h"
 #include "app/cli/RecordFlags.h"
-#include "core/base/JsonValue.h"
 #include "core/check/RecordAnalysis.h"
 #include "core/io/JsonText.h"
+#include "core/io/JsonValue.h"
 #include "core/io/PlanarResultJson.h"
 #include "core/slab/PlanarRecordCase.h"
 

@@ -7,8 +7,8 @@
 #include "app/cli/Commands.h"
 #include "core/base/TextInput.h"
 #include "core/io/JsonText.h"
+#include "core/io/StudyRowJson.h"
 #include "core/risk/RiskReport.h"
-#include "core/study/StudyRow.h"
 
 #include <algorithm>
 #include <utility>

@@ -9,14 +9,15 @@
 #include "core/base/TextInput.h"
 #include "core/io/AtomicFile.h"
 #include "core/io/StudyResume.h"
+#include "core/io/StudyRowJson.h"
 #include "core/io/StudySpecJson.h"
 #include "core/study/CpuAffinity.h"
 #include "core/study/StudyRecords.h"
 #include "core/study/StudyRunner.h"
 
-#include <algorithm>
 #include <atomic>
 #include <iostream>
+#include <vector>
 
 namespace kinstab::cli {
 
@@ -86,9 +87,9 @@ int runStudyCommand(const ArgList& argv) {
     {
         const ProgressLine progress("study", "cases",
                                     [&] { return std::pair(written.load(), cases); });
-        runStudy(spec, options, [&out, &written](const std::string& rows) {
-            out.write(rows);
-            written += static_cast<std::size_t>(std::count(rows.begin(), rows.end(), '\n'));
+        runStudy(spec, options, [&out, &written](const std::vector<StudyRow>& rows) {
+            out.write(studyRowsText(rows));
+            written += rows.size();
         });
     }
     out.commit();

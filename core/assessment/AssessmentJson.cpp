@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/assessment/AssessmentJson.h"
 
-#include "core/base/JsonValue.h"
+#include "core/io/JsonValue.h"
 
 #include <algorithm>
 #include <iomanip>

@@ -4,10 +4,10 @@
 #include "core/base/InputError.h"
 #include "core/base/TextInput.h"
 #include "core/io/Project.h"
+#include "core/io/StudyResults.h"
 #include "core/io/StudySpecJson.h"
 #include "core/study/Fragility.h"
 #include "core/study/StudyRecords.h"
-#include "core/study/StudyResults.h"
 #include "core/study/StudyRowsMatch.h"
 #include "core/study/StudySpec.h"
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/AnalysisJson.h"
 
-#include "core/base/JsonValue.h"
 #include "core/base/ModelKind.h"
 #include "core/io/CaseJson.h"
+#include "core/io/JsonValue.h"
 
 #include <optional>
 

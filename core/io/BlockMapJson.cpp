@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/BlockMapJson.h"
 
-#include "core/base/JsonValue.h"
 #include "core/base/TextInput.h"
+#include "core/io/JsonValue.h"
 
 #include <cmath>
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/CheckJson.h"
 
-#include "core/base/JsonValue.h"
 #include "core/io/CodesJson.h"
+#include "core/io/JsonValue.h"
 #include "core/io/RecordJson.h"
 
 namespace kinstab {

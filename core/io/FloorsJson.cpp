@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/FloorsJson.h"
 
-#include "core/base/JsonValue.h"
 #include "core/excitation/FloorFilter.h"
+#include "core/io/JsonValue.h"
 
 #include <locale>
 #include <sstream>

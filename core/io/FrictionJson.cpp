@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/FrictionJson.h"
 
-#include "core/base/JsonValue.h"
+#include "core/io/JsonValue.h"
 #include "core/io/ResultJson.h"
 
 #include <cmath>

@@ -3,7 +3,6 @@
 
 #include "core/base/DisplayText.h"
 #include "core/base/InputLimits.h"
-#include "core/base/JsonValue.h"
 #include "core/base/TextInput.h"
 #include "core/io/AtomicFile.h"
 #include "core/io/BlockJson.h"
@@ -11,6 +10,7 @@
 #include "core/io/CodesJson.h"
 #include "core/io/FloorsJson.h"
 #include "core/io/JsonReader.h"
+#include "core/io/JsonValue.h"
 #include "core/io/MotionJson.h"
 #include "core/io/PlanarJson.h"
 #include "core/io/ProjectLayout.h"

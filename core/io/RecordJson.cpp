@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/RecordJson.h"
 
-#include "core/base/JsonValue.h"
 #include "core/base/TextInput.h"
 #include "core/excitation/Envelope.h"
 #include "core/excitation/EnvelopeFit.h"
+#include "core/io/JsonValue.h"
 #include "core/io/ResultJson.h"
 
 #include <stdexcept>

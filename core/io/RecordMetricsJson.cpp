@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/RecordMetricsJson.h"
 
-#include "core/base/JsonValue.h"
+#include "core/io/JsonValue.h"
 
 namespace kinstab {
 

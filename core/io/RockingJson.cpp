@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/RockingJson.h"
 
-#include "core/base/JsonValue.h"
+#include "core/io/JsonValue.h"
 #include "core/io/RecordJson.h"
 
 #include <string>

@@ -2,8 +2,10 @@
 #include "core/io/StudyBlockJson.h"
 
 #include "core/base/TextInput.h"
+#include "core/io/JsonValue.h"
 
 #include <array>
+#include <stdexcept>
 #include <string_view>
 
 namespace kinstab {
@@ -52,6 +54,48 @@ void refuseSlabParameters(const JsonReader& top) {
         if (p->has(key))
             p->fail(key, "a slab parameter: the study's model is its \"block\" (its friction is "
                          "block.mu)");
+}
+
+nlohmann::ordered_json studyBlockJson(const StudyBlock& b) {
+    using ojson = nlohmann::ordered_json;
+    return {{"half_width_m", b.block.halfWidth},
+            {"half_height_m", b.block.halfHeight},
+            {"mu", orNull<ojson>(b.mu)},
+            {"restitution", orNull<ojson>(b.restitution)},
+            {"linear", b.linear}};
+}
+
+namespace {
+
+double rowNumber(const nlohmann::json& j, const char* key, const NumberInput& in) {
+    const std::string at = std::string("block.") + key;
+    if (!j.contains(key) || !j[key].is_number())
+        throw std::invalid_argument(at + ": expected a number");
+    const double x = j[key].get<double>();
+    if (const InputProblem p = checkInput(in, x); !p.empty())
+        throw std::invalid_argument(describeAs(p, at));
+    return x;
+}
+
+std::optional<double> optionalRowNumber(const nlohmann::json& j, const char* key,
+                                        const NumberInput& in) {
+    if (!j.contains(key) || j[key].is_null()) return std::nullopt;
+    return rowNumber(j, key, in);
+}
+
+} // namespace
+
+StudyBlock studyBlockFromRowJson(const nlohmann::json& j) {
+    if (!j.is_object()) throw std::invalid_argument("block: expected an object");
+    StudyBlock b;
+    b.block.halfWidth = rowNumber(j, "half_width_m", kHalfWidthInput);
+    b.block.halfHeight = rowNumber(j, "half_height_m", kHalfHeightInput);
+    b.mu = optionalRowNumber(j, "mu", kBlockMuInput);
+    b.restitution = optionalRowNumber(j, "restitution", kRestitutionInput);
+    if (!j.contains("linear") || !j["linear"].is_boolean())
+        throw std::invalid_argument("block.linear: expected true or false");
+    b.linear = j["linear"].get<bool>();
+    return b;
 }
 
 } // namespace kinstab

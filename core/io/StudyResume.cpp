@@ -3,7 +3,7 @@
 
 #include "core/base/InputLimits.h"
 #include "core/base/LineReader.h"
-#include "core/study/StudyRow.h"
+#include "core/io/StudyRowJson.h"
 #include "core/study/StudyRunner.h"
 
 namespace kinstab {

@@ -2,10 +2,10 @@
 #include "core/risk/RiskReport.h"
 
 #include "core/base/TextInput.h"
+#include "core/io/FragilityText.h"
+#include "core/io/StudyResults.h"
 #include "core/risk/RiskJson.h"
 #include "core/risk/SetRisk.h"
-#include "core/study/FragilityText.h"
-#include "core/study/StudyResults.h"
 
 namespace kinstab {
 

@@ -4,19 +4,18 @@
 #include "core/study/StudyRunner.h"
 
 #include <algorithm>
-#include <string>
+#include <vector>
 
 namespace kinstab {
 
 StudyBenchmark benchmarkStudy(const StudySpec& s, int threads, int repeats) {
     StudyBenchmark b;
     b.threads = std::max(1, threads);
-    std::string rowsOne, rowsMany;
-    const auto pass = [&s](unsigned n, std::string& rows) {
-        rows.clear();
+    std::vector<StudyRow> rowsOne, rowsMany;
+    const auto pass = [&s](unsigned n, std::vector<StudyRow>& rows) {
         StudyRunOptions o;
         o.threads = n;
-        runStudy(s, o, [&rows](const std::string& text) { rows += text; });
+        rows = runStudyRows(s, o);
     };
     const PairedTiming t =
         timePaired([&] { pass(1, rowsOne); },
@@ -30,7 +29,6 @@ StudyBenchmark benchmarkStudy(const StudySpec& s, int threads, int repeats) {
     b.perCpuSecondOne = perCpu(b.one);
     b.perCpuSecondMany = perCpu(b.many);
     b.speedup = t.ratioWall;
-    b.rowBytes = rowsOne.size();
     b.rowsAgree = rowsOne == rowsMany;
     return b;
 }

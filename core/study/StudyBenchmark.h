@@ -18,8 +18,7 @@ struct StudyBenchmark {
     double perCpuSecondOne = 0;  // cases per CPU-second (median CPU time) on one thread
     double perCpuSecondMany = 0; // the same on `threads` threads
     double speedup = 0;          // one / many: median of the per-repeat wall-time ratios
-    std::size_t rowBytes = 0;    // the JSONL text of one pass (the same on every pass)
-    bool rowsAgree = true;       // one thread's rows byte-identical to the threads' rows
+    bool rowsAgree = true;       // one thread's rows equal to the threads' rows, value by value
 };
 
 // s: a study with its records loaded (loadStudyRecords). threads >= 1.

@@ -1,13 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/StudyBlock.h"
 
-#include "core/base/JsonValue.h"
 #include "core/base/TextInput.h"
 #include "core/rocking/RockingMotions.h"
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace kinstab {
 
@@ -40,48 +38,6 @@ std::string studyBlockText(const StudyBlock& b) {
            " m, mu = " + (b.mu ? formatDouble(*b.mu) : std::string("none")) + ", restitution = " +
            (b.restitution ? formatDouble(*b.restitution) : std::string("housner")) + ", " +
            (b.linear ? "linearised" : "exact");
-}
-
-nlohmann::ordered_json studyBlockJson(const StudyBlock& b) {
-    using ojson = nlohmann::ordered_json;
-    return {{"half_width_m", b.block.halfWidth},
-            {"half_height_m", b.block.halfHeight},
-            {"mu", orNull<ojson>(b.mu)},
-            {"restitution", orNull<ojson>(b.restitution)},
-            {"linear", b.linear}};
-}
-
-namespace {
-
-double rowNumber(const nlohmann::json& j, const char* key, const NumberInput& in) {
-    const std::string at = std::string("block.") + key;
-    if (!j.contains(key) || !j[key].is_number())
-        throw std::invalid_argument(at + ": expected a number");
-    const double x = j[key].get<double>();
-    if (const InputProblem p = checkInput(in, x); !p.empty())
-        throw std::invalid_argument(describeAs(p, at));
-    return x;
-}
-
-std::optional<double> optionalRowNumber(const nlohmann::json& j, const char* key,
-                                        const NumberInput& in) {
-    if (!j.contains(key) || j[key].is_null()) return std::nullopt;
-    return rowNumber(j, key, in);
-}
-
-} // namespace
-
-StudyBlock studyBlockFromRowJson(const nlohmann::json& j) {
-    if (!j.is_object()) throw std::invalid_argument("block: expected an object");
-    StudyBlock b;
-    b.block.halfWidth = rowNumber(j, "half_width_m", kHalfWidthInput);
-    b.block.halfHeight = rowNumber(j, "half_height_m", kHalfHeightInput);
-    b.mu = optionalRowNumber(j, "mu", kBlockMuInput);
-    b.restitution = optionalRowNumber(j, "restitution", kRestitutionInput);
-    if (!j.contains("linear") || !j["linear"].is_boolean())
-        throw std::invalid_argument("block.linear: expected true or false");
-    b.linear = j["linear"].get<bool>();
-    return b;
 }
 
 BlockCaseCritical blockCaseCritical(const StudyBlock& b, const Accelerogram& motion,

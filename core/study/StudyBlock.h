@@ -14,8 +14,6 @@
 #include "core/rocking/RockingModel.h"
 #include "core/sweep/CriticalAmplitude.h"
 
-#include <nlohmann/json.hpp>
-
 #include <optional>
 #include <string>
 
@@ -39,12 +37,6 @@ OverturningSearch studyBlockSearch(const CriticalSearch& search);
 // "b = 0.2 m, h = 0.6 m, mu = none, restitution = housner, exact": one line, for the study's
 // fingerprint and the report's tables (numbers as the shortest text that reads back the same).
 std::string studyBlockText(const StudyBlock& b);
-
-// The block as a row or a fragility set writes it: {"half_width_m", "half_height_m", "mu",
-// "restitution", "linear"} (mu, restitution null when not given).
-nlohmann::ordered_json studyBlockJson(const StudyBlock& b);
-// Parses what studyBlockJson writes; throws std::invalid_argument naming the key ("block.mu").
-StudyBlock studyBlockFromRowJson(const nlohmann::json& j);
 
 // The critical peak of the driving motion for the block: none when nothing up to search.to
 // overturns it.

@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// One case's result as one line of JSON (JSONL, docs/studies.md): its inputs and the intensity at
-// which the scaled record first collapses the slab, or none up to the search limit (then the
-// record is censored at the limit's intensity). No timing: a rerun writes the same bytes.
+// One case's result: its inputs and the intensity at which the scaled record first collapses the
+// slab, or none up to the search limit (then the record is censored at the limit's intensity).
+// A value: its JSONL line is written and read by core/io/StudyRowJson.h, a floor above.
 
 #include "core/study/StudyBlock.h"
 
 #include <cstddef>
 #include <optional>
-#include <stdexcept>
 #include <string>
 
 namespace kinstab {
@@ -38,21 +37,14 @@ struct StudyRow {
     // search stopped at its run limit (written only when it did).
     std::optional<StudyBlock> block;
     bool runLimitReached = false;
+    bool operator==(const StudyRow&) const = default;
 };
 
-struct StudyRowError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-std::string studyRowLine(const StudyRow& r); // one line, no newline
 // What drives the slab in words, for tables and legends: "ground", "floor T = 1 s, ζ = 0.02" or
 // "level 8", with ", fitted sine" when the case runs the motion's enveloped-sine surrogate.
 // (A row's polarity is the record's, not the set's: recordText says it.)
 std::string studyDriverText(const StudyRow& r);
 // The record a row ran: its label, with " (inverted)" for the inverted polarity.
 std::string studyRecordText(const StudyRow& r);
-// Throws StudyRowError saying which key is missing or wrong: of the wrong type, or out of its
-// range (a critical intensity that is not > 0, or above the row's search limit).
-StudyRow parseStudyRow(const std::string& line);
 
 } // namespace kinstab

@@ -114,10 +114,9 @@ namespace {
 // Runs the cases of indices on core's one thread pool (core/sweep/ParallelFor.h), each row into
 // its slot; the first failing case's exception is rethrown, as a plain loop would meet it.
 void runBlock(const StudySpec& s, const std::vector<std::size_t>& indices, unsigned threads,
-              const SweepControl* control, std::vector<std::string>& lines) {
-    parallelFor(indices.size(), static_cast<int>(threads), control, [&](std::size_t i) {
-        lines[i] = studyRowLine(runStudyCase(s, studyCase(s, indices[i]))) + "\n";
-    });
+              const SweepControl* control, std::vector<StudyRow>& rows) {
+    parallelFor(indices.size(), static_cast<int>(threads), control,
+                [&](std::size_t i) { rows[i] = runStudyCase(s, studyCase(s, indices[i])); });
 }
 
 } // namespace
@@ -127,32 +126,36 @@ std::size_t shardCaseCount(const StudySpec& s, const Shard& shard) {
     return total / shard.n + (total % shard.n >= shard.k ? 1 : 0);
 }
 
-std::size_t runStudy(const StudySpec& s, const StudyRunOptions& o,
-                     const std::function<void(const std::string&)>& sink) {
+std::size_t runStudy(const StudySpec& s, const StudyRunOptions& o, const StudyRowSink& sink) {
     const std::size_t total = studyCaseCount(s);
     const std::size_t mine = shardCaseCount(s, o.shard);
     const unsigned threads = std::max(1u, o.threads);
     const std::size_t blockSize = 16 * static_cast<std::size_t>(threads);
     std::size_t written = 0;
     std::vector<std::size_t> indices;
-    std::vector<std::string> lines;
+    std::vector<StudyRow> rows;
     if (o.done >= mine) return 0;
     // Every loop is bounded by the shard's case count; a block is at most blockSize cases.
     for (std::size_t start = o.shard.k - 1 + o.done * o.shard.n; start < total;) {
         indices.clear();
         for (; start < total && indices.size() < blockSize; start += o.shard.n)
             indices.push_back(start);
-        lines.assign(indices.size(), std::string());
-        runBlock(s, indices, threads, o.control, lines);
+        rows.assign(indices.size(), StudyRow());
+        runBlock(s, indices, threads, o.control, rows);
         if (o.control && o.control->isCancelled()) return written;
-        std::string text;
-        for (const std::string& l : lines)
-            text += l;
-        sink(text);
+        sink(rows);
         written += indices.size();
         if (o.control && o.control->onProgress) o.control->onProgress(o.done + written, mine);
     }
     return written;
+}
+
+std::vector<StudyRow> runStudyRows(const StudySpec& s, const StudyRunOptions& options) {
+    std::vector<StudyRow> rows;
+    runStudy(s, options, [&rows](const std::vector<StudyRow>& block) {
+        rows.insert(rows.end(), block.begin(), block.end());
+    });
+    return rows;
 }
 
 } // namespace kinstab

@@ -2,7 +2,8 @@
 #pragma once
 // Runs the cases of a study (or of one shard of it) on worker threads and hands the rows on in
 // case order, a block at a time, so that memory does not grow with the number of cases and the
-// output is the same bytes whatever the number of threads.
+// output is the same rows whatever the number of threads. The rows are values: who writes them
+// as text (core/io/StudyRowJson.h) or keeps them is the caller's choice.
 
 #include "core/study/StudyCase.h"
 #include "core/study/StudyRow.h"
@@ -10,6 +11,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace kinstab {
 
@@ -30,10 +32,15 @@ struct StudyRunOptions {
 // The number of cases of shard `shard` of the study.
 std::size_t shardCaseCount(const StudySpec& s, const Shard& shard);
 
-// Calls sink with the JSONL text ("...\n" per row) of each finished block of cases, in case
-// order, from the shard's case `done` on. Returns the number of rows written; fewer than the
-// shard's cases less `done` only when cancelled.
-std::size_t runStudy(const StudySpec& s, const StudyRunOptions& options,
-                     const std::function<void(const std::string&)>& sink);
+// Receives each finished block of rows, in case order.
+using StudyRowSink = std::function<void(const std::vector<StudyRow>&)>;
+
+// Calls sink with the rows of each finished block of cases, in case order, from the shard's
+// case `done` on. Returns the number of rows handed on; fewer than the shard's cases less `done`
+// only when cancelled.
+std::size_t runStudy(const StudySpec& s, const StudyRunOptions& options, const StudyRowSink& sink);
+// Every row of the run at once, for those that keep them all (the GUI, the report, Python): as
+// many rows as runStudy hands on.
+std::vector<StudyRow> runStudyRows(const StudySpec& s, const StudyRunOptions& options);
 
 } // namespace kinstab

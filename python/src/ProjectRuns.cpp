@@ -10,9 +10,10 @@
 #include "core/building/FloorAnalysis.h"
 #include "core/excitation/RecordExcitation.h"
 #include "core/io/FloorsJson.h"
+#include "core/io/FragilityText.h"
 #include "core/io/Project.h"
+#include "core/io/StudyRowJson.h"
 #include "core/io/StudySpecJson.h"
-#include "core/study/FragilityText.h"
 #include "core/study/StudyRecords.h"
 #include "core/study/StudyRunner.h"
 #include "python/src/Arguments.h"
@@ -20,7 +21,6 @@
 #include "python/src/Interruptible.h"
 
 #include <filesystem>
-#include <sstream>
 
 namespace py = pybind11;
 
@@ -76,19 +76,13 @@ std::vector<StudyRow> studyRowsOf(const ProjectStudy& ps, unsigned threads) {
     if (!ps.results.empty()) return projectStudyRows(ps);
     StudySpec spec = loadStudy(ps.spec);
     loadStudyRecords(spec);
-    std::ostringstream text;
+    std::vector<StudyRow> rows;
     SweepControl control;
     StudyRunOptions options;
     options.threads = threads;
     options.control = &control;
-    const bool finished = runWatchingSignals(control, [&] {
-        runStudy(spec, options, [&text](const std::string& rows) { text << rows; });
-    });
+    const bool finished = runWatchingSignals(control, [&] { rows = runStudyRows(spec, options); });
     if (!finished) throw py::error_already_set();
-    std::vector<StudyRow> rows;
-    std::istringstream lines(text.str());
-    for (std::string line; std::getline(lines, line);)
-        rows.push_back(parseStudyRow(line));
     return rows;
 }
 

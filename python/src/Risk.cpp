@@ -4,8 +4,8 @@
 // by its keyword, a bad file one naming the file and line, as the CLI's exit 2.
 
 #include "core/base/TextInput.h"
+#include "core/io/StudyRowJson.h"
 #include "core/risk/RiskReport.h"
-#include "core/study/StudyRow.h"
 #include "python/src/Arguments.h"
 #include "python/src/Arrays.h"
 #include "python/src/Bindings.h"

@@ -2,6 +2,7 @@
 // study_case_count and study_rows: the cases of a study file by index, for the Dask driver
 // (python/kinstab/study.py). A row is the JSON line kinstab-cli study writes, to the byte.
 
+#include "core/io/StudyRowJson.h"
 #include "core/io/StudySpecJson.h"
 #include "core/study/StudyRecords.h"
 #include "core/study/StudyRunner.h"

@@ -77,7 +77,7 @@ QByteArray usgsText(const std::vector<Point>& p, const QString& imt) {
     return QJsonDocument(QJsonObject{{"response", QJsonArray{response}}}).toJson();
 }
 
-// One study row (the layout of core/study/StudyRow.cpp); critical < 0: censored at 3 g.
+// One study row (the layout of core/io/StudyRowJson.cpp); critical < 0: censored at 3 g.
 QByteArray row(int index, int cases, int set, double critical) {
     QJsonObject o{{"study", "0123456789abcdef"}, // one study's fingerprint on every row
                   {"case", index},

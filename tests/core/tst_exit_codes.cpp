@@ -8,8 +8,8 @@
 #include "core/base/InputError.h"
 #include "core/base/InternalError.h"
 #include "core/io/AtomicFile.h"
+#include "core/io/StudyRowJson.h"
 #include "core/records/Accelerogram.h"
-#include "core/study/StudyRow.h"
 #include "core/study/StudySpec.h"
 
 #include <QtTest>

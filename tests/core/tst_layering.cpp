@@ -2,7 +2,9 @@
 // Core's floors: a folder of core/ may include its own folder and the folders below it, never one
 // above. The order is declared here, once (README "Layout" prints it); a new folder must be given
 // its floor before the test passes. The checker is first tried on a small tree made for the test,
-// with one include that runs back up, so a checker that finds nothing cannot pass.
+// with one include that runs back up, so a checker that finds nothing cannot pass. JSON text is
+// io's: a folder below io computes values and includes no JSON library (the study's rows, its
+// results files and the fragility text are written and read in io).
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -27,9 +29,10 @@ const std::vector<std::string> kCoreFloors = {
     "analysis", "study",     "io",      "risk",  "assessment"};
 
 struct Finding {
-    std::vector<std::string> upward;     // "core/a/X.h includes core/b/Y.h (floor b above a)"
-    std::vector<std::string> undeclared; // folders of the tree without a floor
-    int crossIncludes = 0;               // includes between two different folders
+    std::vector<std::string> upward;      // "core/a/X.h includes core/b/Y.h (floor b above a)"
+    std::vector<std::string> undeclared;  // folders of the tree without a floor
+    std::vector<std::string> jsonBelowIo; // "core/study/X.cpp includes <nlohmann/json.hpp>"
+    int crossIncludes = 0;                // includes between two different folders
 };
 
 int floorOf(const std::string& folder) {
@@ -39,10 +42,14 @@ int floorOf(const std::string& folder) {
 
 void checkFile(const fs::path& file, const std::string& folder, Finding& out) {
     static const std::regex include(R"(^\s*#\s*include\s*"core/([^/"]+)/([^"]+)\")");
+    static const std::regex json(R"(^\s*#\s*include\s*<(nlohmann/[^>]+)>)");
     std::ifstream in(file);
     std::string line;
     while (std::getline(in, line)) {
         std::smatch m;
+        if (std::regex_search(line, m, json) && floorOf(folder) < floorOf("io"))
+            out.jsonBelowIo.push_back("core/" + folder + "/" + file.filename().string() +
+                                      " includes <" + m[1].str() + ">");
         if (!std::regex_search(line, m, include) || m[1] == folder) continue;
         ++out.crossIncludes;
         const std::string target = m[1];
@@ -89,7 +96,8 @@ class TestLayering : public QObject {
     Q_OBJECT
 private slots:
     // A tree made for the test: slab/ including sweep/ runs back up; sweep/ including slab/ and
-    // a comment naming sweep/ do not; a folder with no floor is reported.
+    // a comment naming sweep/ do not; a folder with no floor is reported; study/ including the
+    // JSON library is, io/ including it is not.
     void checkerFindsAnUpwardInclude() {
         QTemporaryDir tmp;
         QVERIFY(tmp.isValid());
@@ -97,11 +105,15 @@ private slots:
         writeFile(core / "slab/A.h", "#pragma once\n#include \"core/sweep/B.h\"\n");
         writeFile(core / "sweep/B.cpp", "// see core/sweep/B.h\n#include \"core/slab/A.h\"\n");
         writeFile(core / "attic/C.h", "#pragma once\n");
+        writeFile(core / "study/D.cpp", "#include <nlohmann/json.hpp>\n");
+        writeFile(core / "io/E.cpp", "#include <nlohmann/json.hpp>\n");
         const Finding f = checkCore(core);
         QCOMPARE(f.crossIncludes, 2);
         QCOMPARE(f.upward.size(), std::size_t(1));
         QVERIFY(f.upward[0].find("core/slab/A.h includes core/sweep/B.h") == 0);
         QCOMPARE(f.undeclared, std::vector<std::string>{"core/attic"});
+        QCOMPARE(f.jsonBelowIo,
+                 std::vector<std::string>{"core/study/D.cpp includes <nlohmann/json.hpp>"});
     }
 
     void coreFoldersIncludeOnlyFloorsBelow() {
@@ -111,6 +123,8 @@ private slots:
                             joined(f.undeclared)));
         QVERIFY2(f.crossIncludes > 100, "the checker read too few includes: wrong source path?");
         QVERIFY2(f.upward.empty(), qPrintable("includes that run back up:" + joined(f.upward)));
+        QVERIFY2(f.jsonBelowIo.empty(),
+                 qPrintable("JSON below io (write it in core/io):" + joined(f.jsonBelowIo)));
     }
 };
 

@@ -11,8 +11,8 @@
 //    (all censored above the collapses: rank / records), and a record censored below a collapse
 //    leaves the records at risk there (tst_kaplan_meier works the product by hand).
 
+#include "core/io/FragilityText.h"
 #include "core/study/Fragility.h"
-#include "core/study/FragilityText.h"
 #include "core/study/LognormalFit.h"
 
 #include <QtTest>

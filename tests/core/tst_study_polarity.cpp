@@ -7,6 +7,7 @@
 // statistics count both rows.
 
 #include "core/io/AtomicFile.h"
+#include "core/io/StudyRowJson.h"
 #include "core/io/StudySpecJson.h"
 #include "core/records/RecordReader.h"
 #include "core/study/Fragility.h"
@@ -66,7 +67,7 @@ std::string runAll(const StudySpec& s) {
     std::string text;
     StudyRunOptions o;
     o.threads = 2;
-    runStudy(s, o, [&text](const std::string& rows) { text += rows; });
+    runStudy(s, o, [&text](const std::vector<StudyRow>& b) { text += studyRowsText(b); });
     return text;
 }
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Study results read back (core/study/StudyResults.h): every row validated (types and ranges:
+// Study results read back (core/io/StudyResults.h): every row validated (types and ranges:
 // a critical intensity of zero or less, or above the search limit, is refused); rows of two
 // studies refused naming both fingerprints and lines; a shard out of case order named at its
 // line, not reported as a missing case; a merge of more shards than the process may open.
 
-#include "core/study/StudyResults.h"
+#include "core/io/StudyResults.h"
 
 #include <sys/resource.h>
 

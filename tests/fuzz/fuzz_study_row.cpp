@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Fuzzes the study results' row parser (core/study/StudyRow): each line of any bytes gives a row
+// Fuzzes the study results' row parser (core/io/StudyRowJson): each line of any bytes gives a row
 // or a StudyRowError naming what is wrong.
 #include "FuzzInput.h"
-#include "core/study/StudyRow.h"
+#include "core/io/StudyRowJson.h"
 
 #include <sstream>
 

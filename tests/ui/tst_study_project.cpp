@@ -9,10 +9,10 @@
 // of core's fragility fit on those rows.
 
 #include "core/io/AtomicFile.h"
+#include "core/io/StudyResults.h"
 #include "core/io/StudySpecJson.h"
 #include "core/study/Fragility.h"
 #include "core/study/StudyRecords.h"
-#include "core/study/StudyResults.h"
 #include "core/study/StudyRowsMatch.h"
 #include "ui/InputHistory.h"
 #include "ui/MainWindow.h"

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/study/FragilityText.h"
+#include "core/io/FragilityText.h"
 
-#include "core/base/JsonValue.h"
 #include "core/base/TextInput.h"
+#include "core/io/JsonValue.h"
+#include "core/io/StudyRowJson.h"
 
 #include <cmath>
 #include <string_view>
@@ -85,19 +86,11 @@ std::string cell(const std::optional<double>& v) {
 
 } // namespace
 
+// A period or damping that is not finite is written null either way: nlohmann's dump writes
+// NaN and infinity as null.
 ojson fragilityParametersJson(const StudyRow& p) {
     ojson j = {{"set", p.set}};
-    if (p.block) {
-        j["block"] = studyBlockJson(*p.block);
-    } else {
-        j["mu"] = p.mu;
-        j["tstar"] = p.tstar;
-        j["limit"] = p.limit;
-    }
-    j["floor_period_s"] = finiteOrNull<ojson>(p.floorPeriod);
-    j["floor_damping"] = finiteOrNull<ojson>(p.floorDamping);
-    if (p.level) j["level"] = *p.level;
-    if (p.motion) j["motion"] = *p.motion;
+    addStudySetJson(j, p);
     return j;
 }
 

@@ -7,7 +7,7 @@
 // order, round-robin (case % N): each is read a buffer at a time, so a release costs one reopen
 // per buffer, not per line.
 
-#include "core/study/StudyResults.h"
+#include "core/io/StudyResults.h"
 
 #include <cstdint>
 #include <memory>

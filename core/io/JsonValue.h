@@ -3,8 +3,8 @@
 // An optional value as JSON: the value, or null where there is none (a record too short for a
 // significant duration, a search that found no critical amplitude); finiteOrNull also writes an
 // infinite or NaN value as null (an unbounded confidence bound), since JSON has no infinity. One
-// rule for every writer, sorted (nlohmann::json) or ordered (nlohmann::ordered_json), on the
-// lowest floor so that core/study's result rows use it too.
+// rule for every writer, sorted (nlohmann::json) or ordered (nlohmann::ordered_json), beside
+// them in io: the floors below compute values and write no JSON.
 
 #include <nlohmann/json.hpp>
 

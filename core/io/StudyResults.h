@@ -5,7 +5,7 @@
 // each shard is in case order (as kinstab-cli study writes it), so a k-way merge holds one line
 // per shard, and its memory does not grow with the number of rows.
 
-#include "core/study/StudyRow.h"
+#include "core/io/StudyRowJson.h"
 
 #include <cstddef>
 #include <functional>
@@ -65,7 +65,7 @@ void forEachStudySet(const std::string& path,
 // of another study (both fingerprints named), and the first missing case when the shards do not
 // cover the study; what sink has received by then is not the whole study. Any number of shards:
 // those beyond the open-file limit are read with their descriptors released in turn
-// (core/study/ShardPool.h).
+// (core/io/ShardPool.h).
 void mergeStudyShards(const std::vector<std::string>& paths,
                       const std::function<void(std::string_view)>& sink);
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/study/StudyResults.h"
+#include "core/io/StudyResults.h"
 
 #include "core/base/InputLimits.h"
 #include "core/base/LineReader.h"
 #include "core/base/TextInput.h"
-#include "core/study/ShardPool.h"
+#include "core/io/ShardPool.h"
 #include "core/study/StudySpec.h"
 
 #include <sys/stat.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/study/ShardPool.h"
+#include "core/io/ShardPool.h"
 
 #include "core/base/LineReader.h"
 
