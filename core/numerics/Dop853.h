@@ -89,18 +89,25 @@ template <int N> struct Dop853Result {
     OdeVec<N> err5, err3; // the two embedded error estimates (times h)
 };
 
-// rhs(t, y) -> dy/dt. f0 = rhs(t, y0). 12 evaluations.
-template <int N, class Rhs>
+// rhs(t, y) -> dy/dt. f0 = rhs(t, y0). 12 evaluations. Where rhs reads only the components
+// [First, First + Count) of y (the planar slab's reads the velocity, not the displacement, which
+// is a quadrature), only those of the stage states are formed and the others are y0's: half the
+// stage arithmetic of a planar slip's step, with the same bits in every result.
+template <int N, int First = 0, int Count = N, class Rhs>
 Dop853Result<N> dop853Step(Rhs&& rhs, double t, const OdeVec<N>& y0, const OdeVec<N>& f0,
                            double h) {
     using namespace dop853;
+    static_assert(First >= 0 && Count > 0 && First + Count <= N);
+    using Read = Eigen::Matrix<double, Count, 1>;
     OdeVec<N> k[12];
     k[0] = f0;
+    OdeVec<N> stage = y0;
     for (int s = 1; s < 12; ++s) {
-        OdeVec<N> acc = kA[s][0] * k[0];
+        Read acc = kA[s][0] * k[0].template segment<Count>(First);
         for (int j = 1; j < s; ++j)
-            if (kA[s][j] != 0.0) acc += kA[s][j] * k[j];
-        k[s] = rhs(t + kC[s] * h, OdeVec<N>(y0 + h * acc));
+            if (kA[s][j] != 0.0) acc += kA[s][j] * k[j].template segment<Count>(First);
+        stage.template segment<Count>(First) = y0.template segment<Count>(First) + h * acc;
+        k[s] = rhs(t + kC[s] * h, stage);
     }
     Dop853Result<N> r;
     OdeVec<N> b = OdeVec<N>::Zero(), e5 = OdeVec<N>::Zero(), e3 = OdeVec<N>::Zero();

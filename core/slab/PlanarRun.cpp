@@ -73,6 +73,13 @@ bool PlanarRun::startsLifted() {
 // needs a fixed sign of |a_h| - mu n): they are scanned for then, once per window; a slip
 // integrated by the explicit method crosses them as any other time.
 PlanarRun::Step PlanarRun::window(double w0, double w1) {
+    // Stuck, no lift-off possible and nothing can start: the window passes as a whole, without
+    // entering it (with a record every sample is a window, and entering them was a twentieth of
+    // a run with RSN68 UP). The same answer the onset search below gives.
+    if (!slipping_ && !m_.mayLiftOn(w0, w1) && quietOn(std::max(t_, w0), w1)) {
+        t_ = std::max(t_, w1);
+        return Step::Continue;
+    }
     m_.enterWindow(w0, w1);
     double wEnd = w1;
     const bool lifts = scanLiftOff(w0, w1, wEnd);

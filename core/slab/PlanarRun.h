@@ -134,6 +134,7 @@ private:
     double nextOnset(double from);
     double nextCut(double tau);
     bool quietOn(double lo, double hi);
+    bool quietOnModel(double lo, double hi); // quietOn past its memory
     bool quietAfter(double tau);
 
     // Slip (PlanarSlip.cpp).
@@ -157,7 +158,7 @@ private:
     Step slavedStop(double t0, double hh, const Vec3& z, const Vec3& f0, const Vec3& zEnd);
     bool leaveSlaved(double t1, const Vec3& z, double rhoExit);
     Vec3 rhsSlaved(double tau, const Vec3& z);
-    Vec2 slavedDirection(double tau, const Vec2& a, double n, double rho) const;
+    Vec2 slavedDirection(const Vec2& a, const Vec2& slope, double n, double rho) const;
     bool isSlaved(double tau, const Vec4& y) const;
     bool onManifold(double tau, const Vec4& y, double angle) const;
 
@@ -210,6 +211,9 @@ private:
         double lo = 0.0, hi = -1.0;
     } quietSpan_;
     double loudSpanEnd_ = -1.0, loudUntil_ = -1.0;
+    struct {
+        double lo = NAN, hi = NAN;
+    } lastLoud_; // the last span quietOn found loud
     std::vector<double> cuts_, roots_;
 };
 

@@ -139,7 +139,7 @@ PlanarRun::Trial PlanarRun::trial(bool implicit, double t0, const Vec4& y0, cons
         return {st.y, st.f, st.err, factor, retry, st.poly};
     }
     const auto st =
-        dop853Step<4>([&](double t, const Vec4& y) { return rhs(t, y); }, t0, y0, f0, h);
+        dop853Step<4, 2, 2>([&](double t, const Vec4& y) { return rhs(t, y); }, t0, y0, f0, h);
     const double err = dop853ErrorNorm<4>(st, y0, absTol, o_.relTol);
     return {st.y, st.f, err, dop853StepFactor(err), dop853RetryStep(h, err) / h, {}};
 }

@@ -47,11 +47,14 @@ PlanarRun::Approach PlanarRun::approachStop(double end) {
             fail("step limit reached");
             return Approach::Done;
         }
-        const auto st = dop853Step<5>(f, l.s, l.z, l.fz, h);
+        const auto st = dop853Step<5, 0, 3>(f, l.s, l.z, l.fz, h);
         const double err = dop853ErrorNorm<5>(st, l.z, absTol, o_.relTol);
         const double tauNew = l.tEntry + st.y[2];
-        const double dNew = dissipationRate(tauNew, st.y[0] / norm2(st.y[0], st.y[1]),
-                                            st.y[1] / norm2(st.y[0], st.y[1]));
+        // a_h and n at the step's end, asked once for D there and the turn test below.
+        const Vec2 aNew = m_.accel(tauNew);
+        const double nNew = m_.normal(tauNew);
+        const double dNew = mu_ * nNew + aNew.x * (st.y[0] / norm2(st.y[0], st.y[1])) +
+                            aNew.y * (st.y[1] / norm2(st.y[0], st.y[1]));
         if (!(err <= 1.0) || !(dNew > 0.0) || !(st.y[2] >= l.z[2])) {
             ++r_.slab.work.restarts;
             ds = h * kLogShrink;
@@ -77,9 +80,8 @@ PlanarRun::Approach PlanarRun::approachStop(double end) {
             return Approach::Exited;
         }
         // The speed is about to turn (D -> 0): leave s before dtau/ds blows up.
-        const Vec2 a = m_.accel(tauNew);
-        if (dNew < kTurnRatio * (mu_ * m_.normal(tauNew) + norm2(a.x, a.y)))
-            return leaveLog(tauNew, y, std::exp(l.s), norm2(a.x, a.y));
+        if (dNew < kTurnRatio * (mu_ * nNew + norm2(aNew.x, aNew.y)))
+            return leaveLog(tauNew, y, std::exp(l.s), norm2(aNew.x, aNew.y));
     }
 }
 
@@ -105,8 +107,8 @@ Vec4 PlanarRun::fromLog(const Vec5& z, double s) const {
 
 // The step from l's start to sTarget, re-taken: the step's dense output.
 Vec5 PlanarRun::logRestep(const LogState& l, double sTarget) {
-    return dop853Step<5>([&](double ss, const Vec5& zz) { return rhsS(ss, zz); }, l.s, l.z, l.fz,
-                         sTarget - l.s)
+    return dop853Step<5, 0, 3>([&](double ss, const Vec5& zz) { return rhsS(ss, zz); }, l.s, l.z,
+                               l.fz, sTarget - l.s)
         .y;
 }
 

@@ -87,6 +87,14 @@ double PlanarRun::nextCut(double tau) {
 // Nothing can start in [lo, hi]: first from a bound over the span [lo, lo + T] that covers it.
 bool PlanarRun::quietOn(double lo, double hi) {
     if (lo >= quietSpan_.lo && hi <= quietSpan_.hi) return true;
+    // A loud window is asked twice: whether it can be passed whole, then for its onsets.
+    if (lo == lastLoud_.lo && hi == lastLoud_.hi) return false;
+    if (quietOnModel(lo, hi)) return true;
+    lastLoud_ = {lo, hi};
+    return false;
+}
+
+bool PlanarRun::quietOnModel(double lo, double hi) {
     if (lo >= loudSpanEnd_ && hi - lo < timeScale_) {
         const double spanEnd = lo + timeScale_;
         if (m_.quietOn(lo, spanEnd)) {
