@@ -23,12 +23,14 @@ struct PlanWorld {
     }
 };
 
-// One line of text across the area's width, from its left edge, height h.
-void drawTextLine(QPainter& p, const QRectF& area, double top, double h, const QString& text) {
-    p.drawText(QRectF(area.left() + 6, top, area.width() - 12, h), Qt::AlignLeft | Qt::AlignVCenter,
-               text);
+// The height the text takes wrapped at spaces in the area's width, less 6 px each side.
+double wrappedHeight(const QFontMetrics& fm, const QRectF& area, const QString& text) {
+    const QRect column(0, 0, static_cast<int>(area.width()) - 12, 100000);
+    return fm.boundingRect(column, kTopViewTextFlags, text).height() + 2.0;
 }
-
+QRectF textRect(const QRectF& area, double top, double h) {
+    return QRectF(area.left() + 6, top, area.width() - 12, h);
+}
 // The walls, the slab at rest (dotted) and now, translucent so the walls show through.
 void paintPlan(QPainter& p, const PlanWorld& w, const SlabScene& s, double wallLength) {
     const TeachingFrame& fr = s.frame;
@@ -59,31 +61,61 @@ void paintPlanArrow(QPainter& p, const PlanWorld& w, const TeachingFrame& fr) {
     p.drawEllipse(tip, 3, 3);
 }
 
+// The words and their rectangles in one font.
+TopViewLayout layoutInFont(const QFont& font, const QRectF& area, const SlabScene& s) {
+    const TeachingFrame& fr = s.frame;
+    TopViewLayout l;
+    l.font = font;
+    l.header = QStringLiteral("top view: δx = %1, δy = %2 (d/2)")
+                   .arg(fr.delta, 0, 'f', 3)
+                   .arg(fr.deltaY, 0, 'f', 3);
+    l.footer = QStringLiteral("wall length %1 d (Θ = %2); arrow: base a_h\n"
+                              "a_x = %3 g, a_y = %4 g")
+                   .arg(s.params.theta / 2.0, 0, 'g', 3)
+                   .arg(s.params.theta, 0, 'g', 3)
+                   .arg(fr.accel, 0, 'f', 2)
+                   .arg(fr.accelY, 0, 'f', 2);
+    const QFontMetrics fm(font);
+    const double headerH = wrappedHeight(fm, area, l.header);
+    const double footerH = wrappedHeight(fm, area, l.footer);
+    l.headerRect = textRect(area, area.top(), headerH);
+    l.footerRect = textRect(area, area.bottom() - footerH, footerH);
+    l.plan = area.adjusted(0, headerH, 0, -footerH);
+    return l;
+}
+
 } // namespace
 
+TopViewLayout topViewLayout(const QFont& font, const QRectF& area, const SlabScene& s) {
+    TopViewLayout l = layoutInFont(font, area, s);
+    QFont smaller = font;
+    constexpr int kMaxShrinks = 8; // 0.85^8 = 0.27: 300 % text down to about 80 %
+    for (int i = 0; i < kMaxShrinks && l.plan.height() < 0.5 * area.height(); ++i) {
+        if (smaller.pixelSize() > 0)
+            smaller.setPixelSize(std::max(6, static_cast<int>(smaller.pixelSize() * 0.85)));
+        else
+            smaller.setPointSizeF(smaller.pointSizeF() * 0.85);
+        l = layoutInFont(smaller, area, s);
+    }
+    return l;
+}
+
 void paintTopView(QPainter& p, const QRectF& area, const SlabScene& s) {
-    const TeachingFrame& fr = s.frame;
     const double wallLength = s.params.theta / 2.0; // in d: theta = 2 wall length / wall width
-    const double worldW = kSpan + 2.4, worldH = wallLength + 3.0;
-    const PlanWorld w{area.center(), std::min(area.width() / worldW, area.height() / worldH)};
+    const TopViewLayout l = topViewLayout(p.font(), area, s);
+    // The plan takes what the text leaves, with 0.6 d around it for the arrow.
+    const double worldW = kSpan + 2.4, worldH = wallLength + 1.2;
+    const double k = std::min(l.plan.width() / worldW, l.plan.height() / worldH);
+    const PlanWorld w{l.plan.center(), std::max(0.0, k)};
     p.save();
     p.setClipRect(area);
+    p.setFont(l.font);
     p.setPen(QColor(0x33, 0x33, 0x33));
-    drawTextLine(p, area, area.top(), 18,
-                 QStringLiteral("top view: δx = %1, δy = %2 (d/2)")
-                     .arg(fr.delta, 0, 'f', 3)
-                     .arg(fr.deltaY, 0, 'f', 3));
+    p.drawText(l.headerRect, kTopViewTextFlags, l.header);
     paintPlan(p, w, s, wallLength);
-    paintPlanArrow(p, w, fr);
+    paintPlanArrow(p, w, s.frame);
     p.setPen(QColor(0x33, 0x33, 0x33));
-    drawTextLine(p, area, area.bottom() - 36, 16,
-                 QStringLiteral("wall length %1 d (Θ = %2); arrow: base a_h")
-                     .arg(wallLength, 0, 'g', 3)
-                     .arg(s.params.theta, 0, 'g', 3));
-    drawTextLine(p, area, area.bottom() - 18, 16,
-                 QStringLiteral("a_x = %1 g, a_y = %2 g")
-                     .arg(fr.accel, 0, 'f', 2)
-                     .arg(fr.accelY, 0, 'f', 2));
+    p.drawText(l.footerRect, kTopViewTextFlags, l.footer);
     p.restore();
 }
 
