@@ -108,12 +108,8 @@ void paintColourBar(QPainter& p, const PlotFrame& fr, const std::vector<double>&
     p.drawText(QPointF(x, plot.top() - 1.2 * u), label.section(QLatin1Char(' '), 0, 0));
 }
 
-// The overlay's lines and points; returns their legend, drawn below the plot by the caller.
-std::vector<LegendEntry> paintOverlay(QPainter& p, const PlotFrame& fr, const DesignOverlay& o) {
-    const FigureScale& sc = fr.scale();
-    const double u = sc.unit();
-    const QRectF plot = fr.plot();
-    // A_crit(f): the boundary between stable and collapsed.
+// A_crit(f): the boundary between stable and collapsed, open where no A_crit was found.
+QPainterPath critPath(const PlotFrame& fr, const DesignOverlay& o) {
     QPainterPath crit;
     bool open = false;
     for (std::size_t k = 0; k < o.critFrequencies.size(); ++k) {
@@ -125,9 +121,27 @@ std::vector<LegendEntry> paintOverlay(QPainter& p, const PlotFrame& fr, const De
         open ? crit.lineTo(q) : crit.moveTo(q);
         open = true;
     }
+    return crit;
+}
+
+// The design points (F_top/w_top, 1/T) of the codes with a period.
+void paintDesignPoints(QPainter& p, const PlotFrame& fr, const std::vector<CodeMark>& codes) {
+    const double u = fr.scale().unit();
+    for (const CodeMark& c : codes) {
+        if (c.frequency <= 0) continue;
+        p.setPen(fr.scale().pen(Qt::black, 0.15));
+        p.setBrush(c.colour);
+        p.drawEllipse(fr.map(c.ratio, c.frequency), 0.8 * u, 0.8 * u);
+    }
+}
+
+// The overlay's lines and points; returns their legend, drawn below the plot by the caller.
+std::vector<LegendEntry> paintOverlay(QPainter& p, const PlotFrame& fr, const DesignOverlay& o) {
+    const FigureScale& sc = fr.scale();
+    const QRectF plot = fr.plot();
     p.setBrush(Qt::NoBrush);
     p.setPen(sc.pen(Qt::black, 0.55));
-    p.drawPath(crit);
+    p.drawPath(critPath(fr, o));
     if (o.designFrequency) {
         QPen dotted = sc.pen(QColor(30, 60, 160), 0.25);
         dotted.setStyle(Qt::DotLine);
@@ -136,25 +150,10 @@ std::vector<LegendEntry> paintOverlay(QPainter& p, const PlotFrame& fr, const De
         p.drawLine(QPointF(plot.left(), y), QPointF(plot.right(), y));
     }
     std::vector<LegendEntry> legend{{QStringLiteral("A_crit(f)"), Qt::black, Qt::SolidLine}};
-    for (std::size_t k = 0; k < o.codes.size(); ++k) {
-        const CodeMark& c = o.codes[k];
-        const double x = fr.mapX(c.ratio);
-        if (x < plot.left() || x > plot.right()) continue;
-        const QColor colour = o.codes[k].colour;
-        QPen dash = sc.pen(colour, 0.3);
-        dash.setStyle(Qt::DashLine);
-        p.setPen(dash);
-        p.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
-        legend.push_back(
-            {QStringLiteral("%1: %2").arg(c.label).arg(c.ratio, 0, 'f', 3), colour, Qt::DashLine});
-    }
-    for (std::size_t k = 0; k < o.codes.size(); ++k) {
-        const CodeMark& c = o.codes[k];
-        if (c.frequency <= 0) continue;
-        p.setPen(sc.pen(Qt::black, 0.15));
-        p.setBrush(o.codes[k].colour);
-        p.drawEllipse(fr.map(c.ratio, c.frequency), 0.8 * u, 0.8 * u);
-    }
+    for (const CodeMark& c : o.codes)
+        if (fr.verticalLine(p, c.ratio, c.colour, Qt::DashLine))
+            legend.push_back(codeRatioEntry(c.label, c.ratio, c.colour));
+    paintDesignPoints(p, fr, o.codes);
     if (o.designFrequency)
         legend.push_back({QStringLiteral("f = 1/T = %1 Hz").arg(*o.designFrequency, 0, 'f', 3),
                           QColor(30, 60, 160), Qt::DotLine});

@@ -76,14 +76,16 @@ QString listText(const std::vector<double>& v, const QString& unit) {
         .arg(v.size());
 }
 
-} // namespace
+// "as entered (n)" for per-story values given, "all equal" when left out.
+QString perStory(const std::vector<double>& v) {
+    return v.empty() ? QStringLiteral("all equal")
+                     : QStringLiteral("as entered (%1)").arg(v.size());
+}
 
-void addInputSections(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {
+Table buildingTable(const Project& p) {
     const Building& b = p.building;
     const QString u = lengthSymbolOf(p, LengthScale::Structure);
     auto len = [&](double v) { return lengthOf(p, buildingMetres(b, v), LengthScale::Structure); };
-    doc.addSection(QStringLiteral("Inputs"));
-    doc.addHeading(QStringLiteral("Building"), 2);
     Table t = quantityTable();
     t.rows.push_back({"name", "", qs(b.name.empty() ? p.name : b.name), ""});
     t.rows.push_back({"stories", "n", QString::number(b.stories), ""});
@@ -93,50 +95,45 @@ void addInputSections(ReportDocument& doc, const Project& p, const ReportAnalysi
                       b.period ? num(*b.period, 3) : QStringLiteral("each code's formula"), "s"});
     t.rows.push_back({"lateral system", "", systemLabel(b.system), ""});
     t.rows.push_back({"occupancy", "", occupancyLabel(b.occupancy), ""});
-    t.rows.push_back({"story weights", "w_i",
-                      b.storyWeights.empty()
-                          ? QStringLiteral("all equal")
-                          : QStringLiteral("as entered (%1)").arg(b.storyWeights.size()),
-                      ""});
-    t.rows.push_back({"story heights", "h_i",
-                      b.storyHeights.empty()
-                          ? QStringLiteral("all equal")
-                          : QStringLiteral("as entered (%1)").arg(b.storyHeights.size()),
-                      b.storyHeights.empty() ? QString() : u});
-    doc.addTable(t);
+    t.rows.push_back({"story weights", "w_i", perStory(b.storyWeights), ""});
+    t.rows.push_back(
+        {"story heights", "h_i", perStory(b.storyHeights), b.storyHeights.empty() ? QString() : u});
+    return t;
+}
 
-    if (!p.codes.empty()) {
-        doc.addHeading(QStringLiteral("Code inputs"), 2);
-        doc.addTable(codeInputsTable(p.codes));
-    }
+// The solver that ran: the planar model is integrated numerically whatever slab.solver says.
+QString solverText(const Slab1DCase& s, const ReportAnalysis& a) {
+    if (a.planarSolver)
+        return QStringLiteral("numerical (Dormand–Prince 5(4), tolerance %1)")
+            .arg(QString::number(a.planarSolver->relTol, 'g', 3));
+    if (s.solver == SolverKind::Exact)
+        return QStringLiteral("exact (event-driven, closed form between events)");
+    return QStringLiteral("the paper's RK4, H = T/%1").arg(num(s.paperStepsPerPeriod, 0));
+}
 
+// The wall beside the time it sets: t* = √(d/2g), so d = 2g·t*² when only t* was entered.
+// In the project's units, to 0.1 mm or 0.01 in: a 150 mm wall prints as 150 mm.
+QStringList wallRow(const Project& p) {
+    const double dM =
+        p.wallWidthIn ? *p.wallWidthIn * kMetresPerInch : wallWidthFromTstar(p.slab.tstar);
+    return {p.wallWidthIn ? "wall width" : "wall width (from t*: d = 2g·t*²)", "d",
+            lengthOf(p, dM, LengthScale::Detail), lengthSymbolOf(p, LengthScale::Detail)};
+}
+
+Table slabTable(const Project& p, const ReportAnalysis& a) {
     const Slab1DCase& s = p.slab;
-    doc.addHeading(QStringLiteral("Slab, wall and analysis"), 2);
     Table sl = quantityTable();
     sl.rows.push_back({"model", "",
                        p.model == ModelKind::Planar ? "planar 2-DOF slab" : "1-DOF slab (ch. IV)",
                        ""});
     sl.rows.push_back({"friction coefficient", "μ", num(s.slab.mu, 3), ""});
-    // The wall beside the time it sets: t* = √(d/2g), so d = 2g·t*² when only t* was entered.
-    // In the project's units, to 0.1 mm or 0.01 in: a 150 mm wall prints as 150 mm.
-    const double dM = p.wallWidthIn ? *p.wallWidthIn * kMetresPerInch : wallWidthFromTstar(s.tstar);
-    sl.rows.push_back({p.wallWidthIn ? "wall width" : "wall width (from t*: d = 2g·t*²)", "d",
-                       lengthOf(p, dM, LengthScale::Detail),
-                       lengthSymbolOf(p, LengthScale::Detail)});
+    sl.rows.push_back(wallRow(p));
     sl.rows.push_back({"characteristic time √(d/2g)", "t*", num(s.tstar, 4), "s"});
     sl.rows.push_back(
         {"bearing length / (d/2): collapse limit", "|δ| >", num(s.slab.limit, 3), ""});
     sl.rows.push_back({"earthquake duration cap", "τ_out",
                        s.slab.duration ? num(*s.slab.duration, 1) : QStringLiteral("none"), ""});
-    // The solver that ran: the planar model is integrated numerically whatever slab.solver says.
-    sl.rows.push_back(
-        {"solver", "",
-         a.planarSolver ? QStringLiteral("numerical (Dormand–Prince 5(4), tolerance %1)")
-                              .arg(QString::number(a.planarSolver->relTol, 'g', 3))
-         : s.solver == SolverKind::Exact
-             ? QStringLiteral("exact (event-driven, closed form between events)")
-             : QStringLiteral("the paper's RK4, H = T/%1").arg(num(s.paperStepsPerPeriod, 0)),
-         ""});
+    sl.rows.push_back({"solver", "", solverText(s, a), ""});
     sl.rows.push_back(
         {"collapse-factor scaling", "τ_ref", scaleLabel(s.scale) + " = " + num(s.tauRef(), 2), ""});
     sl.rows.push_back({"sweep amplitudes", "A", listText(p.grid.amplitudes, "g"), ""});
@@ -144,7 +141,21 @@ void addInputSections(ReportDocument& doc, const Project& p, const ReportAnalysi
     sl.rows.push_back({"A_crit search: scan step, tolerance", "",
                        num(p.critical.scanStep, 4) + ", " + num(p.critical.tolerance, 6), "g"});
     sl.rows.push_back({"A_crit search: limit", "", num(p.critical.to, 2), "g"});
-    doc.addTable(sl);
+    return sl;
+}
+
+} // namespace
+
+void addInputSections(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {
+    doc.addSection(QStringLiteral("Inputs"));
+    doc.addHeading(QStringLiteral("Building"), 2);
+    doc.addTable(buildingTable(p));
+    if (!p.codes.empty()) {
+        doc.addHeading(QStringLiteral("Code inputs"), 2);
+        doc.addTable(codeInputsTable(p.codes));
+    }
+    doc.addHeading(QStringLiteral("Slab, wall and analysis"), 2);
+    doc.addTable(slabTable(p, a));
     addPlanarInputs(doc, p);
 }
 
@@ -191,10 +202,52 @@ void addCodeSections(ReportDocument& doc, const Project& p, const ReportAnalysis
     }
 }
 
-void addExcitationSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {
-    const Slab1DCase& c = p.slab;
+namespace {
+
+Table envelopeTable(const Slab1DCase& c) {
     const Envelope& e = c.envelope;
-    doc.addSection(QStringLiteral("Excitation"));
+    Table t = quantityTable(QStringLiteral("parameter"));
+    t.rows.push_back({"envelope decay rate", "α", num(e.alpha, 4), "1/s"});
+    t.rows.push_back({"envelope rise rate", "β", num(e.beta, 4), "1/s"});
+    t.rows.push_back({"characteristic time", "t*", num(c.tstar, 4), "s"});
+    return t;
+}
+
+// The characteristic times γc is scaled with beside those computed from α and β.
+Table timesTable(bool preset, const CharacteristicTimes& used, const CharacteristicTimes& comp) {
+    Table times{{"time (τ = t/t*)", preset ? "Table 4 (used for γc)" : "used for γc",
+                 "computed from α, β", "differ"},
+                {},
+                {2, 2, 2, 1},
+                {Align::Left, Align::Right, Align::Right, Align::Left},
+                {}};
+    auto row = [&](const QString& name, double u, double computed) {
+        const bool differ = std::abs(u - computed) > 0.005 * std::max(1.0, std::abs(u));
+        times.rows.push_back({name, num(u, 2), num(computed, 2), differ ? "yes" : "no"});
+    };
+    row(QStringLiteral("τ_rise (first half maximum)"), used.tauRise, comp.tauRise);
+    row(QStringLiteral("τ_max (peak of e)"), used.tauMax, comp.tauMax);
+    row(QStringLiteral("τ_dur (second half maximum)"), used.tauDur, comp.tauDur);
+    return times;
+}
+
+// a(t)/A and e(t)/S_max at frequency f over the envelope's duration and a little more
+// (10 s to 120 s), 3001 samples.
+ExcitationPlot excitationPlot(const Slab1DCase& c, double f, double tauDur) {
+    const EnvelopedSine sine(c.envelope, 1.0, f, c.tstar);
+    ExcitationPlot plot;
+    const double tEnd = std::min(120.0, std::max(10.0, 2.2 * tauDur * c.tstar));
+    for (int k = 0; k <= 3000; ++k) {
+        const double t = tEnd * k / 3000.0;
+        plot.timeSeconds.push_back(t);
+        plot.accel.push_back(sine.accel(t / c.tstar));
+        plot.envelope.push_back(sine.envelopeAt(t / c.tstar) / sine.sMax());
+    }
+    plot.title = QStringLiteral("f = %1 Hz, S_max = %2").arg(num(f, 3), num(sine.sMax(), 5));
+    return plot;
+}
+
+void addExcitationIntro(ReportDocument& doc, const Project& p) {
     if (p.record)
         doc.addParagraph(QStringLiteral(
             "The project's excitation is a record (section \"Recorded excitation\"), on which the "
@@ -206,28 +259,19 @@ void addExcitationSection(ReportDocument& doc, const Project& p, const ReportAna
             "e(t*τ) · sin(ωτ), e(t) = exp(−αt) − exp(−βt), ω = 2π f t*, τ = t / t*, with S_max the "
             "largest |e(t*τ) sin(ωτ)|, so that A is the peak floor acceleration in g. Envelope: "
             "%1.")
-            .arg(qs(e.name())));
-    const CharacteristicTimes table = e.scalingTimes(c.tstar);
+            .arg(qs(p.slab.envelope.name())));
+}
+
+} // namespace
+
+void addExcitationSection(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {
+    const Slab1DCase& c = p.slab;
+    const Envelope& e = c.envelope;
+    doc.addSection(QStringLiteral("Excitation"));
+    addExcitationIntro(doc, p);
     const CharacteristicTimes comp = e.computedTimes(c.tstar);
-    Table t = quantityTable(QStringLiteral("parameter"));
-    t.rows.push_back({"envelope decay rate", "α", num(e.alpha, 4), "1/s"});
-    t.rows.push_back({"envelope rise rate", "β", num(e.beta, 4), "1/s"});
-    t.rows.push_back({"characteristic time", "t*", num(c.tstar, 4), "s"});
-    doc.addTable(t);
-    Table times{{"time (τ = t/t*)", e.preset ? "Table 4 (used for γc)" : "used for γc",
-                 "computed from α, β", "differ"},
-                {},
-                {2, 2, 2, 1},
-                {Align::Left, Align::Right, Align::Right, Align::Left},
-                {}};
-    auto row = [&](const QString& name, double used, double computed) {
-        const bool differ = std::abs(used - computed) > 0.005 * std::max(1.0, std::abs(used));
-        times.rows.push_back({name, num(used, 2), num(computed, 2), differ ? "yes" : "no"});
-    };
-    row(QStringLiteral("τ_rise (first half maximum)"), table.tauRise, comp.tauRise);
-    row(QStringLiteral("τ_max (peak of e)"), table.tauMax, comp.tauMax);
-    row(QStringLiteral("τ_dur (second half maximum)"), table.tauDur, comp.tauDur);
-    doc.addTable(times);
+    doc.addTable(envelopeTable(c));
+    doc.addTable(timesTable(e.preset.has_value(), e.scalingTimes(c.tstar), comp));
     if (e.preset)
         doc.addParagraph(QStringLiteral("The paper does not print α and β; the preset values "
                                         "reproduce Table 4's τ_rise and "
@@ -238,16 +282,7 @@ void addExcitationSection(ReportDocument& doc, const Project& p, const ReportAna
 
     const std::optional<double> fd = a.overlay.designFrequency;
     if (!fd) return;
-    const EnvelopedSine sine(e, 1.0, *fd, c.tstar);
-    ExcitationPlot plot;
-    const double tEnd = std::min(120.0, std::max(10.0, 2.2 * comp.tauDur * c.tstar));
-    for (int k = 0; k <= 3000; ++k) {
-        const double t = tEnd * k / 3000.0;
-        plot.timeSeconds.push_back(t);
-        plot.accel.push_back(sine.accel(t / c.tstar));
-        plot.envelope.push_back(sine.envelopeAt(t / c.tstar) / sine.sMax());
-    }
-    plot.title = QStringLiteral("f = %1 Hz, S_max = %2").arg(num(*fd, 3), num(sine.sMax(), 5));
+    const ExcitationPlot plot = excitationPlot(c, *fd, comp.tauDur);
     doc.addFigure({[plot](QPainter& pa, const QRectF& r) { paintExcitation(pa, r, plot); }, 0.42,
                    QStringLiteral("Floor acceleration a(t)/A at the building frequency "
                                   "f = %1 Hz (grey) and its envelope ±e(t)/S_max (red).")

@@ -128,6 +128,20 @@ QPointF PlotFrame::map(double x, double y) const {
     return {mapX(x), mapY(y)};
 }
 
+LegendEntry codeRatioEntry(const QString& code, double ratio, const QColor& colour) {
+    return {QStringLiteral("%1: %2").arg(code).arg(ratio, 0, 'f', 3), colour, Qt::DashLine};
+}
+
+bool PlotFrame::verticalLine(QPainter& p, double x, const QColor& c, Qt::PenStyle style) const {
+    const double px = mapX(x);
+    if (px < plot_.left() || px > plot_.right()) return false;
+    QPen pen = scale_.pen(c, 0.3);
+    pen.setStyle(style);
+    p.setPen(pen);
+    p.drawLine(QPointF(px, plot_.top()), QPointF(px, plot_.bottom()));
+    return true;
+}
+
 void PlotFrame::drawAxes(QPainter& p, const QString& xLabel, const QString& yLabel) const {
     const double u = scale_.unit();
     p.save();

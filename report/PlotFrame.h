@@ -41,6 +41,9 @@ double legendRowsHeight(const FigureScale& sc, std::size_t entries, int columns)
 void drawLegendRows(QPainter& p, const FigureScale& sc, const QRectF& area,
                     const std::vector<LegendEntry>& entries, int columns);
 
+// A code ratio's legend entry ("UBC 1976: 0.230"), dashed as its line.
+LegendEntry codeRatioEntry(const QString& code, double ratio, const QColor& colour);
+
 class PlotFrame {
 public:
     // area: the whole figure; the plot rectangle leaves room for the labels around it.
@@ -54,6 +57,8 @@ public:
     const FigureScale& scale() const { return scale_; }
 
     void drawAxes(QPainter& p, const QString& xLabel, const QString& yLabel) const;
+    // A vertical line across the plot at x (pen 0.3 units) when x lies on it; false when not.
+    bool verticalLine(QPainter& p, double x, const QColor& c, Qt::PenStyle style) const;
 
 private:
     QRectF plot_;

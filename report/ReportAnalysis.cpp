@@ -139,22 +139,78 @@ std::optional<double> designFrequency(const Project& project, const DesignCheckR
     return std::nullopt;
 }
 
+namespace {
+
+// The project's sine check: the surface and the design check, for the project's model.
+AnalysisRequest sineRequest(const Project& project) {
+    AnalysisParts parts;
+    parts.surface = true;
+    parts.designCheck = true;
+    return analysisRequest(project, parts);
+}
+
+// The figures' own sweeps: the wireframe's net and the map, n × n points (fewer for the planar
+// model, whose points cost more).
+void runFigureSweeps(const Project& project, const ModelPoint& model,
+                     const AnalysisOptions& options, std::optional<double> fd,
+                     SweepControl* control, ReportAnalysis& a) {
+    const bool planar = project.model == ModelKind::Planar;
+    const int n =
+        planar ? std::min(options.figureGrid, options.planarFigureGrid) : options.figureGrid;
+    const auto t = std::chrono::steady_clock::now();
+    const SweepGrid net{
+        linspace(project.grid.amplitudes.front(), project.grid.amplitudes.back(), n),
+        linspace(project.grid.frequencies.front(), project.grid.frequencies.back(), n)};
+    a.netSurface = figureSweep(model, net, control, a.figureRuns);
+    a.mapSurface = figureSweep(model, mapGrid(project, a.codes, fd, n), control, a.figureRuns);
+    a.figureSweepSeconds = secondsSince(t);
+}
+
+// What the figures draw over the surfaces: A_crit(f) on the map's frequencies, the design
+// frequency and each code's ratio.
+void buildOverlay(const AnalysisRequest& request, const Project& project, std::optional<double> fd,
+                  AnalysisControl& ctl, ReportAnalysis& a) {
+    a.overlay.critFrequencies = a.mapSurface.frequencies;
+    criticalOverlay(request, project.critical, ctl, a);
+    a.overlay.designFrequency = fd;
+    for (const CodeVerdict& v : a.check.codes)
+        a.overlay.codes.push_back(
+            {shortCodeName(v.code), v.ratio, v.frequencyHz, codeColour(v.code)});
+}
+
+// The sections beyond the sine check: the design slice, the record, floors, blocks and the
+// cross-check against the paper's solver.
+void runFurtherChecks(const Project& project, const AnalysisRequest& request,
+                      const ModelPoint& model, const AnalysisOptions& options,
+                      std::optional<double> fd, AnalysisControl& ctl, ReportAnalysis& a) {
+    SweepControl* control = &ctl.sweepControl();
+    if (fd)
+        a.slice =
+            designSlice(project, model, a.check, *fd, options.sliceStep, control, a.figureRuns);
+    if (project.record) a.record = recordCheck(project, request, ctl);
+    a.floors = computeReportFloors(project, control);
+    if (a.record && !project.blocks.empty()) {
+        a.blocks = blockCheckParts(project, a.record->ground, control);
+        a.blockMaps = computeReportBlockMaps(project, control);
+    }
+    // The paper's RK4 solver is of the 1-DOF model only.
+    if (options.crossCheck && project.slab.solver == SolverKind::Exact &&
+        project.model != ModelKind::Planar)
+        a.crossCheck = crossCheck(project, a.projectSweep, options.crossCheckSteps);
+}
+
+} // namespace
+
 ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptions& options,
                                      AnalysisControl* outside) {
     if (const std::string e = validateProject(project); !e.empty()) throw ProjectError(e);
     AnalysisControl own;
     AnalysisControl& ctl = outside ? *outside : own;
-    SweepControl* control = &ctl.sweepControl(); // of the figure sweeps, the slice and floors
     const auto t0 = std::chrono::steady_clock::now();
     ReportAnalysis a;
-    const Slab1DCase& c = project.slab;
-    const bool planar = project.model == ModelKind::Planar;
     // Every sweep, A_crit search and the check below run the project's model (docs/user-guide.md).
-    AnalysisParts parts;
-    parts.surface = true;
-    parts.designCheck = true;
-    const AnalysisRequest request = analysisRequest(project, parts);
-    const ModelPoint model = modelPoint(c, request.planar);
+    const AnalysisRequest request = sineRequest(project);
+    const ModelPoint model = modelPoint(project.slab, request.planar);
     if (request.planar) a.planarSolver = request.planar->solver;
     a.scanFrom = model.scanFrom;
     // Before the sweeps: a bad results or hazard file is an InputError naming it, at once.
@@ -167,35 +223,10 @@ ReportAnalysis computeReportAnalysis(const Project& project, const AnalysisOptio
     a.projectSweep = *sine.surface;
 
     const std::optional<double> fd = designFrequency(project, a.check);
-    const int n =
-        planar ? std::min(options.figureGrid, options.planarFigureGrid) : options.figureGrid;
-    const auto t = std::chrono::steady_clock::now();
-    const SweepGrid net{
-        linspace(project.grid.amplitudes.front(), project.grid.amplitudes.back(), n),
-        linspace(project.grid.frequencies.front(), project.grid.frequencies.back(), n)};
-    a.netSurface = figureSweep(model, net, control, a.figureRuns);
-    a.mapSurface = figureSweep(model, mapGrid(project, a.codes, fd, n), control, a.figureRuns);
-    a.figureSweepSeconds = secondsSince(t);
-
-    a.overlay.critFrequencies = a.mapSurface.frequencies;
-    criticalOverlay(request, project.critical, ctl, a);
-    a.overlay.designFrequency = fd;
-    for (const CodeVerdict& v : a.check.codes)
-        a.overlay.codes.push_back(
-            {shortCodeName(v.code), v.ratio, v.frequencyHz, codeColour(v.code)});
-
-    if (fd)
-        a.slice =
-            designSlice(project, model, a.check, *fd, options.sliceStep, control, a.figureRuns);
-    if (project.record) a.record = recordCheck(project, request, ctl);
-    a.floors = computeReportFloors(project, control);
-    if (a.record && !project.blocks.empty()) {
-        a.blocks = blockCheckParts(project, a.record->ground, control);
-        a.blockMaps = computeReportBlockMaps(project, control);
-    }
-    // The paper's RK4 solver is of the 1-DOF model only.
-    if (options.crossCheck && c.solver == SolverKind::Exact && !planar)
-        a.crossCheck = crossCheck(project, a.projectSweep, options.crossCheckSteps);
+    // The figure sweeps, the slice and floors share the sweep control.
+    runFigureSweeps(project, model, options, fd, &ctl.sweepControl(), a);
+    buildOverlay(request, project, fd, ctl, a);
+    runFurtherChecks(project, request, model, options, fd, ctl, a);
     a.assessment = assessReport(project, a);
     a.totalSeconds = secondsSince(t0);
     return a;

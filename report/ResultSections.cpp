@@ -51,25 +51,24 @@ Table gammaTable(const Project& p, const ReportAnalysis& a) {
     return t;
 }
 
-} // namespace
+// What γc means and which model, case and envelope the surfaces are of.
+QString surfaceIntro(const Project& p, const QString& env) {
+    return QStringLiteral(
+               "γc = τ_ref / τc, with τc the dimensionless time at which the slab slides off its "
+               "walls "
+               "(|δ| > %1) and τ_ref = %2 = %3; γc = 0 where the slab stays on (stable). Larger γc "
+               "means an earlier collapse, a greater hazard. Model: %7, μ = %4, t* = %5 s, "
+               "%6.")
+        .arg(num(p.slab.slab.limit, 2), scaleLabel(p.slab.scale), num(p.slab.tauRef(), 2),
+             num(p.slab.slab.mu, 3), num(p.slab.tstar, 4), env,
+             p.model == ModelKind::Planar
+                 ? QStringLiteral("planar slab, f_y = %1 Hz, A_y/A_x = %2")
+                       .arg(num(p.planar.fyHz, 3), num(p.planar.ayRatio, 3))
+                 : QStringLiteral("1-DOF slab"));
+}
 
-void addSurfaceSections(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {
-    const QString gl = qs(gammaScaleLabel(p.slab.scale));
-    const QString env = envelopeWords(p.slab.envelope);
-    doc.addSection(QStringLiteral("Collapse factor γc(A, f)"));
-    doc.addParagraph(
-        QStringLiteral(
-            "γc = τ_ref / τc, with τc the dimensionless time at which the slab slides off its "
-            "walls "
-            "(|δ| > %1) and τ_ref = %2 = %3; γc = 0 where the slab stays on (stable). Larger γc "
-            "means an earlier collapse, a greater hazard. Model: %7, μ = %4, t* = %5 s, "
-            "%6.")
-            .arg(num(p.slab.slab.limit, 2), scaleLabel(p.slab.scale), num(p.slab.tauRef(), 2),
-                 num(p.slab.slab.mu, 3), num(p.slab.tstar, 4), env,
-                 p.model == ModelKind::Planar
-                     ? QStringLiteral("planar slab, f_y = %1 Hz, A_y/A_x = %2")
-                           .arg(num(p.planar.fyHz, 3), num(p.planar.ayRatio, 3))
-                     : QStringLiteral("1-DOF slab")));
+void addWireframe(ReportDocument& doc, const ReportAnalysis& a, const QString& gl,
+                  const QString& env) {
     const SurfaceData net = a.netSurface;
     const DesignOverlay ov = a.overlay;
     doc.addFigure(
@@ -82,7 +81,11 @@ void addSurfaceSections(ReportDocument& doc, const Project& p, const ReportAnaly
              .arg(net.amplitudes.size())
              .arg(net.frequencies.size())
              .arg(env)});
+}
+
+void addContourMap(ReportDocument& doc, const ReportAnalysis& a, const QString& gl) {
     const SurfaceData map = a.mapSurface;
+    const DesignOverlay ov = a.overlay;
     doc.addFigure(
         {[map, ov, gl](QPainter& pa, const QRectF& r) { paintContourMap(pa, r, map, ov, gl); },
          0.66,
@@ -93,9 +96,10 @@ void addSurfaceSections(ReportDocument& doc, const Project& p, const ReportAnaly
              .arg(gl)
              .arg(map.amplitudes.size())
              .arg(map.frequencies.size())});
-    doc.addHeading(QStringLiteral("γc on the project grid"), 2);
-    doc.addTable(gammaTable(p, a));
+}
 
+// The slice at the building frequency, when there is one.
+void addSliceFigure(ReportDocument& doc, const ReportAnalysis& a, const QString& gl) {
     if (a.slice.amplitudes.empty()) return;
     doc.addHeading(
         QStringLiteral("Slice at the building frequency f = %1 Hz").arg(num(a.slice.frequency, 3)),
@@ -110,6 +114,20 @@ void addSurfaceSections(ReportDocument& doc, const Project& p, const ReportAnaly
              .arg(gl, num(slice.frequency, 3),
                   num(slice.amplitudes.size() > 1 ? slice.amplitudes[1] - slice.amplitudes[0] : 0,
                       3))});
+}
+
+} // namespace
+
+void addSurfaceSections(ReportDocument& doc, const Project& p, const ReportAnalysis& a) {
+    const QString gl = qs(gammaScaleLabel(p.slab.scale));
+    const QString env = envelopeWords(p.slab.envelope);
+    doc.addSection(QStringLiteral("Collapse factor γc(A, f)"));
+    doc.addParagraph(surfaceIntro(p, env));
+    addWireframe(doc, a, gl, env);
+    addContourMap(doc, a, gl);
+    doc.addHeading(QStringLiteral("γc on the project grid"), 2);
+    doc.addTable(gammaTable(p, a));
+    addSliceFigure(doc, a, gl);
 }
 
 void addCodeCriticalTable(ReportDocument& doc, const ReportAnalysis& a) {

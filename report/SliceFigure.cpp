@@ -14,40 +14,21 @@ namespace kinstab::report {
 
 namespace {
 
-void verticalLine(QPainter& p, const PlotFrame& fr, double x, const QColor& c, Qt::PenStyle style) {
-    const QRectF plot = fr.plot();
-    const double px = fr.mapX(x);
-    if (px < plot.left() || px > plot.right()) return;
-    QPen pen = fr.scale().pen(c, 0.3);
-    pen.setStyle(style);
-    p.setPen(pen);
-    p.drawLine(QPointF(px, plot.top()), QPointF(px, plot.bottom()));
-}
-
-} // namespace
-
-void paintSlice(QPainter& p, const QRectF& area, const SliceData& s,
-                const std::vector<CodeMark>& codes, const QString& gammaLabel) {
-    if (s.amplitudes.size() < 2) return;
+// The γ axis's ticks: up to the largest finite γ plus 8 % headroom (at least 0.001).
+std::vector<double> sliceTicks(const SliceData& s) {
     double gMax = 0;
     for (double g : s.gamma)
         if (std::isfinite(g)) gMax = std::max(gMax, g);
-    const std::vector<double> yt = niceTicks(0, std::max(gMax, 1e-3) * 1.08, 5);
-    // The legend goes in a strip under the axes: inside the plot it covered the curve above
-    // A_crit wherever the code lines lie far left.
-    const FigureScale scale{area.width()};
-    const std::size_t entries = (s.aCrit ? 1 : 0) + codes.size();
-    const double strip = entries > 0 ? legendRowsHeight(scale, entries, 3) : 0.0;
-    const QRectF plotArea = area.adjusted(0, 0, 0, -strip);
-    const PlotFrame fr(plotArea, s.amplitudes.front(), s.amplitudes.back(), 0, yt.back());
-    p.save();
-    p.setRenderHint(QPainter::Antialiasing);
-    fr.drawAxes(p, QStringLiteral("peak floor acceleration A (g)"), gammaLabel);
-    // Points joined where neighbours both collapsed; the jump at A_crit is left open.
-    p.setPen(fr.scale().pen(Qt::black, 0.35));
+    return niceTicks(0, std::max(gMax, 1e-3) * 1.08, 5);
+}
+
+// Points joined where neighbours both collapsed; the jump at A_crit is left open, and so are
+// the gaps where γ is unknown.
+std::vector<QPolygonF> sliceRuns(const PlotFrame& fr, const SliceData& s) {
+    std::vector<QPolygonF> runs;
     QPolygonF run;
     auto flush = [&] {
-        if (run.size() > 1) p.drawPolyline(run);
+        if (run.size() > 1) runs.push_back(run);
         run.clear();
     };
     for (std::size_t k = 0; k < s.amplitudes.size(); ++k) {
@@ -60,19 +41,45 @@ void paintSlice(QPainter& p, const QRectF& area, const SliceData& s,
         run << fr.map(s.amplitudes[k], g);
     }
     flush();
+    return runs;
+}
+
+// A_crit (solid red) and the code ratios (dashed) as vertical lines; returns their legend.
+std::vector<LegendEntry> paintMarks(QPainter& p, const PlotFrame& fr, const SliceData& s,
+                                    const std::vector<CodeMark>& codes) {
     std::vector<LegendEntry> legend;
     if (s.aCrit) {
-        verticalLine(p, fr, *s.aCrit, QColor(200, 30, 30), Qt::SolidLine);
+        fr.verticalLine(p, *s.aCrit, QColor(200, 30, 30), Qt::SolidLine);
         legend.push_back({QStringLiteral("A_crit = %1 g").arg(accelG(*s.aCrit)),
                           QColor(200, 30, 30), Qt::SolidLine});
     }
-    for (std::size_t k = 0; k < codes.size(); ++k) {
-        const QColor colour = codes[k].colour;
-        verticalLine(p, fr, codes[k].ratio, colour, Qt::DashLine);
-        legend.push_back(
-            {QStringLiteral("%1: %2").arg(codes[k].label).arg(codes[k].ratio, 0, 'f', 3), colour,
-             Qt::DashLine});
+    for (const CodeMark& c : codes) {
+        fr.verticalLine(p, c.ratio, c.colour, Qt::DashLine);
+        legend.push_back(codeRatioEntry(c.label, c.ratio, c.colour));
     }
+    return legend;
+}
+
+} // namespace
+
+void paintSlice(QPainter& p, const QRectF& area, const SliceData& s,
+                const std::vector<CodeMark>& codes, const QString& gammaLabel) {
+    if (s.amplitudes.size() < 2) return;
+    const std::vector<double> yt = sliceTicks(s);
+    // The legend goes in a strip under the axes: inside the plot it covered the curve above
+    // A_crit wherever the code lines lie far left.
+    const FigureScale scale{area.width()};
+    const std::size_t entries = (s.aCrit ? 1 : 0) + codes.size();
+    const double strip = entries > 0 ? legendRowsHeight(scale, entries, 3) : 0.0;
+    const QRectF plotArea = area.adjusted(0, 0, 0, -strip);
+    const PlotFrame fr(plotArea, s.amplitudes.front(), s.amplitudes.back(), 0, yt.back());
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing);
+    fr.drawAxes(p, QStringLiteral("peak floor acceleration A (g)"), gammaLabel);
+    p.setPen(fr.scale().pen(Qt::black, 0.35));
+    for (const QPolygonF& run : sliceRuns(fr, s))
+        p.drawPolyline(run);
+    const std::vector<LegendEntry> legend = paintMarks(p, fr, s, codes);
     if (!legend.empty())
         drawLegendRows(p, fr.scale(),
                        QRectF(fr.plot().left(), plotArea.bottom(), fr.plot().width(), strip),

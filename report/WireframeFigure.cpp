@@ -95,35 +95,26 @@ void drawTicksAlong(QPainter& p, const Projection& pr, const FigureScale& sc,
     p.drawText(QPointF(x, mid.y() + fm.ascent() + 0.5 * u), label);
 }
 
-} // namespace
+// The box's axes mapped to [0, 1]: u along A, v along f, w along γ (0 at the floor).
+struct UnitBox {
+    double aLo, aHi, fLo, fHi, gTop;
+    double u(double a) const { return unitOf(a, aLo, aHi); }
+    double v(double f) const { return unitOf(f, fLo, fHi); }
+    double w(double g) const { return g / gTop; }
+};
 
-void paintWireframe(QPainter& p, const QRectF& area, const SurfaceData& s,
-                    const DesignOverlay& overlay, const QString& gammaLabel,
-                    const WireframeView& view) {
-    const std::size_t na = s.amplitudes.size(), nf = s.frequencies.size();
-    if (na < 2 || nf < 2) return;
-    const FigureScale sc{area.width()};
-    const double u = sc.unit();
-    const double aLo = s.amplitudes.front(), aHi = s.amplitudes.back();
-    const double fLo = s.frequencies.front(), fHi = s.frequencies.back();
-    std::vector<double> gTicks = niceTicks(0, std::max(s.maxGamma(), 1e-3), 4);
-    if (gTicks.size() > 1 && gTicks.back() < s.maxGamma()) // the box must hold the surface
-        gTicks.push_back(gTicks.back() + (gTicks[1] - gTicks[0]));
-    const double gTop = gTicks.back() > 0 ? gTicks.back() : 1.0;
+// The γ ticks on 1-2-5 steps, one more above the top when the surface rises past it: the box
+// must hold the surface.
+std::vector<double> gammaTicks(const SurfaceData& s) {
+    std::vector<double> ticks = niceTicks(0, std::max(s.maxGamma(), 1e-3), 4);
+    if (ticks.size() > 1 && ticks.back() < s.maxGamma())
+        ticks.push_back(ticks.back() + (ticks[1] - ticks[0]));
+    return ticks;
+}
 
-    Projection pr(view, view.heightRatio);
-    pr.fit(area.adjusted(14 * u, 5 * u, -14 * u, -9 * u));
-    auto point = [&](std::size_t i, std::size_t j) {
-        const double g = s.at(i, j);
-        return std::pair{QPointF(pr(unitOf(s.amplitudes[i], aLo, aHi),
-                                    unitOf(s.frequencies[j], fLo, fHi), g / gTop)),
-                         g};
-    };
-
-    p.save();
-    p.setRenderHint(QPainter::Antialiasing);
-    p.setFont(sc.font(2.2));
-    // Back walls and the γ axis first: they lie behind the net.
+// Back walls with the γ grid, and the box's hidden edges: they lie behind the net.
+void paintBackWalls(QPainter& p, const Projection& pr, const FigureScale& sc,
+                    const std::vector<double>& gTicks, double gTop) {
     p.setPen(sc.pen(QColor(150, 150, 150), 0.12));
     for (double g : gTicks) {
         const double w = g / gTop;
@@ -136,6 +127,12 @@ void paintWireframe(QPainter& p, const QRectF& area, const SurfaceData& s,
     p.drawLine(pr(0, 0, 0), pr(0, 0, 1));
     p.drawLine(pr(0, 0, 0), pr(1, 0, 0));
     p.drawLine(pr(1, 0, 0), pr(1, 1, 0));
+}
+
+// The γ axis's ticks, labels and title on the back left edge.
+void paintGammaAxis(QPainter& p, const Projection& pr, const FigureScale& sc,
+                    const std::vector<double>& gTicks, double gTop, const QString& gammaLabel) {
+    const double u = sc.unit();
     const QFontMetricsF fm(p.font());
     const double gStep = gTicks.size() > 1 ? gTicks[1] - gTicks[0] : 1.0;
     for (double g : gTicks) {
@@ -147,33 +144,52 @@ void paintWireframe(QPainter& p, const QRectF& area, const SurfaceData& s,
     const QPointF top = pr(0, 0, 1);
     p.drawText(QPointF(top.x() - fm.horizontalAdvance(gammaLabel) / 2, top.y() - 1.5 * u),
                gammaLabel);
+}
 
-    std::vector<Primitive> prims;
-    for (std::size_t i = 0; i + 1 < na; ++i)
-        for (std::size_t j = 0; j + 1 < nf; ++j) {
+// The net's finite cells, farthest first (painter's algorithm).
+std::vector<Primitive> netCells(const SurfaceData& s, const Projection& pr, const UnitBox& box) {
+    auto point = [&](std::size_t i, std::size_t j) {
+        const double g = s.at(i, j);
+        return std::pair{QPointF(pr(box.u(s.amplitudes[i]), box.v(s.frequencies[j]), box.w(g))), g};
+    };
+    std::vector<Primitive> cells;
+    for (std::size_t i = 0; i + 1 < s.amplitudes.size(); ++i)
+        for (std::size_t j = 0; j + 1 < s.frequencies.size(); ++j) {
             const auto [p00, g00] = point(i, j);
             const auto [p10, g10] = point(i + 1, j);
             const auto [p11, g11] = point(i + 1, j + 1);
             const auto [p01, g01] = point(i, j + 1);
             if (!std::isfinite(g00 + g10 + g11 + g01)) continue;
-            const double uc = unitOf((s.amplitudes[i] + s.amplitudes[i + 1]) / 2, aLo, aHi);
-            const double vc = unitOf((s.frequencies[j] + s.frequencies[j + 1]) / 2, fLo, fHi);
-            const double wc = (g00 + g10 + g11 + g01) / 4 / gTop;
-            prims.push_back({pr.depth(uc, vc, wc), QPolygonF({p00, p10, p11, p01}), true});
+            const double uc = box.u((s.amplitudes[i] + s.amplitudes[i + 1]) / 2);
+            const double vc = box.v((s.frequencies[j] + s.frequencies[j + 1]) / 2);
+            const double wc = (g00 + g10 + g11 + g01) / 4 / box.gTop;
+            cells.push_back({pr.depth(uc, vc, wc), QPolygonF({p00, p10, p11, p01}), true});
         }
-    std::stable_sort(prims.begin(), prims.end(),
+    std::stable_sort(cells.begin(), cells.end(),
                      [](const Primitive& a, const Primitive& b) { return a.depth > b.depth; });
-    // A_crit(f) goes over the net: on the floor it would hide behind the rising cells.
+    return cells;
+}
+
+// A_crit(f) on the floor, as segments painted after the net: on the floor it would hide behind
+// the rising cells. Segments leaving the box are left out.
+std::vector<Primitive> critSegments(const DesignOverlay& overlay, const Projection& pr,
+                                    const UnitBox& box) {
+    std::vector<Primitive> segments;
     for (std::size_t k = 0; k + 1 < overlay.critFrequencies.size(); ++k) {
         const auto& a0 = overlay.critAmplitude[k];
         const auto& a1 = overlay.critAmplitude[k + 1];
         if (!a0 || !a1) continue;
-        const double u0 = unitOf(*a0, aLo, aHi), u1 = unitOf(*a1, aLo, aHi);
-        const double v0 = unitOf(overlay.critFrequencies[k], fLo, fHi);
-        const double v1 = unitOf(overlay.critFrequencies[k + 1], fLo, fHi);
+        const double u0 = box.u(*a0), u1 = box.u(*a1);
+        const double v0 = box.v(overlay.critFrequencies[k]);
+        const double v1 = box.v(overlay.critFrequencies[k + 1]);
         if (u0 < 0 || u0 > 1 || u1 < 0 || u1 > 1 || v0 < 0 || v1 > 1) continue;
-        prims.push_back({0, QPolygonF({pr(u0, v0, 0), pr(u1, v1, 0)}), false});
+        segments.push_back({0, QPolygonF({pr(u0, v0, 0), pr(u1, v1, 0)}), false});
     }
+    return segments;
+}
+
+// Cells filled white and outlined, overlay lines in red, in the order given.
+void paintPrimitives(QPainter& p, const FigureScale& sc, const std::vector<Primitive>& prims) {
     const QPen net = sc.pen(Qt::black, 0.12);
     const QPen crit = sc.pen(QColor(200, 30, 30), 0.45);
     for (const Primitive& pm : prims) {
@@ -186,14 +202,44 @@ void paintWireframe(QPainter& p, const QRectF& area, const SurfaceData& s,
             p.drawPolyline(pm.shape);
         }
     }
+}
 
-    // Front floor edges with the A and f scales.
+// Front floor edges with the A and f scales.
+void paintFrontEdges(QPainter& p, const Projection& pr, const FigureScale& sc, const UnitBox& box) {
     p.setPen(sc.pen(Qt::black, 0.2));
     p.setBrush(Qt::NoBrush);
     p.drawLine(pr(0, 1, 0), pr(1, 1, 0));
     p.drawLine(pr(0, 0, 0), pr(0, 1, 0));
-    drawTicksAlong(p, pr, sc, niceTicks(aLo, aHi, 5), aLo, aHi, true, QStringLiteral("A (g)"));
-    drawTicksAlong(p, pr, sc, niceTicks(fLo, fHi, 5), fLo, fHi, false, QStringLiteral("f (Hz)"));
+    drawTicksAlong(p, pr, sc, niceTicks(box.aLo, box.aHi, 5), box.aLo, box.aHi, true,
+                   QStringLiteral("A (g)"));
+    drawTicksAlong(p, pr, sc, niceTicks(box.fLo, box.fHi, 5), box.fLo, box.fHi, false,
+                   QStringLiteral("f (Hz)"));
+}
+
+} // namespace
+
+void paintWireframe(QPainter& p, const QRectF& area, const SurfaceData& s,
+                    const DesignOverlay& overlay, const QString& gammaLabel,
+                    const WireframeView& view) {
+    if (s.amplitudes.size() < 2 || s.frequencies.size() < 2) return;
+    const FigureScale sc{area.width()};
+    const double u = sc.unit();
+    const std::vector<double> gTicks = gammaTicks(s);
+    const UnitBox box{s.amplitudes.front(), s.amplitudes.back(), s.frequencies.front(),
+                      s.frequencies.back(), gTicks.back() > 0 ? gTicks.back() : 1.0};
+    Projection pr(view, view.heightRatio);
+    pr.fit(area.adjusted(14 * u, 5 * u, -14 * u, -9 * u));
+
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setFont(sc.font(2.2));
+    paintBackWalls(p, pr, sc, gTicks, box.gTop);
+    paintGammaAxis(p, pr, sc, gTicks, box.gTop, gammaLabel);
+    std::vector<Primitive> prims = netCells(s, pr, box);
+    const std::vector<Primitive> crit = critSegments(overlay, pr, box);
+    prims.insert(prims.end(), crit.begin(), crit.end());
+    paintPrimitives(p, sc, prims);
+    paintFrontEdges(p, pr, sc, box);
     p.restore();
 }
 

@@ -197,64 +197,76 @@ void CodesPanel::buildEc8() {
     connect(m_ec8Regular, &QCheckBox::toggled, this, &InputPanel::changed);
 }
 
+namespace {
+// A combo whose first item means "none" (no map area, from the occupancy).
+std::optional<int> optionalIndex(const QComboBox* c) {
+    return c->currentIndex() == 0 ? std::nullopt : std::optional<int>(c->currentIndex());
+}
+} // namespace
+
+Ubc1976Inputs CodesPanel::ubc1976Inputs() const {
+    Ubc1976Inputs in = m_kept.ubc1976.value_or(Ubc1976Inputs{});
+    in.zone = m_ubc76Zone->currentIndex();
+    in.k = m_ubc76K->value().value_or(in.k);
+    in.importance = m_ubc76I->value();
+    in.sitePeriod = m_ubc76Ts->value();
+    return in;
+}
+
+Atc306Inputs CodesPanel::atc306Inputs() const {
+    Atc306Inputs in = m_kept.atc306.value_or(Atc306Inputs{});
+    in.mapArea = optionalIndex(m_atcArea);
+    in.aa = m_atcAa->value().value_or(in.aa);
+    in.av = m_atcAv->value().value_or(in.av);
+    in.soil = static_cast<AtcSoil>(m_atcSoil->currentIndex());
+    in.r = m_atcR->value().value_or(in.r);
+    return in;
+}
+
+Ubc1997Inputs CodesPanel::ubc1997Inputs() const {
+    Ubc1997Inputs in = m_kept.ubc1997.value_or(Ubc1997Inputs{});
+    in.zone = static_cast<Ubc97Zone>(m_ubc97Zone->currentIndex());
+    in.soil = static_cast<Ubc97Soil>(m_ubc97Soil->currentIndex());
+    in.na = m_ubc97Na->value().value_or(in.na);
+    in.nv = m_ubc97Nv->value().value_or(in.nv);
+    in.importance = m_ubc97I->value();
+    in.r = m_ubc97R->value().value_or(in.r);
+    return in;
+}
+
+Asce7Inputs CodesPanel::asce7Inputs() const {
+    Asce7Inputs in = m_kept.asce7_22.value_or(Asce7Inputs{});
+    in.sds = m_asceSds->value().value_or(in.sds);
+    in.sd1 = m_asceSd1->value().value_or(in.sd1);
+    in.s1 = m_asceS1->value();
+    in.tl = m_asceTl->value().value_or(in.tl);
+    in.siteClass = m_asceSite->currentText().toStdString();
+    in.riskCategory = optionalIndex(m_asceRisk);
+    in.importance = m_asceI->value();
+    in.r = m_asceR->value().value_or(in.r);
+    return in;
+}
+
+Eurocode8Inputs CodesPanel::ec8Inputs() const {
+    Eurocode8Inputs in = m_kept.ec8.value_or(Eurocode8Inputs{});
+    in.ground = static_cast<Ec8Ground>(m_ec8Ground->currentIndex());
+    in.spectrumType = m_ec8Type->currentIndex() + 1;
+    in.agr = m_ec8Agr->value().value_or(in.agr);
+    in.importanceClass = optionalIndex(m_ec8Class);
+    in.gammaI = m_ec8GammaI->value();
+    in.q = m_ec8Q->value().value_or(in.q);
+    in.beta = m_ec8Beta->value().value_or(in.beta);
+    in.regularInElevation = m_ec8Regular->isChecked();
+    return in;
+}
+
 CodeSelection CodesPanel::codes() const {
     CodeSelection c;
-    if (m_ubc76->isChecked()) {
-        Ubc1976Inputs in = m_kept.ubc1976.value_or(Ubc1976Inputs{});
-        in.zone = m_ubc76Zone->currentIndex();
-        in.k = m_ubc76K->value().value_or(in.k);
-        in.importance = m_ubc76I->value();
-        in.sitePeriod = m_ubc76Ts->value();
-        c.ubc1976 = in;
-    }
-    if (m_atc->isChecked()) {
-        Atc306Inputs in = m_kept.atc306.value_or(Atc306Inputs{});
-        in.mapArea = m_atcArea->currentIndex() == 0 ? std::nullopt
-                                                    : std::optional<int>(m_atcArea->currentIndex());
-        in.aa = m_atcAa->value().value_or(in.aa);
-        in.av = m_atcAv->value().value_or(in.av);
-        in.soil = static_cast<AtcSoil>(m_atcSoil->currentIndex());
-        in.r = m_atcR->value().value_or(in.r);
-        c.atc306 = in;
-    }
-    if (m_ubc97->isChecked()) {
-        Ubc1997Inputs in = m_kept.ubc1997.value_or(Ubc1997Inputs{});
-        in.zone = static_cast<Ubc97Zone>(m_ubc97Zone->currentIndex());
-        in.soil = static_cast<Ubc97Soil>(m_ubc97Soil->currentIndex());
-        in.na = m_ubc97Na->value().value_or(in.na);
-        in.nv = m_ubc97Nv->value().value_or(in.nv);
-        in.importance = m_ubc97I->value();
-        in.r = m_ubc97R->value().value_or(in.r);
-        c.ubc1997 = in;
-    }
-    if (m_asce->isChecked()) {
-        Asce7Inputs in = m_kept.asce7_22.value_or(Asce7Inputs{});
-        in.sds = m_asceSds->value().value_or(in.sds);
-        in.sd1 = m_asceSd1->value().value_or(in.sd1);
-        in.s1 = m_asceS1->value();
-        in.tl = m_asceTl->value().value_or(in.tl);
-        in.siteClass = m_asceSite->currentText().toStdString();
-        in.riskCategory = m_asceRisk->currentIndex() == 0
-                              ? std::nullopt
-                              : std::optional<int>(m_asceRisk->currentIndex());
-        in.importance = m_asceI->value();
-        in.r = m_asceR->value().value_or(in.r);
-        c.asce7_22 = in;
-    }
-    if (m_ec8->isChecked()) {
-        Eurocode8Inputs in = m_kept.ec8.value_or(Eurocode8Inputs{});
-        in.ground = static_cast<Ec8Ground>(m_ec8Ground->currentIndex());
-        in.spectrumType = m_ec8Type->currentIndex() + 1;
-        in.agr = m_ec8Agr->value().value_or(in.agr);
-        in.importanceClass = m_ec8Class->currentIndex() == 0
-                                 ? std::nullopt
-                                 : std::optional<int>(m_ec8Class->currentIndex());
-        in.gammaI = m_ec8GammaI->value();
-        in.q = m_ec8Q->value().value_or(in.q);
-        in.beta = m_ec8Beta->value().value_or(in.beta);
-        in.regularInElevation = m_ec8Regular->isChecked();
-        c.ec8 = in;
-    }
+    if (m_ubc76->isChecked()) c.ubc1976 = ubc1976Inputs();
+    if (m_atc->isChecked()) c.atc306 = atc306Inputs();
+    if (m_ubc97->isChecked()) c.ubc1997 = ubc1997Inputs();
+    if (m_asce->isChecked()) c.asce7_22 = asce7Inputs();
+    if (m_ec8->isChecked()) c.ec8 = ec8Inputs();
     return c;
 }
 

@@ -35,6 +35,12 @@ private:
     void buildUbc1997();
     void buildAsce7();
     void buildEc8();
+    // One code's inputs from its fields, over the kept values the panel does not show.
+    Ubc1976Inputs ubc1976Inputs() const;
+    Atc306Inputs atc306Inputs() const;
+    Ubc1997Inputs ubc1997Inputs() const;
+    Asce7Inputs asce7Inputs() const;
+    Eurocode8Inputs ec8Inputs() const;
 
     CodeSelection m_kept; // defaults for a code ticked on, and fields not shown
     QGroupBox *m_ubc76, *m_atc, *m_ubc97, *m_asce, *m_ec8;

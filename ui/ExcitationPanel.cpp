@@ -23,6 +23,22 @@ ExcitationPanel::ExcitationPanel(QWidget* parent)
     : InputPanel(parent), m_preset(new QComboBox(this)), m_scale(new QComboBox(this)),
       m_times(new QLabel(this)), m_chart(new EnvelopeChart(this)), m_source(new QComboBox(this)),
       m_record(new RecordInput(this)) {
+    buildEnvelopeRows();
+    m_scale->addItems({tr("τ_max (default)"), tr("τ_rise"), tr("τ_dur"), tr("1 (γc = 1/τc)")});
+    m_scale->setToolTip(tr("Reference time τ_ref in the collapse factor γc = τ_ref / τc. With "
+                           "τ_max the surfaces of the three envelopes look most alike."));
+    form()->addRow(tr("γc &scale:"), m_scale);
+    m_times->setWordWrap(true);
+    form()->addRow(m_times);
+    form()->addRow(m_chart);
+    form()->addRow(m_record);
+    track(m_record->peakField(), tr("Target peak:"));
+    connectRows();
+    setEnvelope(Envelope::fromPreset(EnvelopePreset::Moderate));
+    updateSource();
+}
+
+void ExcitationPanel::buildEnvelopeRows() {
     m_source->setObjectName("excitationSource");
     m_source->addItems({tr("Enveloped sine"), tr("Record")});
     m_source->setToolTip(tr("The floor acceleration: the paper's enveloped sine over an (A, f) "
@@ -48,29 +64,21 @@ ExcitationPanel::ExcitationPanel(QWidget* parent)
         return QString();
     });
     connect(m_alpha, &NumberField::edited, m_beta, &NumberField::revalidate);
-    m_scale->addItems({tr("τ_max (default)"), tr("τ_rise"), tr("τ_dur"), tr("1 (γc = 1/τc)")});
-    m_scale->setToolTip(tr("Reference time τ_ref in the collapse factor γc = τ_ref / τc. With "
-                           "τ_max the surfaces of the three envelopes look most alike."));
-    form()->addRow(tr("γc &scale:"), m_scale);
-    m_times->setWordWrap(true);
-    form()->addRow(m_times);
-    form()->addRow(m_chart);
-    form()->addRow(m_record);
-    track(m_record->peakField(), tr("Target peak:"));
+}
+
+// A change of source or preset shows its rows; every change updates the times shown.
+void ExcitationPanel::connectRows() {
     connect(m_record, &RecordInput::changed, this, &InputPanel::changed);
     connect(m_source, &QComboBox::currentIndexChanged, this, [this] {
         updateSource();
         emit changed();
     });
-
     connect(m_preset, &QComboBox::currentIndexChanged, this, [this] {
         updatePreset();
         emit changed();
     });
     connect(m_scale, &QComboBox::currentIndexChanged, this, &InputPanel::changed);
     connect(this, &InputPanel::changed, this, &ExcitationPanel::updateTimes);
-    setEnvelope(Envelope::fromPreset(EnvelopePreset::Moderate));
-    updateSource();
 }
 
 void ExcitationPanel::updateSource() {

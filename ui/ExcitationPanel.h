@@ -43,6 +43,8 @@ protected:
     QStringList extraProblems() const override;
 
 private:
+    void buildEnvelopeRows(); // source, envelope, α and β
+    void connectRows();
     void updateSource();
     void updatePreset();
     void updateTimes();

@@ -48,9 +48,37 @@ QLineSeries* line(const std::vector<FragilityCurvePoint>& curve,
     return s;
 }
 
-} // namespace
+// A set's legend name with its fit (median, β and their flags) or why there is none.
+QString fittedName(const Fragility& f, const std::vector<Fragility>& sets) {
+    const QString name = setName(f.parameters, sets);
+    if (!f.fit) return name + QObject::tr(" (no fit: %1)").arg(QString::fromStdString(f.noFit));
+    return name + QString(": θ = %1 g%2, β = %3%4")
+                      .arg(f.fit->median, 0, 'g', 3)
+                      .arg(f.medianBeyondSearch ? QObject::tr(" (extrapolated)") : QString())
+                      .arg(f.fit->beta, 0, 'g', 2)
+                      .arg(f.betaAtBound ? QObject::tr(" (at bound)") : QString());
+}
 
-void fillFragilityChart(QChart* chart, const std::vector<Fragility>& sets) {
+// A set's series: the fitted curve and its bootstrap bounds when there is a fit, then the
+// observed points (always last).
+QList<QXYSeries*> setSeries(const Fragility& f) {
+    QList<QXYSeries*> series;
+    if (f.fit) {
+        series << line(f.curve, &FragilityCurvePoint::probability);
+        if (f.medianLower)
+            series << line(f.curve, &FragilityCurvePoint::lower)
+                   << line(f.curve, &FragilityCurvePoint::upper);
+    }
+    auto* points = new QScatterSeries;
+    points->setMarkerSize(8);
+    for (const auto& p : f.points)
+        points->append(p.intensity, p.probability);
+    series << points;
+    return series;
+}
+
+// Fresh axes: the critical intensity across, P(collapse) from 0 to 1 up.
+std::pair<QValueAxis*, QValueAxis*> freshAxes(QChart* chart, const std::vector<Fragility>& sets) {
     chart->removeAllSeries();
     for (QAbstractAxis* a : chart->axes())
         chart->removeAxis(a);
@@ -65,48 +93,48 @@ void fillFragilityChart(QChart* chart, const std::vector<Fragility>& sets) {
     chart->addAxis(y, Qt::AlignLeft);
     useNiceTicks(x);
     useNiceTicks(y, 5);
+    return {x, y};
+}
+
+// Adds one set's series in its colour: the first bold and named, bounds dashed. Returns the
+// largest intensity among them (0 for none).
+double addSet(QChart* chart, const QList<QXYSeries*>& series, const QColor& colour,
+              const QString& name, QValueAxis* x, QValueAxis* y) {
     double top = 0.0;
-    // Ten distinct colours (the "tab10" palette) before any repeats.
-    const QList<QColor> colours = {
+    for (int k = 0; k < series.size(); ++k) {
+        QXYSeries* s = series[k];
+        const bool dashed = k > 0 && k + 1 < series.size(); // the last is the points
+        s->setPen(QPen(colour, k == 0 ? 2.0 : 1.0, dashed ? Qt::DashLine : Qt::SolidLine));
+        s->setColor(colour);
+        s->setName(k == 0 ? name : QString());
+        chart->addSeries(s);
+        s->attachAxis(x);
+        s->attachAxis(y);
+        for (const QPointF& pt : s->points())
+            top = std::max(top, pt.x());
+    }
+    return top;
+}
+
+// Ten distinct colours (the "tab10" palette) before any repeats.
+const QList<QColor>& setColours() {
+    static const QList<QColor> colours = {
         QColor(31, 119, 180), QColor(214, 39, 40), QColor(44, 160, 44),   QColor(148, 103, 189),
         QColor(255, 127, 14), QColor(140, 86, 75), QColor(227, 119, 194), QColor(127, 127, 127),
         QColor(188, 189, 34), QColor(23, 190, 207)};
+    return colours;
+}
+
+} // namespace
+
+void fillFragilityChart(QChart* chart, const std::vector<Fragility>& sets) {
+    const auto [x, y] = freshAxes(chart, sets);
+    const QList<QColor>& colours = setColours();
+    double top = 0.0;
     for (std::size_t i = 0; i < sets.size(); ++i) {
-        const Fragility& f = sets[i];
         const QColor colour = colours[static_cast<int>(i) % colours.size()];
-        QList<QXYSeries*> series;
-        QString name = setName(f.parameters, sets);
-        if (f.fit) {
-            name += QString(": θ = %1 g%2, β = %3%4")
-                        .arg(f.fit->median, 0, 'g', 3)
-                        .arg(f.medianBeyondSearch ? QObject::tr(" (extrapolated)") : QString())
-                        .arg(f.fit->beta, 0, 'g', 2)
-                        .arg(f.betaAtBound ? QObject::tr(" (at bound)") : QString());
-            series << line(f.curve, &FragilityCurvePoint::probability);
-            if (f.medianLower)
-                series << line(f.curve, &FragilityCurvePoint::lower)
-                       << line(f.curve, &FragilityCurvePoint::upper);
-        } else {
-            name += QObject::tr(" (no fit: %1)").arg(QString::fromStdString(f.noFit));
-        }
-        auto* points = new QScatterSeries;
-        points->setMarkerSize(8);
-        for (const auto& p : f.points)
-            points->append(p.intensity, p.probability);
-        series << points;
-        for (int k = 0; k < series.size(); ++k) {
-            QXYSeries* s = series[k];
-            QPen pen(colour, k == 0 ? 2.0 : 1.0,
-                     k == 0 || s == points ? Qt::SolidLine : Qt::DashLine);
-            s->setPen(pen);
-            s->setColor(colour);
-            s->setName(k == 0 ? name : QString());
-            chart->addSeries(s);
-            s->attachAxis(x);
-            s->attachAxis(y);
-            for (const QPointF& pt : s->points())
-                top = std::max(top, pt.x());
-        }
+        top = std::max(top,
+                       addSet(chart, setSeries(sets[i]), colour, fittedName(sets[i], sets), x, y));
     }
     // One legend entry per set: the named series (the fitted curve, or the points without a fit).
     for (QLegendMarker* m : chart->legend()->markers())

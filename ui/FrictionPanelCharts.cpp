@@ -57,52 +57,75 @@ void FrictionPanel::fillCurveChart() {
                axis(tr("V (%1)").arg(u.f), 0.0, 1.05 * vMax));
 }
 
+namespace {
+
+// How Fig. 21 is drawn: CP in the shown pressure unit, V∞ times `scale` (the shown force, or
+// the shown pressure over A_b), points up to maxCpPsi fitted, the fit with or without intercept.
+struct CoulombScales {
+    double cp = 1, scale = 1, maxCpPsi = 0;
+    bool intercept = true;
+};
+
+// A configuration's Coulomb line from CP = 0 to the fit's limit.
+QLineSeries* coulombLine(const ConfigurationCalibration& c, const CoulombScales& cs,
+                         const QColor& colour) {
+    const double slope =
+        cs.intercept ? c.coulomb->slopeWithIntercept : c.coulomb->slopeThroughOrigin;
+    const double v0 = cs.intercept ? c.coulomb->interceptKips : 0.0;
+    const double top = cs.maxCpPsi;
+    auto* l = new QLineSeries;
+    l->replace({QPointF(0.0, cs.scale * v0), QPointF(cs.cp * top, cs.scale * (v0 + slope * top))});
+    l->setName(FrictionPanel::tr("%1 fit").arg(QString::fromStdString(c.configuration)));
+    l->setPen(QPen(colour, 2, Qt::DashLine));
+    return l;
+}
+
+// One configuration's series: the fitted points, those above the limit (lighter squares) and
+// its Coulomb line. yMax and cpMax grow to hold its points.
+QList<QAbstractSeries*> configurationSeries(const ConfigurationCalibration& c,
+                                            const CoulombScales& cs, const QColor& colour,
+                                            double& yMax, double& cpMax) {
+    QList<QPointF> used, excluded;
+    for (const CoulombPoint& p : c.points) {
+        (p.cpPsi <= cs.maxCpPsi ? used : excluded).append({cs.cp * p.cpPsi, cs.scale * p.vInfKips});
+        yMax = std::max(yMax, cs.scale * p.vInfKips);
+        cpMax = std::max(cpMax, cs.cp * p.cpPsi);
+    }
+    QList<QAbstractSeries*> series;
+    auto* s = new QScatterSeries;
+    s->replace(used);
+    s->setName(QString::fromStdString(c.configuration));
+    s->setColor(colour);
+    series << s;
+    if (!excluded.isEmpty()) {
+        auto* x = new QScatterSeries;
+        x->replace(excluded);
+        x->setName(FrictionPanel::tr("%1 (excluded)").arg(QString::fromStdString(c.configuration)));
+        x->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
+        x->setColor(colour.lighter(160));
+        series << x;
+    }
+    if (c.coulomb) series << coulombLine(c, cs, colour);
+    return series;
+}
+
+} // namespace
+
 void FrictionPanel::fillCoulombChart() {
     // Fig. 21: V_inf (or tau_inf with A_b) against CP, with the least-squares line for CP <= limit.
     const ShownUnits u = shownUnits(units_);
     const bool withArea = areaIn2_ > 0.0;
+    CoulombScales cs;
+    cs.cp = u.pressure;
     // kips -> psi over A_b, then into the shown pressure (or force) unit.
-    const double scale = withArea ? u.pressure * 1000.0 / bearingAreaIn2() : u.force;
-    const bool intercept = slopeKind_->currentIndex() == 0;
+    cs.scale = withArea ? u.pressure * 1000.0 / bearingAreaIn2() : u.force;
+    cs.maxCpPsi = calibration_.options.maxCpPsi;
+    cs.intercept = slopeKind_->currentIndex() == 0;
     QList<QAbstractSeries*> series;
     double yMax = 1.0, cpMax = 100.0 * u.pressure;
     int k = 0;
-    for (const ConfigurationCalibration& c : calibration_.configurations) {
-        QList<QPointF> used, excluded, line;
-        for (const CoulombPoint& p : c.points) {
-            (p.cpPsi <= calibration_.options.maxCpPsi ? used : excluded)
-                .append({u.pressure * p.cpPsi, scale * p.vInfKips});
-            yMax = std::max(yMax, scale * p.vInfKips);
-            cpMax = std::max(cpMax, u.pressure * p.cpPsi);
-        }
-        auto* s = new QScatterSeries;
-        s->replace(used);
-        s->setName(QString::fromStdString(c.configuration));
-        s->setColor(cpColor(k));
-        series << s;
-        if (!excluded.isEmpty()) {
-            auto* x = new QScatterSeries;
-            x->replace(excluded);
-            x->setName(tr("%1 (excluded)").arg(QString::fromStdString(c.configuration)));
-            x->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
-            x->setColor(cpColor(k).lighter(160));
-            series << x;
-        }
-        if (c.coulomb) {
-            const double slope =
-                intercept ? c.coulomb->slopeWithIntercept : c.coulomb->slopeThroughOrigin;
-            const double v0 = intercept ? c.coulomb->interceptKips : 0.0;
-            const double top = calibration_.options.maxCpPsi;
-            line << QPointF(0.0, scale * v0)
-                 << QPointF(u.pressure * top, scale * (v0 + slope * top));
-            auto* l = new QLineSeries;
-            l->replace(line);
-            l->setName(tr("%1 fit").arg(QString::fromStdString(c.configuration)));
-            l->setPen(QPen(cpColor(k), 2, Qt::DashLine));
-            series << l;
-        }
-        ++k;
-    }
+    for (const ConfigurationCalibration& c : calibration_.configurations)
+        series << configurationSeries(c, cs, cpColor(k++), yMax, cpMax);
     coulomb_->chart()->setTitle(withArea ? tr("τ∞ = V∞ / A_b against confining pressure")
                                          : tr("V∞ against confining pressure"));
     resetChart(coulomb_->chart(), series, axis(tr("CP (%1)").arg(u.p), 0.0, 1.05 * cpMax),

@@ -56,8 +56,46 @@ int HistoryChart::sampleCount() const {
     return static_cast<int>(m_delta->count());
 }
 
+namespace {
+
+// Slip shading: a step curve at the top of the δ axis (±yd) while slipping, at its bottom
+// otherwise, and the base the area fills down to.
+std::pair<QList<QPointF>, QList<QPointF>> slipShading(const std::vector<HistorySample>& samples,
+                                                      double yd) {
+    QList<QPointF> top, base;
+    double previous = 0;
+    for (const HistorySample& s : samples) {
+        const double v = s.state != 0 ? yd : -yd;
+        if (!top.isEmpty() && v != previous) top.append({s.tau, previous});
+        top.append({s.tau, v});
+        previous = v;
+    }
+    for (const QPointF& p : top)
+        base.append({p.x(), -yd});
+    return {top, base};
+}
+
+// "A = …, f = …: collapses at τc = … (γc = …), n slip intervals (cf. Fig. 35)".
+QString historyTitle(const PointRun& run) {
+    const SlabResult& r = run.result;
+    const QString outcome = r.outcome == Outcome::Collapsed
+                                ? HistoryChart::tr("collapses at τc = %1 (γc = %2)")
+                                      .arg(r.tauC, 0, 'f', 2)
+                                      .arg(run.tauRef / r.tauC, 0, 'f', 3)
+                                : QString::fromStdString(outcomeName(r.outcome));
+    const QString drive = run.drive.empty() ? HistoryChart::tr("A = %1 g, f = %2 Hz")
+                                                  .arg(run.amplitude, 0, 'f', 3)
+                                                  .arg(run.frequency, 0, 'f', 3)
+                                            : QString::fromStdString(run.drive);
+    return HistoryChart::tr("%1: %2, %3 slip intervals (cf. Fig. 35)")
+        .arg(drive, outcome)
+        .arg(r.slipIntervals);
+}
+
+} // namespace
+
 void HistoryChart::setRun(const PointRun& run) {
-    QList<QPointF> delta, accel, top, base;
+    QList<QPointF> delta, accel;
     double dMax = run.limit;
     const double tauEnd = run.envelope.empty() ? 1.0 : run.envelope.back().tau;
     for (const HistorySample& s : run.history.samples) {
@@ -66,16 +104,7 @@ void HistoryChart::setRun(const PointRun& run) {
         dMax = std::max(dMax, std::abs(s.delta));
     }
     const double yd = 1.15 * dMax;
-    // Slip shading: a step curve at the top of the δ axis while slipping, at its bottom otherwise.
-    double previous = 0;
-    for (const HistorySample& s : run.history.samples) {
-        const double v = s.state != 0 ? yd : -yd;
-        if (!top.isEmpty() && v != previous) top.append({s.tau, previous});
-        top.append({s.tau, v});
-        previous = v;
-    }
-    for (const QPointF& p : top)
-        base.append({p.x(), -yd});
+    const auto [top, base] = slipShading(run.history.samples, yd);
     QList<QPointF> up, down;
     double aMax = run.mu;
     for (const EnvelopeSample& e : run.envelope) {
@@ -94,18 +123,7 @@ void HistoryChart::setRun(const PointRun& run) {
     m_x->setRange(0, tauEnd);
     m_yDelta->setRange(-yd, yd);
     m_yAccel->setRange(-1.15 * aMax, 1.15 * aMax);
-    const SlabResult& r = run.result;
-    const QString outcome = r.outcome == Outcome::Collapsed
-                                ? tr("collapses at τc = %1 (γc = %2)")
-                                      .arg(r.tauC, 0, 'f', 2)
-                                      .arg(run.tauRef / r.tauC, 0, 'f', 3)
-                                : QString::fromStdString(outcomeName(r.outcome));
-    const QString drive =
-        run.drive.empty()
-            ? tr("A = %1 g, f = %2 Hz").arg(run.amplitude, 0, 'f', 3).arg(run.frequency, 0, 'f', 3)
-            : QString::fromStdString(run.drive);
-    chart()->setTitle(
-        tr("%1: %2, %3 slip intervals (cf. Fig. 35)").arg(drive, outcome).arg(r.slipIntervals));
+    chart()->setTitle(historyTitle(run));
 }
 
 void HistoryChart::clearRun() {

@@ -47,6 +47,8 @@ protected:
 private:
     void buildPlanarRows();
     void buildBlockRows(); // ModelPanelBlock.cpp
+    void buildBlockFields();
+    void buildMapFields();
     void showBlock(const BlockMapSettings& s);
     void updateMode();
     void updateBlockNotes();

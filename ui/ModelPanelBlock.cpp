@@ -16,7 +16,34 @@
 
 namespace kinstab::ui {
 
-void ModelPanel::buildBlockRows() {
+namespace {
+
+QComboBox* equationsCombo(QWidget* parent) {
+    auto* c = new QComboBox(parent);
+    c->setObjectName(QStringLiteral("blockEquations"));
+    c->addItem(ModelPanel::tr("exact"));
+    c->addItem(ModelPanel::tr("linearised"));
+    c->setToolTip(ModelPanel::tr("The exact equations of rocking, or the linearised ones of the "
+                                 "closed forms (slender blocks). The other's boundary is drawn "
+                                 "over the map."));
+    return c;
+}
+
+QComboBox* pulseCombo(QWidget* parent) {
+    auto* c = new QComboBox(parent);
+    c->setObjectName(QStringLiteral("blockPulse"));
+    for (PulseShape s : {PulseShape::HalfSine, PulseShape::OneSine, PulseShape::OneCosine,
+                         PulseShape::Rectangular})
+        c->addItem(QString::fromUtf8(pulseShapeName(s).data(),
+                                     static_cast<int>(pulseShapeName(s).size())));
+    c->setToolTip(ModelPanel::tr("The pulse of the map. Rectangular: ω_p/p stands for 2π/(p t₁)."));
+    return c;
+}
+
+} // namespace
+
+// b, h, the base's μ and the restitution.
+void ModelPanel::buildBlockFields() {
     m_b = addField("blockHalfWidth", tr("Half-&width b:"), QString(),
                    tr("Half the width of the block's base (its rocking lever): α = atan(b/h)."));
     m_b->setLength(LengthScale::Structure, 1.0); // kept in metres
@@ -36,22 +63,10 @@ void ModelPanel::buildBlockRows() {
                     "(angular momentum about the new corner)."));
     m_restitution->setCheck(rangeCheck(kRestitutionInput.range));
     m_restitution->setOptional(tr("Housner's"));
-    m_equations = new QComboBox(this);
-    m_equations->setObjectName(QStringLiteral("blockEquations"));
-    m_equations->addItem(tr("exact"));
-    m_equations->addItem(tr("linearised"));
-    m_equations->setToolTip(tr("The exact equations of rocking, or the linearised ones of the "
-                               "closed forms (slender blocks). The other's boundary is drawn "
-                               "over the map."));
-    form()->addRow(tr("Equations:"), m_equations);
-    m_pulse = new QComboBox(this);
-    m_pulse->setObjectName(QStringLiteral("blockPulse"));
-    for (PulseShape s : {PulseShape::HalfSine, PulseShape::OneSine, PulseShape::OneCosine,
-                         PulseShape::Rectangular})
-        m_pulse->addItem(QString::fromUtf8(pulseShapeName(s).data(),
-                                           static_cast<int>(pulseShapeName(s).size())));
-    m_pulse->setToolTip(tr("The pulse of the map. Rectangular: ω_p/p stands for 2π/(p t₁)."));
-    form()->addRow(tr("Pulse:"), m_pulse);
+}
+
+// The map's axes and points, and the note with α, p and η below them.
+void ModelPanel::buildMapFields() {
     m_aMax = addField("mapAmplitudeMax", tr("a_p/(αg) up to:"), QString(),
                       tr("The map's amplitude axis runs from one step above 0 to this."));
     m_aMax->setCheck(rangeCheck(kMapAmplitudeMaxInput.range));
@@ -67,6 +82,15 @@ void ModelPanel::buildBlockRows() {
     m_blockNote = new QLabel(this);
     m_blockNote->setWordWrap(true);
     form()->addRow(QString(), m_blockNote);
+}
+
+void ModelPanel::buildBlockRows() {
+    buildBlockFields();
+    m_equations = equationsCombo(this);
+    form()->addRow(tr("Equations:"), m_equations);
+    m_pulse = pulseCombo(this);
+    form()->addRow(tr("Pulse:"), m_pulse);
+    buildMapFields();
     for (QComboBox* c : {m_equations, m_pulse}) {
         c->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
         c->setMinimumContentsLength(12);

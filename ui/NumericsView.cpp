@@ -25,9 +25,85 @@ namespace kinstab::ui {
 namespace {
 // Errors of exactly zero (bit-identical to the reference) still need a place on a log axis.
 constexpr double kErrorFloor = 1e-17;
+
+QChart* workPrecisionChart() {
+    auto* chart = new QChart;
+    chart->setTitle(
+        NumericsView::tr("Work-precision: error against run time (log-log), a line per case"));
+    chart->setAnimationOptions(QChart::NoAnimation);
+    // The legend (three solvers) beside the plot and no frame around the chart: at 1280 × 800
+    // the tab is about 400 px tall, and every pixel of chrome comes off the plot.
+    chart->legend()->setAlignment(Qt::AlignRight);
+    chart->layout()->setContentsMargins(0, 0, 0, 0);
+    chart->setBackgroundRoundness(0);
+    return chart;
+}
+
+// The study's finite rows as (error, time) points, one curve per "case / solver", and the
+// ranges both axes must hold (1 to 1 when there is no point).
+struct PrecisionCurves {
+    std::map<std::string, QList<QPointF>> curves;
+    double lo = 1.0, hi = 1.0, tlo = 1.0, thi = 1.0;
+};
+
+PrecisionCurves precisionCurves(const WorkPrecisionStudy& study) {
+    PrecisionCurves c;
+    bool first = true;
+    for (const WorkPrecisionRow& row : study.rows) {
+        if (!std::isfinite(row.error) || !(row.timing.minSeconds > 0.0)) continue;
+        const double e = std::max(row.error, kErrorFloor);
+        const double t = row.timing.minSeconds;
+        c.curves[row.caseId + " / " + row.solver].append({e, t});
+        c.lo = first ? e : std::min(c.lo, e);
+        c.hi = first ? e : std::max(c.hi, e);
+        c.tlo = first ? t : std::min(c.tlo, t);
+        c.thi = first ? t : std::max(c.thi, t);
+        first = false;
+    }
+    return c;
+}
+
+QLogValueAxis* logAxis(const QString& title, double lo, double hi) {
+    auto* a = new QLogValueAxis;
+    a->setTitleText(title);
+    a->setLabelFormat("%.0e");
+    a->setRange(lo / 3.0, hi * 3.0);
+    return a;
+}
+
+// One line per case and solver, coloured by solver, with one legend entry per solver: a
+// legend entry per line (15 and more) took all but 30 px of the chart at 1280 × 800. The
+// table below names every case. Returns the number of lines.
+int addPrecisionCurves(QChart* chart, const PrecisionCurves& c, QAbstractAxis* x,
+                       QAbstractAxis* y) {
+    const QColor palette[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28),
+                              QColor(0x2c, 0xa0, 0x2c), QColor(0x94, 0x67, 0xbd),
+                              QColor(0xff, 0x7f, 0x0e)};
+    std::map<std::string, QColor> solverColour;
+    int count = 0;
+    for (const auto& [name, points] : c.curves) {
+        const std::string solver = name.substr(name.rfind(" / ") + 3);
+        const bool firstOfSolver = !solverColour.count(solver);
+        if (firstOfSolver) solverColour[solver] = palette[solverColour.size() % std::size(palette)];
+        auto* series = new QLineSeries;
+        series->setName(QString::fromStdString(solver));
+        series->setColor(solverColour[solver]);
+        series->setPointsVisible(true);
+        series->replace(points);
+        chart->addSeries(series);
+        series->attachAxis(x);
+        series->attachAxis(y);
+        if (!firstOfSolver)
+            for (QLegendMarker* m : chart->legend()->markers(series))
+                m->setVisible(false);
+        ++count;
+    }
+    return count;
+}
+
 } // namespace
 
-NumericsView::NumericsView(QWidget* parent) : QWidget(parent), m_job(this) {
+QHBoxLayout* NumericsView::buildBar() {
     m_run = new QPushButton(tr("Run study"), this);
     m_run->setToolTip(
         tr("Times every solver and setting on the fixed case set (paper grid at 1 Hz, "
@@ -45,16 +121,11 @@ NumericsView::NumericsView(QWidget* parent) : QWidget(parent), m_job(this) {
     bar->addWidget(m_cancel);
     bar->addWidget(m_regularized);
     bar->addWidget(m_progress, 1);
+    return bar;
+}
 
-    auto* chart = new QChart;
-    chart->setTitle(tr("Work-precision: error against run time (log-log), a line per case"));
-    chart->setAnimationOptions(QChart::NoAnimation);
-    // The legend (three solvers) beside the plot and no frame around the chart: at 1280 × 800
-    // the tab is about 400 px tall, and every pixel of chrome comes off the plot.
-    chart->legend()->setAlignment(Qt::AlignRight);
-    chart->layout()->setContentsMargins(0, 0, 0, 0);
-    chart->setBackgroundRoundness(0);
-    m_chart = new QChartView(chart, this);
+QSplitter* NumericsView::buildChartAndTable() {
+    m_chart = new QChartView(workPrecisionChart(), this);
     m_chart->setRenderHint(QPainter::Antialiasing);
     m_table = new QPlainTextEdit(this);
     m_table->setReadOnly(true);
@@ -71,7 +142,12 @@ NumericsView::NumericsView(QWidget* parent) : QWidget(parent), m_job(this) {
     m_table->setMinimumHeight(4 * m_table->fontMetrics().lineSpacing() + 12);
     split->setChildrenCollapsible(false);
     split->setSizes({300, 100}); // in proportion: a quarter for the table
+    return split;
+}
 
+NumericsView::NumericsView(QWidget* parent) : QWidget(parent), m_job(this) {
+    QHBoxLayout* bar = buildBar();
+    QSplitter* split = buildChartAndTable();
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(bar);
     layout->addWidget(split, 1);
@@ -131,54 +207,13 @@ void NumericsView::showStudy(const WorkPrecisionStudy& study) {
     chart->removeAllSeries();
     for (QAbstractAxis* axis : chart->axes())
         chart->removeAxis(axis);
-    std::map<std::string, QList<QPointF>> curves;
-    double lo = 1.0, hi = 1.0, tlo = 1.0, thi = 1.0;
-    bool first = true;
-    for (const WorkPrecisionRow& row : study.rows) {
-        if (!std::isfinite(row.error) || !(row.timing.minSeconds > 0.0)) continue;
-        const double e = std::max(row.error, kErrorFloor);
-        curves[row.caseId + " / " + row.solver].append({e, row.timing.minSeconds});
-        lo = first ? e : std::min(lo, e);
-        hi = first ? e : std::max(hi, e);
-        tlo = first ? row.timing.minSeconds : std::min(tlo, row.timing.minSeconds);
-        thi = first ? row.timing.minSeconds : std::max(thi, row.timing.minSeconds);
-        first = false;
-    }
-    auto* x = new QLogValueAxis;
-    x->setTitleText(tr("error (relative τc, or residual δ / limit; 1 = wrong outcome)"));
-    x->setLabelFormat("%.0e");
-    x->setRange(lo / 3.0, hi * 3.0);
-    auto* y = new QLogValueAxis;
-    y->setTitleText(tr("run time, s (minimum of repeats)"));
-    y->setLabelFormat("%.0e");
-    y->setRange(tlo / 3.0, thi * 3.0);
+    const PrecisionCurves c = precisionCurves(study);
+    auto* x =
+        logAxis(tr("error (relative τc, or residual δ / limit; 1 = wrong outcome)"), c.lo, c.hi);
+    auto* y = logAxis(tr("run time, s (minimum of repeats)"), c.tlo, c.thi);
     chart->addAxis(x, Qt::AlignBottom);
     chart->addAxis(y, Qt::AlignLeft);
-    m_curves = 0;
-    // One line per case and solver, coloured by solver, with one legend entry per solver: a
-    // legend entry per line (15 and more) took all but 30 px of the chart at 1280 × 800. The
-    // table below names every case.
-    const QColor palette[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28),
-                              QColor(0x2c, 0xa0, 0x2c), QColor(0x94, 0x67, 0xbd),
-                              QColor(0xff, 0x7f, 0x0e)};
-    std::map<std::string, QColor> solverColour;
-    for (auto& [name, points] : curves) {
-        const std::string solver = name.substr(name.rfind(" / ") + 3);
-        const bool firstOfSolver = !solverColour.count(solver);
-        if (firstOfSolver) solverColour[solver] = palette[solverColour.size() % std::size(palette)];
-        auto* series = new QLineSeries;
-        series->setName(QString::fromStdString(solver));
-        series->setColor(solverColour[solver]);
-        series->setPointsVisible(true);
-        series->replace(points);
-        chart->addSeries(series);
-        series->attachAxis(x);
-        series->attachAxis(y);
-        if (!firstOfSolver)
-            for (QLegendMarker* m : chart->legend()->markers(series))
-                m->setVisible(false);
-        ++m_curves;
-    }
+    m_curves = addPrecisionCurves(chart, c, x, y);
     m_table->setPlainText(QString::fromStdString(workPrecisionText(study)));
     emit studyShown();
 }

@@ -12,9 +12,11 @@
 
 class QChartView;
 class QCheckBox;
+class QHBoxLayout;
 class QPlainTextEdit;
 class QProgressBar;
 class QPushButton;
+class QSplitter;
 
 namespace kinstab::ui {
 
@@ -35,6 +37,8 @@ signals:
     void studyShown();
 
 private:
+    QHBoxLayout* buildBar();
+    QSplitter* buildChartAndTable();
     void onProgress(qint64 done, qint64 total);
     void onEnded();
 

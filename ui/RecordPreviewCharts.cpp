@@ -3,6 +3,7 @@
 // ground's) with the fitted envelope, and the Fourier amplitude spectra - drawn and emptied.
 
 #include "core/excitation/FourierSpectrum.h"
+#include "ui/NiceTicks.h"
 #include "ui/RecordPreview.h"
 
 #include <QLabel>
@@ -35,15 +36,11 @@ void addSeries(QChart* chart, const QString& name, const QList<QPointF>& points,
 }
 
 // Round tick values (0, 10, 20 s rather than 0, 10.4, 20.9 s) on the data's own range: ticks at
-// multiples of 1, 2 or 5 x 10^k, about `count` of them.
-void niceTicks(QValueAxis* a, double count) {
+// the 1-2-5 step nearest to span / count (ui/NiceTicks.h), about `count` of them.
+void roundTicks(QValueAxis* a, int count) {
     const double span = a->max() - a->min();
     if (!(span > 0.0)) return;
-    const double raw = span / count, decade = std::pow(10.0, std::floor(std::log10(raw)));
-    const double step = raw / decade < 1.5   ? decade
-                        : raw / decade < 3.5 ? 2 * decade
-                        : raw / decade < 7.5 ? 5 * decade
-                                             : 10 * decade;
+    const double step = niceTickStep(span, count);
     a->setTickType(QValueAxis::TicksDynamic);
     a->setTickAnchor(0.0);
     a->setTickInterval(step);
@@ -51,8 +48,8 @@ void niceTicks(QValueAxis* a, double count) {
 }
 
 void niceAxes(QChart* chart) {
-    niceTicks(axis(chart, Qt::Horizontal), 6);
-    niceTicks(axis(chart, Qt::Vertical), 4); // the charts are wide and short
+    roundTicks(axis(chart, Qt::Horizontal), 6);
+    roundTicks(axis(chart, Qt::Vertical), 4); // the charts are wide and short
 }
 
 void clearSeries(QChart* chart) {

@@ -79,103 +79,147 @@ QSurface3DSeries* makeOverlay(const QColor& color) {
     return s;
 }
 
-void drawOverlays3D(SurfaceGraph3D& g3, const GammaGrid& grid, const SurfaceOverlays& overlays) {
-    Q3DSurface* g = g3.graph;
+namespace {
+
+// The fitted axes and the sizes the overlays are drawn with.
+struct OverlayFrame {
+    const GammaGrid& grid;
+    float yMax = 0, aMin = 0, aMax = 0, fMin = 0, fMax = 0;
+    float lift = 0;       // above the surface, so the overlay does not z-fight
+    float wa = 0, wf = 0; // the strips' half widths along A and f
+
+    bool onGridA(double a) const {
+        return a >= grid.amplitudes.front() && a <= grid.amplitudes.back();
+    }
+    bool onGridF(double f) const {
+        return f >= grid.frequencies.front() && f <= grid.frequencies.back();
+    }
+    float heightAt(std::size_t fi, double a) const {
+        const double v = gammaAtAmplitude(grid, fi, a);
+        return static_cast<float>(std::isfinite(v) ? v : 0.0) + lift;
+    }
+};
+
+void removeOverlays(SurfaceGraph3D& g3) {
     for (QSurface3DSeries* s : g3.overlays) {
-        g->removeSeries(s);
+        g3.graph->removeSeries(s);
         delete s;
     }
     g3.overlays.clear();
-    g->removeCustomItems();
-    if (grid.empty()) return;
+    g3.graph->removeCustomItems();
+}
 
-    // Axes fit the grid (widened to whole 1-2-5 steps); code ratios and the building's frequency
-    // are drawn only where they fall on the surface, the legend lists the others.
-    // The f axis runs into the depth, foreshortened: at 10 ticks its labels ran into each other
-    // (0.5 0.6 0.7 ... at a 1280 px window); 5 keep them apart, 6 for A across the front.
+void applyNiceAxis(QValue3DAxis* axis, const NiceAxis& n) {
+    axis->setRange(static_cast<float>(n.min), static_cast<float>(n.max));
+    axis->setSegmentCount(n.segments());
+    axis->setSubSegmentCount(1);
+    axis->setLabelFormat(QStringLiteral("%.%1f").arg(n.decimals()));
+}
+
+// Axes fit the grid (widened to whole 1-2-5 steps).
+// The f axis runs into the depth, foreshortened: at 10 ticks its labels ran into each other
+// (0.5 0.6 0.7 ... at a 1280 px window); 5 keep them apart, 6 for A across the front.
+OverlayFrame fitAxes(Q3DSurface* g, const GammaGrid& grid) {
     const NiceAxis ax = niceAxis(grid.amplitudes.front(), grid.amplitudes.back(), 6);
     const NiceAxis fx = niceAxis(grid.frequencies.front(), grid.frequencies.back(), 5);
     const float yMax = static_cast<float>(colourScaleMaximum(grid));
-    const NiceAxis yx = niceAxis(0, yMax, 6);
-    auto apply = [](QValue3DAxis* axis, const NiceAxis& n) {
-        axis->setRange(static_cast<float>(n.min), static_cast<float>(n.max));
-        axis->setSegmentCount(n.segments());
-        axis->setSubSegmentCount(1);
-        axis->setLabelFormat(QStringLiteral("%.%1f").arg(n.decimals()));
-    };
-    apply(g->axisX(), ax);
-    apply(g->axisZ(), fx);
-    apply(g->axisY(), yx);
-    const float aMin = static_cast<float>(ax.min), aMax = static_cast<float>(ax.max);
-    const float fMin = static_cast<float>(fx.min), fMax = static_cast<float>(fx.max);
-    auto onGrid = [&](double a) {
-        return a >= grid.amplitudes.front() && a <= grid.amplitudes.back();
-    };
-    const float lift = 0.012f * yMax; // above the surface, so the overlay does not z-fight
-    const float wa = 0.004f * (aMax - aMin), wf = 0.006f * (fMax - fMin);
-    std::vector<float> zs(grid.frequencies.begin(), grid.frequencies.end());
-    auto heightAt = [&](std::size_t fi, double a) {
-        const double v = gammaAtAmplitude(grid, fi, a);
-        return static_cast<float>(std::isfinite(v) ? v : 0.0) + lift;
-    };
-    auto add = [&](QSurface3DSeries* s, QSurfaceDataArray* array) {
-        s->dataProxy()->resetArray(array);
-        g->addSeries(s);
-        g3.overlays.push_back(s);
-    };
-    for (const CodeRatio& c : overlays.codes) {
-        if (!onGrid(c.ratio)) continue;
+    applyNiceAxis(g->axisX(), ax);
+    applyNiceAxis(g->axisZ(), fx);
+    applyNiceAxis(g->axisY(), niceAxis(0, yMax, 6));
+    OverlayFrame fr{grid};
+    fr.yMax = yMax;
+    fr.aMin = static_cast<float>(ax.min), fr.aMax = static_cast<float>(ax.max);
+    fr.fMin = static_cast<float>(fx.min), fr.fMax = static_cast<float>(fx.max);
+    fr.lift = 0.012f * yMax;
+    fr.wa = 0.004f * (fr.aMax - fr.aMin), fr.wf = 0.006f * (fr.fMax - fr.fMin);
+    return fr;
+}
+
+void addOverlay(SurfaceGraph3D& g3, QSurface3DSeries* s, QSurfaceDataArray* array) {
+    s->dataProxy()->resetArray(array);
+    g3.graph->addSeries(s);
+    g3.overlays.push_back(s);
+}
+
+// One narrow strip along f at each code ratio on the grid.
+void addCodeStrips(SurfaceGraph3D& g3, const OverlayFrame& fr,
+                   const std::vector<CodeRatio>& codes) {
+    const std::vector<float> zs(fr.grid.frequencies.begin(), fr.grid.frequencies.end());
+    for (const CodeRatio& c : codes) {
+        if (!fr.onGridA(c.ratio)) continue;
         const float a = static_cast<float>(c.ratio);
-        add(makeOverlay(c.color), makeArray(zs, {a - wa, a + wa}, [&](std::size_t r, std::size_t) {
-                return heightAt(r, c.ratio);
-            }));
+        addOverlay(g3, makeOverlay(c.color),
+                   makeArray(zs, {a - fr.wa, a + fr.wa},
+                             [&](std::size_t r, std::size_t) { return fr.heightAt(r, c.ratio); }));
     }
-    if (overlays.buildingFrequency && *overlays.buildingFrequency >= grid.frequencies.front() &&
-        *overlays.buildingFrequency <= grid.frequencies.back()) {
-        const double fb = *overlays.buildingFrequency;
-        const std::size_t fi = nearestFrequency(grid, fb);
-        std::vector<float> xs(grid.amplitudes.begin(), grid.amplitudes.end());
-        const float f = static_cast<float>(fb);
-        add(makeOverlay(Qt::black),
-            makeArray({f - wf, f + wf}, xs,
-                      [&](std::size_t, std::size_t c) { return heightAt(fi, xs[c]); }));
-        for (std::size_t k = 0; k < overlays.codes.size(); ++k) {
-            const CodeRatio& c = overlays.codes[k];
-            if (!onGrid(c.ratio)) continue;
-            const float stagger = (0.10f + 0.09f * static_cast<float>(k)) * yMax; // close ratios
-            auto* label = new QCustom3DLabel(
-                QStringLiteral("%1 %2").arg(c.name).arg(c.ratio, 0, 'f', 2),
-                g->activeTheme()->font(),
-                QVector3D(static_cast<float>(c.ratio), heightAt(fi, c.ratio) + stagger, f),
-                QVector3D(1.1f, 1.1f, 0.0f), QQuaternion()); // about the axis labels' size
-            label->setFacingCamera(true);
-            label->setTextColor(c.color.darker(130));
-            label->setBorderEnabled(false);
-            label->setBackgroundEnabled(false);
-            g->addCustomItem(label);
-        }
+}
+
+// The code ratios named where they cross the building's frequency, staggered upwards so close
+// ratios do not overlap.
+void addCodeLabels(Q3DSurface* g, const OverlayFrame& fr, const std::vector<CodeRatio>& codes,
+                   std::size_t fi, float f) {
+    for (std::size_t k = 0; k < codes.size(); ++k) {
+        const CodeRatio& c = codes[k];
+        if (!fr.onGridA(c.ratio)) continue;
+        const float stagger = (0.10f + 0.09f * static_cast<float>(k)) * fr.yMax;
+        auto* label = new QCustom3DLabel(
+            QStringLiteral("%1 %2").arg(c.name).arg(c.ratio, 0, 'f', 2), g->activeTheme()->font(),
+            QVector3D(static_cast<float>(c.ratio), fr.heightAt(fi, c.ratio) + stagger, f),
+            QVector3D(1.1f, 1.1f, 0.0f), QQuaternion()); // about the axis labels' size
+        label->setFacingCamera(true);
+        label->setTextColor(c.color.darker(130));
+        label->setBorderEnabled(false);
+        label->setBackgroundEnabled(false);
+        g->addCustomItem(label);
     }
-    // A_crit(f) where it lies on the grid: the renderer crashes (Qt 6.4) on a strip that
-    // leaves the axis range, and the axes no longer stretch to hold it.
+}
+
+// A black strip along A at the building's frequency, with the code ratios' labels on it.
+void addBuildingStrip(SurfaceGraph3D& g3, const OverlayFrame& fr, double fb,
+                      const std::vector<CodeRatio>& codes) {
+    const std::size_t fi = nearestFrequency(fr.grid, fb);
+    const std::vector<float> xs(fr.grid.amplitudes.begin(), fr.grid.amplitudes.end());
+    const float f = static_cast<float>(fb);
+    addOverlay(g3, makeOverlay(Qt::black),
+               makeArray({f - fr.wf, f + fr.wf}, xs,
+                         [&](std::size_t, std::size_t c) { return fr.heightAt(fi, xs[c]); }));
+    addCodeLabels(g3.graph, fr, codes, fi, f);
+}
+
+// A_crit(f) where it lies on the grid: the renderer crashes (Qt 6.4) on a strip that leaves the
+// axis range, and the axes no longer stretch to hold it.
+void addCritStrip(SurfaceGraph3D& g3, const OverlayFrame& fr,
+                  const std::vector<std::pair<double, double>>& aCrit) {
     std::vector<std::pair<double, double>> crit;
-    for (const auto& fa : overlays.aCrit)
-        if (onGrid(fa.second) && fa.first >= grid.frequencies.front() &&
-            fa.first <= grid.frequencies.back())
-            crit.push_back(fa);
-    if (crit.size() >= 2) {
-        // Columns of this strip are not straight (A_crit varies with f); it is two points wide.
-        auto* array = new QSurfaceDataArray;
-        for (const auto& [f, a] : crit) {
-            // On the surface's rising wall, where gamma_c leaves 0.
-            const float y = heightAt(nearestFrequency(grid, f), a);
-            const float x = static_cast<float>(a), z = static_cast<float>(f);
-            auto* row = new QSurfaceDataRow(2);
-            (*row)[0].setPosition(QVector3D(std::max(aMin, x - wa), y, z));
-            (*row)[1].setPosition(QVector3D(std::min(aMax, x + wa), y, z));
-            array->append(row);
-        }
-        add(makeOverlay(QColor(250, 250, 250)), array);
+    for (const auto& fa : aCrit)
+        if (fr.onGridA(fa.second) && fr.onGridF(fa.first)) crit.push_back(fa);
+    if (crit.size() < 2) return;
+    // Columns of this strip are not straight (A_crit varies with f); it is two points wide.
+    auto* array = new QSurfaceDataArray;
+    for (const auto& [f, a] : crit) {
+        // On the surface's rising wall, where gamma_c leaves 0.
+        const float y = fr.heightAt(nearestFrequency(fr.grid, f), a);
+        const float x = static_cast<float>(a), z = static_cast<float>(f);
+        auto* row = new QSurfaceDataRow(2);
+        (*row)[0].setPosition(QVector3D(std::max(fr.aMin, x - fr.wa), y, z));
+        (*row)[1].setPosition(QVector3D(std::min(fr.aMax, x + fr.wa), y, z));
+        array->append(row);
     }
+    addOverlay(g3, makeOverlay(QColor(250, 250, 250)), array);
+}
+
+} // namespace
+
+// Code ratios and the building's frequency are drawn only where they fall on the surface, the
+// legend lists the others.
+void drawOverlays3D(SurfaceGraph3D& g3, const GammaGrid& grid, const SurfaceOverlays& overlays) {
+    removeOverlays(g3);
+    if (grid.empty()) return;
+    const OverlayFrame fr = fitAxes(g3.graph, grid);
+    addCodeStrips(g3, fr, overlays.codes);
+    if (overlays.buildingFrequency && fr.onGridF(*overlays.buildingFrequency))
+        addBuildingStrip(g3, fr, *overlays.buildingFrequency, overlays.codes);
+    addCritStrip(g3, fr, overlays.aCrit);
 }
 
 } // namespace kinstab::ui

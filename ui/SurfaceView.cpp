@@ -44,6 +44,33 @@ SurfaceView::SurfaceView(QWidget* parent)
       m_notice(new QLabel(this)), m_staleLine(new QLabel(StaleFrame::staleText(), this)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
+    addNoticeLines(layout);
+    if (Q3DSurface* g = makeGraph()) {
+        m_3d = std::make_unique<Graph3D>();
+        m_3d->graph = g;
+        build3D();
+    } else {
+        m_mode = SurfaceMode::Map;
+    }
+    layout->addWidget(buildToolBar());
+    buildStack();
+    auto* body = new QHBoxLayout;
+    body->setContentsMargins(0, 0, 0, 0);
+    body->addWidget(m_stack, 1);
+    body->addWidget(m_bar);
+    layout->addLayout(body, 1);
+    // Wrapped between entries (never inside one): on one line each, the code ratios ran off
+    // the right edge of a 1280 px window.
+    m_legend->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_legend->setWordWrap(true);
+    m_legend->setTextFormat(Qt::RichText);
+    layout->addWidget(m_legend);
+    showPage();
+    updateLegend();
+}
+
+// The notice (a yellow band) and the stale line above the toolbar, both hidden until needed.
+void SurfaceView::addNoticeLines(QVBoxLayout* layout) {
     m_notice->setWordWrap(true);
     m_notice->setContentsMargins(8, 6, 8, 6);
     m_notice->setStyleSheet(QStringLiteral("background: #fff4d6; color: #5a4300;"));
@@ -53,14 +80,11 @@ SurfaceView::SurfaceView(QWidget* parent)
     m_staleLine->setStyleSheet(StaleFrame::staleStyle());
     m_staleLine->hide();
     layout->addWidget(m_staleLine);
-    if (Q3DSurface* g = makeGraph()) {
-        m_3d = std::make_unique<Graph3D>();
-        m_3d->graph = g;
-        build3D();
-    } else {
-        m_mode = SurfaceMode::Map;
-    }
-    layout->addWidget(buildToolBar());
+}
+
+// The pages: the empty hint in large text, the 3D graph when there is one, the map; a point
+// picked on the map is picked on the 3D surface too.
+void SurfaceView::buildStack() {
     m_hint->setAlignment(Qt::AlignCenter);
     m_hint->setWordWrap(true);
     m_hint->setObjectName(QStringLiteral("emptyHint"));
@@ -75,19 +99,6 @@ SurfaceView::SurfaceView(QWidget* parent)
         if (m_3d) m_3d->surface->setSelectedPoint(QPoint(fi, ai));
         emit pointSelected(ai, fi);
     });
-    auto* body = new QHBoxLayout;
-    body->setContentsMargins(0, 0, 0, 0);
-    body->addWidget(m_stack, 1);
-    body->addWidget(m_bar);
-    layout->addLayout(body, 1);
-    // Wrapped between entries (never inside one): on one line each, the code ratios ran off
-    // the right edge of a 1280 px window.
-    m_legend->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    m_legend->setWordWrap(true);
-    m_legend->setTextFormat(Qt::RichText);
-    layout->addWidget(m_legend);
-    showPage();
-    updateLegend();
 }
 
 void SurfaceView::build3D() {

@@ -14,6 +14,7 @@
 class QLabel;
 class QStackedWidget;
 class QToolButton;
+class QVBoxLayout;
 
 namespace kinstab::ui {
 
@@ -74,6 +75,8 @@ private:
     using Graph3D = SurfaceGraph3D; // the Data Visualization objects (ui/SurfaceGraph3D.h)
     QWidget* buildToolBar();
     void build3D(); // m_3d->graph set
+    void addNoticeLines(QVBoxLayout* layout);
+    void buildStack();
     void updateLegend();
     void rebuildOverlays();
     void showPage();

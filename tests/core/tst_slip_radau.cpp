@@ -13,6 +13,8 @@
 #include "core/slab/PlanarCase.h"
 #include "core/slab/SlipRadau.h"
 
+#include "SlipRhs.h"
+
 #include <Eigen/LU>
 #include <QtTest>
 
@@ -22,15 +24,9 @@ using namespace kinstab;
 
 namespace {
 
-using Vec4 = OdeVec<4>;
+using testing::slipRhs;
 
-Vec4 slipRhs(const SlabModel2D& m, double t, const Vec4& y) {
-    const Vec2 a = m.accel(t);
-    const double mun = m.params().mu * m.normal(t), r = std::sqrt(y[2] * y[2] + y[3] * y[3]);
-    Vec4 f;
-    f << y[2], y[3], -a.x - mun * y[2] / r, -a.y - mun * y[3] / r;
-    return f;
-}
+using Vec4 = OdeVec<4>;
 
 } // namespace
 

@@ -11,6 +11,8 @@
 #include "core/numerics/SmallLinearSolve.h"
 #include "core/slab/PlanarCase.h"
 
+#include "SlipRhs.h"
+
 #include <QtTest>
 
 #include <cmath>
@@ -19,17 +21,10 @@ using namespace kinstab;
 
 namespace {
 
+using testing::slipRhs;
+
 using Vec4 = OdeVec<4>;
 using Vec5 = Eigen::Matrix<double, 5, 1>;
-
-// The planar slip's right-hand side (core/slab/SlipRadau.h): reads u = (y[2], y[3]) only.
-Vec4 slipRhs(const SlabModel2D& m, double t, const Vec4& y) {
-    const Vec2 a = m.accel(t);
-    const double mun = m.params().mu * m.normal(t), r = std::sqrt(y[2] * y[2] + y[3] * y[3]);
-    Vec4 f;
-    f << y[2], y[3], -a.x - mun * y[2] / r, -a.y - mun * y[3] / r;
-    return f;
-}
 
 // A matrix whose first column's largest entry is in the last row and whose (1,1) entry is 0, so
 // that the elimination must exchange rows; regular (its determinant is far from 0).

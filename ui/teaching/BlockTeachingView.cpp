@@ -4,13 +4,13 @@
 
 #include "ui/teaching/BlockAnimation.h"
 #include "ui/teaching/BlockPresets.h"
+#include "ui/teaching/SidePanel.h"
 #include "ui/teaching/TeachingPlayer.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
-#include <QScrollArea>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QStyle>
@@ -70,41 +70,28 @@ QWidget* BlockTeachingView::buildTransport() {
 }
 
 QWidget* BlockTeachingView::buildSidePanel() {
-    auto* side = new QWidget;
-    auto* v = new QVBoxLayout(side);
-    v->setContentsMargins(0, 0, 0, 0);
-    presets_ = new QComboBox(side);
+    const SideColumn side = sideColumn();
+    QVBoxLayout* v = side.layout;
+    presets_ =
+        presetBox(side.widget, tr("A published case of the rocking literature in one click"));
     presets_->setObjectName(QStringLiteral("blockPresets"));
     for (const BlockPreset& p : blockPresets())
         presets_->addItem(QStringLiteral("%1 · %2").arg(p.title, p.source), p.id);
-    presets_->setToolTip(tr("A published case of the rocking literature in one click"));
-    presets_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    presets_->setMinimumContentsLength(10);
     connect(presets_, &QComboBox::activated, this,
             [this](int i) { applyPreset(presets_->itemData(i).toString()); });
     v->addWidget(presets_);
-    caption_ = new QLabel(side);
-    caption_->setWordWrap(true);
-    caption_->setStyleSheet(QStringLiteral("color: #555;"));
+    caption_ = captionLabel(side.widget);
     v->addWidget(caption_);
-    outcome_ = new QLabel(side);
-    outcome_->setWordWrap(true);
-    outcome_->setTextFormat(Qt::RichText);
+    outcome_ = outcomeLabel(side.widget);
     v->addWidget(outcome_);
-    events_ = new QListWidget(side);
+    events_ = new QListWidget(side.widget);
     events_->setToolTip(tr("Click an event to go to it"));
     connect(events_, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) {
         player_->pause();
         player_->seek(item->data(Qt::UserRole).toDouble());
     });
     v->addWidget(events_, 1);
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidget(side);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setFixedWidth(350);
-    return scroll;
+    return sideScroll(side.widget);
 }
 
 bool BlockTeachingView::applyPreset(const QString& id) {

@@ -14,6 +14,7 @@
 #include <memory>
 
 class QComboBox;
+class QHBoxLayout;
 class QLabel;
 class QPushButton;
 class QSlider;
@@ -77,6 +78,8 @@ private:
     QWidget* buildTransport();
     QComboBox* buildFontScaleBox();
     QWidget* buildSidePanel();
+    QHBoxLayout* buildPresetRow(QWidget* side);
+    QHBoxLayout* buildExportRow(QWidget* side);
     void rerun(const TeachingParams& p);
     void showFrame(double tau);
     void updateOutcome();

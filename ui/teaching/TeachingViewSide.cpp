@@ -4,6 +4,7 @@
 
 #include "ui/teaching/EventLog.h"
 #include "ui/teaching/ParameterPanel.h"
+#include "ui/teaching/SidePanel.h"
 #include "ui/teaching/SlabAnimation.h"
 #include "ui/teaching/StateStyle.h"
 #include "ui/teaching/SurfaceMarker.h"
@@ -15,7 +16,6 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
-#include <QScrollArea>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
@@ -59,37 +59,23 @@ QComboBox* TeachingView::buildFontScaleBox() {
     return fontScaleBox_;
 }
 
-QWidget* TeachingView::buildSidePanel() {
-    auto* side = new QWidget;
-    auto* v = new QVBoxLayout(side);
-    v->setContentsMargins(0, 0, 0, 0);
-    presets_ = new QComboBox(side);
+// The figure presets beside the text size.
+QHBoxLayout* TeachingView::buildPresetRow(QWidget* side) {
+    presets_ = presetBox(side, tr("Reproduce a figure of Furgerson (1980) in one click"));
     presets_->addItem(tr("(your own settings)"), QString());
     for (const FigurePreset& p : figurePresets())
         presets_->addItem(presetListText(p), p.id);
-    presets_->setToolTip(tr("Reproduce a figure of Furgerson (1980) in one click"));
     connect(presets_, &QComboBox::activated, this, [this](int i) {
         const QString id = presets_->itemData(i).toString();
         if (!id.isEmpty()) applyPreset(id);
     });
-    presets_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    presets_->setMinimumContentsLength(10);
     auto* top = new QHBoxLayout;
     top->addWidget(presets_, 1);
     top->addWidget(buildFontScaleBox());
-    v->addLayout(top);
-    caption_ = new QLabel(side);
-    caption_->setWordWrap(true);
-    caption_->setStyleSheet(QStringLiteral("color: #555;"));
-    v->addWidget(caption_);
-    v->addWidget(panel_);
-    outcome_ = new QLabel(side);
-    outcome_->setWordWrap(true);
-    outcome_->setTextFormat(Qt::RichText);
-    v->addWidget(outcome_);
-    marker_->setMinimumHeight(230);
-    v->addWidget(marker_);
-    v->addWidget(log_, 1);
+    return top;
+}
+
+QHBoxLayout* TeachingView::buildExportRow(QWidget* side) {
     auto* exports = new QHBoxLayout;
     auto* frame = new QPushButton(tr("Save frame…"), side);
     frame->setToolTip(tr("The current frame as PNG or SVG"));
@@ -99,17 +85,26 @@ QWidget* TeachingView::buildSidePanel() {
     connect(seq, &QPushButton::clicked, this, &TeachingView::exportSequenceDialog);
     exports->addWidget(frame);
     exports->addWidget(seq);
-    v->addLayout(exports);
+    return exports;
+}
+
+QWidget* TeachingView::buildSidePanel() {
+    const SideColumn side = sideColumn();
+    QVBoxLayout* v = side.layout;
+    v->addLayout(buildPresetRow(side.widget));
+    caption_ = captionLabel(side.widget);
+    v->addWidget(caption_);
+    v->addWidget(panel_);
+    outcome_ = outcomeLabel(side.widget);
+    v->addWidget(outcome_);
+    marker_->setMinimumHeight(230);
+    v->addWidget(marker_);
+    v->addWidget(log_, 1);
+    v->addLayout(buildExportRow(side.widget));
     // Scrolls on its own: a taller panel (the planar model's extra fields, large text) must
     // not push the play bar below the window.
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidget(side);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setFixedWidth(350);
-    side_ = scroll;
-    return scroll;
+    side_ = sideScroll(side.widget);
+    return side_;
 }
 
 void TeachingView::updateOutcome() {
