@@ -163,6 +163,13 @@ private:
     bool liftPossible_ = false;
     // Bound on |a_h'| over all time (both components enveloped sines; infinite otherwise).
     double slopeBound_ = std::numeric_limits<double>::infinity();
+    // With enveloped sines across (and along) the walls: their next cut, asked at cutFrom_, is the
+    // answer for every later time up to cutValid_ (a half-period's index, floor(tau / T + 1e-9),
+    // is monotone in tau and steps only within 1e-9 T of the cut), so the windows of a record's
+    // samples ask the sines once per half-period (issue 34: once per window was 1 % of a run).
+    bool sineCuts_ = false;
+    mutable double cutFrom_ = NAN, cutEnd_ = NAN, cutValid_ = NAN;
+    double horizontalCut(double tau) const;
 };
 
 } // namespace kinstab
