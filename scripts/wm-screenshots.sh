@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Screenshots of every centre tab and of presentation mode as a user sees them: the app under a
 # window manager (openbox) on an Xvfb screen of 1280 × 800 and of 1920 × 1080, the whole screen
 # grabbed (imagemagick's import), frame and title bar included. Writes docs/screenshots/wm/.
