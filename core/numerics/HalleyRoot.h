@@ -55,45 +55,15 @@ RootResult safeguardedHalley(FDF&& fdf, double lo, double hi, double flo, double
                              int maxIterations = 200,
                              double start = std::numeric_limits<double>::quiet_NaN(),
                              double absTolerance = 0.0) {
-    constexpr double inf = std::numeric_limits<double>::infinity();
     if (const auto done = rootstop::withoutStep(lo, hi, flo, fhi)) return *done;
-    RootResult r;
-    auto [a, b, x] = rootstop::opening(lo, hi, flo, start);
-    double dxOld = std::abs(hi - lo), dx = dxOld, lastNewton = inf, predictedError = inf;
-    Derivatives d;
-    fdf(x, d);
-    for (r.iterations = 1; r.iterations <= maxIterations; ++r.iterations) {
-        if (d.f == 0.0) return {x, r.iterations, true};
-        if (d.f < 0.0)
-            a = x;
-        else
-            b = x;
-        const double f = d.f, df = d.df;
-        const bool newtonOutside = ((x - b) * df - f) * ((x - a) * df - f) > 0.0;
-        const bool newtonSlow = std::abs(2.0 * f) > std::abs(dxOld * df);
-        dxOld = dx;
-        if (newtonOutside || newtonSlow || df == 0.0) {
-            dx = 0.5 * (b - a);
-            x = a + dx;
-            lastNewton = predictedError = inf;
-        } else if (const double h = halley::halleyStep(d, a, b, x); !std::isnan(h)) {
-            dx = h;
-            x -= dx;
-            predictedError = halley::predictedError(d, dx);
-        } else {
-            dx = f / df;
-            x -= dx;
-            predictedError = rootstop::newtonPredictedError(dx, lastNewton); // as safeguardedNewton
-        }
-        if (rootstop::converged(a, b, dx, predictedError, absTolerance)) {
-            r.x = x;
-            r.converged = true;
-            return r;
-        }
-        fdf(x, d);
-    }
-    r.x = x;
-    return r;
+    return rootstop::iterate<Derivatives>(
+        fdf,
+        [](const Derivatives& d, double a, double b, double x, double& lastNewton) {
+            const double h = halley::halleyStep(d, a, b, x);
+            if (std::isnan(h)) return rootstop::newtonStep(d.f, d.df, lastNewton); // as Newton
+            return rootstop::Step{h, halley::predictedError(d, h)};
+        },
+        lo, hi, flo, start, maxIterations, absTolerance);
 }
 
 } // namespace kinstab

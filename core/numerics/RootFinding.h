@@ -59,6 +59,61 @@ inline bool converged(double a, double b, double dx, double predictedError, doub
     return std::abs(b - a) <= tol || std::abs(dx) <= 0.25 * tol || predictedError <= 0.25 * tol;
 }
 
+// A corrector's step from x and the error it predicts it leaves.
+struct Step {
+    double dx, predictedError;
+};
+
+// Newton's step, the fallback of every corrector (updates lastNewton, see newtonPredictedError).
+inline Step newtonStep(double f, double df, double& lastNewton) {
+    const double dx = f / df;
+    return {dx, newtonPredictedError(dx, lastNewton)};
+}
+
+// The iteration Newton and Halley share: eval(x, v) fills v (v.f, v.df and what the corrector
+// reads); the bracket [a, b] shrinks around each point; the corrector's step
+// correct(v, a, b, x, lastNewton) is taken where Newton's would stay inside the bracket and
+// shrink it fast enough, else the bracket is bisected.
+template <class Values, class Eval, class Correct>
+RootResult iterate(Eval&& eval, Correct&& correct, double lo, double hi, double flo, double start,
+                   int maxIterations, double absTolerance) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    RootResult r;
+    auto [a, b, x] = opening(lo, hi, flo, start);
+    double dxOld = std::abs(hi - lo), dx = dxOld, lastNewton = inf, predictedError = inf;
+    Values v;
+    eval(x, v);
+    for (r.iterations = 1; r.iterations <= maxIterations; ++r.iterations) {
+        if (v.f == 0.0) return {x, r.iterations, true};
+        if (v.f < 0.0)
+            a = x;
+        else
+            b = x;
+        const double f = v.f, df = v.df;
+        const bool newtonOutside = ((x - b) * df - f) * ((x - a) * df - f) > 0.0;
+        const bool newtonSlow = std::abs(2.0 * f) > std::abs(dxOld * df);
+        dxOld = dx;
+        if (newtonOutside || newtonSlow || df == 0.0) {
+            dx = 0.5 * (b - a);
+            x = a + dx;
+            lastNewton = predictedError = inf;
+        } else {
+            const Step step = correct(v, a, b, x, lastNewton);
+            dx = step.dx;
+            x -= dx;
+            predictedError = step.predictedError;
+        }
+        if (converged(a, b, dx, predictedError, absTolerance)) {
+            r.x = x;
+            r.converged = true;
+            return r;
+        }
+        eval(x, v);
+    }
+    r.x = x;
+    return r;
+}
+
 } // namespace rootstop
 
 // Root of f on [lo, hi] where f(lo) and f(hi) differ in sign (or one is zero).
@@ -77,41 +132,15 @@ RootResult safeguardedNewton(FDF&& fdf, double lo, double hi, double flo, double
                              double start = std::numeric_limits<double>::quiet_NaN(),
                              double absTolerance = 0.0) {
     if (const auto done = rootstop::withoutStep(lo, hi, flo, fhi)) return *done;
-    RootResult r;
-    auto [a, b, x] = rootstop::opening(lo, hi, flo, start);
-    double dxOld = std::abs(hi - lo);
-    double dx = dxOld;
-    double lastNewton = std::numeric_limits<double>::infinity();
-    double predictedError = std::numeric_limits<double>::infinity();
-    double f = 0.0, df = 0.0;
-    fdf(x, f, df);
-    for (r.iterations = 1; r.iterations <= maxIterations; ++r.iterations) {
-        if (f == 0.0) return {x, r.iterations, true};
-        if (f < 0.0)
-            a = x;
-        else
-            b = x;
-        const bool newtonOutside = ((x - b) * df - f) * ((x - a) * df - f) > 0.0;
-        const bool newtonSlow = std::abs(2.0 * f) > std::abs(dxOld * df);
-        dxOld = dx;
-        if (newtonOutside || newtonSlow || df == 0.0) {
-            dx = 0.5 * (b - a);
-            x = a + dx;
-            lastNewton = predictedError = std::numeric_limits<double>::infinity();
-        } else {
-            dx = f / df;
-            x -= dx;
-            predictedError = rootstop::newtonPredictedError(dx, lastNewton);
-        }
-        if (rootstop::converged(a, b, dx, predictedError, absTolerance)) {
-            r.x = x;
-            r.converged = true;
-            return r;
-        }
-        fdf(x, f, df);
-    }
-    r.x = x;
-    return r;
+    struct Values {
+        double f = 0.0, df = 0.0;
+    };
+    return rootstop::iterate<Values>(
+        [&](double x, Values& v) { fdf(x, v.f, v.df); },
+        [](const Values& v, double, double, double, double& lastNewton) {
+            return rootstop::newtonStep(v.f, v.df, lastNewton);
+        },
+        lo, hi, flo, start, maxIterations, absTolerance);
 }
 
 // A first guess for a root on [lo, hi] from the values and slopes at both ends: the root of
