@@ -23,14 +23,16 @@ struct PlanWorld {
     }
 };
 
-// The height the text takes wrapped at spaces in the area's width, less 6 px each side.
-double wrappedHeight(const QFontMetrics& fm, const QRectF& area, const QString& text) {
-    const QRect column(0, 0, static_cast<int>(area.width()) - 12, 100000);
-    return fm.boundingRect(column, kTopViewTextFlags, text).height() + 2.0;
-}
+// A line of words across the area, 6 px in from each side.
 QRectF textRect(const QRectF& area, double top, double h) {
     return QRectF(area.left() + 6, top, area.width() - 12, h);
 }
+// The height the text takes, wrapped at spaces in textRect's width.
+double wrappedHeight(const QFontMetrics& fm, const QRectF& area, const QString& text) {
+    const QRect column(0, 0, static_cast<int>(textRect(area, 0, 0).width()), 100000);
+    return fm.boundingRect(column, kTopViewTextFlags, text).height() + 2.0;
+}
+
 // The walls, the slab at rest (dotted) and now, translucent so the walls show through.
 void paintPlan(QPainter& p, const PlanWorld& w, const SlabScene& s, double wallLength) {
     const TeachingFrame& fr = s.frame;
